@@ -1,0 +1,114 @@
+!> The command line of hsri2d (docs/usage.md).
+module command_line
+   use error_handling, only: error_t, error_set, exit_usage
+   use text_io, only: string_t
+   implicit none
+   private
+
+   public :: options_t, parse_command_line, usage_text, builtin_deck_name
+
+   !> The name that stands for the built-in default deck on the command line.
+   character(len=*), parameter :: builtin_deck_name = '@default'
+
+   type :: options_t
+      type(string_t), allocatable :: decks(:)
+      character(len=:), allocatable :: listing_file   !< '' = standard output
+      character(len=:), allocatable :: h5_file        !< '' = none
+      logical :: help = .false., version = .false.
+      logical :: deck_format = .false., print_default_deck = .false., check_only = .false.
+   end type options_t
+
+contains
+
+   subroutine parse_command_line(opts, err)
+      type(options_t), intent(out) :: opts
+      type(error_t), intent(inout) :: err
+      integer :: i, n
+      character(len=:), allocatable :: arg
+      logical :: options_done
+
+      allocate (opts%decks(0))
+      opts%listing_file = ''
+      opts%h5_file = ''
+      options_done = .false.
+      n = command_argument_count()
+      i = 0
+      do while (i < n)
+         i = i + 1
+         arg = argument(i)
+         if (options_done .or. len(arg) == 0) then
+            opts%decks = [opts%decks, string_t(arg)]
+            cycle
+         end if
+         if (arg(1:1) /= '-') then
+            opts%decks = [opts%decks, string_t(arg)]
+            cycle
+         end if
+         select case (arg)
+         case ('-h', '--help')
+            opts%help = .true.
+         case ('-V', '--version')
+            opts%version = .true.
+         case ('--deck-format')
+            opts%deck_format = .true.
+         case ('--default-deck')
+            opts%print_default_deck = .true.
+         case ('--check')
+            opts%check_only = .true.
+         case ('-o', '--output')
+            if (.not. value_of(opts%listing_file)) return
+         case ('--h5')
+            if (.not. value_of(opts%h5_file)) return
+         case ('--')
+            options_done = .true.
+         case default
+            call error_set(err, exit_usage, 'unknown option "'//arg//'"; try hsri2d --help')
+            return
+         end select
+      end do
+   contains
+      logical function value_of(target)
+         character(len=:), allocatable, intent(inout) :: target
+         value_of = i < n
+         if (.not. value_of) then
+            call error_set(err, exit_usage, 'option '//arg//' needs a file name')
+            return
+         end if
+         i = i + 1
+         target = argument(i)
+         if (len(target) == 0) then
+            call error_set(err, exit_usage, 'option '//arg//' needs a non-empty file name')
+            value_of = .false.
+         end if
+      end function value_of
+   end subroutine parse_command_line
+
+   function argument(i) result(arg)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: arg
+      integer :: length
+      call get_command_argument(i, length=length)
+      allocate (character(len=length) :: arg)
+      if (length > 0) call get_command_argument(i, arg)
+   end function argument
+
+   function usage_text() result(s)
+      character(len=:), allocatable :: s
+      character(len=1), parameter :: nl = new_line('a')
+      s = 'usage: hsri2d [options] [DECK ...]'//nl//nl// &
+          'Runs the HSRI phase-two two-dimensional crash-victim simulation on card decks.'//nl// &
+          'With no DECK, runs the built-in default deck. Several decks are read in order;'//nl// &
+          'a later card group replaces the earlier group of its kind. The name '//builtin_deck_name//nl// &
+          'stands for the built-in default deck (e.g. hsri2d '//builtin_deck_name//' pulse.deck).'//nl//nl// &
+          'options:'//nl// &
+          '  -o, --output FILE   write the listing to FILE (default: standard output)'//nl// &
+          '  --h5 FILE           write the time histories to the HDF5 file FILE'//nl// &
+          '  --check             read and check the decks, run nothing'//nl// &
+          '  --deck-format       print the card reference (docs/deck-format.md) and exit'//nl// &
+          '  --default-deck      print the built-in default deck and exit'//nl// &
+          '  -V, --version       print the version and exit'//nl// &
+          '  -h, --help          print this help and exit'//nl//nl// &
+          'exit status: 0 success, 1 bad command line, 2 deck error, 3 numerical failure,'//nl// &
+          '             4 input/output error'
+   end function usage_text
+end module command_line

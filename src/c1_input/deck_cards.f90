@@ -1,0 +1,414 @@
+!> The one table of card layouts (report C.1: "parameters grouped according
+!! to type ... any one section can be changed by simply substituting new data
+!! cards"). Parsing, validation of single fields, the deck echo in the listing
+!! and docs/deck-format.md are all driven by this table, so they cannot
+!! disagree.
+!!
+!! Card conventions (docs/deck-format.md): 80-column card images; a card with
+!! '*' in column 1 opens a card group; '$' in column 1 is a comment; blank
+!! cards are ignored. Data cards have up to seven fields of ten columns in
+!! columns 3-72 (field k in columns 10k-7 .. 10k+2); columns 1-2 hold the row
+!! index of indexed groups and are blank otherwise; columns 73-80 are free
+!! for card identification and are ignored.
+module deck_cards
+   use kinds, only: wp, deg, g_std
+   implicit none
+   private
+
+   public :: field_spec_t, group_spec_t, card_table, find_group
+   public :: max_fields, index_first_col, index_last_col, data_last_col, card_width
+   public :: kind_real, kind_int, kind_word, kind_text
+   public :: blank_default, blank_required, blank_absent
+   public :: layout_single, layout_indexed, layout_list, layout_multi
+   public :: field_first_col, field_last_col
+   public :: g_title, g_options, g_time, g_segments, g_joints, g_restraints, g_stopcurve
+   public :: g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates
+   public :: g_pulsepos, g_pulsefile, g_endtests, n_groups
+
+   integer, parameter :: max_fields = 7
+   integer, parameter :: card_width = 80
+   integer, parameter :: index_first_col = 1, index_last_col = 2
+   integer, parameter :: data_last_col = 72
+
+   !> Field kinds.
+   integer, parameter :: kind_real = 1, kind_int = 2, kind_word = 3, kind_text = 4
+   !> What a blank field means.
+   integer, parameter :: blank_default = 1   !< takes the documented default
+   integer, parameter :: blank_required = 2  !< an error: the field must be given
+   integer, parameter :: blank_absent = 3    !< "not available" (the model decides)
+   !> Group layouts.
+   integer, parameter :: layout_single = 1   !< exactly one card
+   integer, parameter :: layout_indexed = 2  !< one card per index 1..max_index
+   integer, parameter :: layout_list = 3     !< a list of cards, no index (tables)
+   integer, parameter :: layout_multi = 4    !< a list of cards, each with an index
+
+   !> Group identifiers (positions in the table).
+   integer, parameter :: g_title = 1, g_options = 2, g_time = 3, g_segments = 4, &
+      g_joints = 5, g_restraints = 6, g_stopcurve = 7, g_injury = 8, g_arcs = 9, &
+      g_initial = 10, g_vehicle = 11, g_gravity = 12, g_pulse = 13, g_pulserates = 14, &
+      g_pulsepos = 15, g_pulsefile = 16, g_endtests = 17
+   integer, parameter :: n_groups = 17
+
+   !> One field of a card.
+   type :: field_spec_t
+      character(len=8) :: name = ' '
+      integer :: kind = kind_real
+      integer :: first_col = 0, last_col = 0
+      character(len=12) :: unit = ' '       !< unit as written in the deck
+      real(wp) :: scale = 1.0_wp            !< deck unit -> internal unit
+      integer :: blank = blank_default
+      real(wp) :: default = 0.0_wp          !< in deck units
+      real(wp) :: low = -huge(1.0_wp), high = huge(1.0_wp) !< valid range, deck units
+      logical :: low_open = .false.         !< the range excludes low
+      character(len=24) :: words = ' '      !< allowed words, separated by '|'
+      character(len=72) :: meaning = ' '
+   end type field_spec_t
+
+   !> One card group.
+   type :: group_spec_t
+      character(len=16) :: name = ' '
+      character(len=16) :: kind = ' '   !< a later group of the same kind replaces an earlier one
+      integer :: layout = layout_single
+      integer :: max_index = 0          !< indexed/multi: valid indices 1..max_index
+      logical :: all_rows = .false.     !< indexed: every index must be given
+      logical :: required = .false.     !< the deck must hold this group
+      integer :: min_cards = 1
+      integer :: max_cards = 1
+      character(len=12) :: index_name = ' '
+      integer :: n_fields = 0
+      type(field_spec_t) :: field(max_fields)
+      character(len=72) :: title = ' '
+      character(len=400) :: note = ' '
+   end type group_spec_t
+
+contains
+
+   !> First column of data field k.
+   pure integer function field_first_col(k)
+      integer, intent(in) :: k
+      field_first_col = 10*k - 7
+   end function field_first_col
+
+   !> Last column of data field k.
+   pure integer function field_last_col(k)
+      integer, intent(in) :: k
+      field_last_col = 10*k + 2
+   end function field_last_col
+
+   !> The index of the group called name (blanks and case ignored), or 0.
+   pure integer function find_group(table, name)
+      type(group_spec_t), intent(in) :: table(:)
+      character(len=*), intent(in) :: name
+      integer :: i
+      find_group = 0
+      do i = 1, size(table)
+         if (table(i)%name == name) then
+            find_group = i
+            return
+         end if
+      end do
+   end function find_group
+
+   ! --- field constructors -------------------------------------------------
+
+   pure function real_field(name, unit, scale, blank, default, low, high, meaning, low_open) result(f)
+      character(len=*), intent(in) :: name, unit, meaning
+      real(wp), intent(in) :: scale, default, low, high
+      integer, intent(in) :: blank
+      logical, intent(in), optional :: low_open
+      type(field_spec_t) :: f
+      f%name = name
+      f%kind = kind_real
+      f%unit = unit
+      f%scale = scale
+      f%blank = blank
+      f%default = default
+      f%low = low
+      f%high = high
+      f%meaning = meaning
+      if (present(low_open)) f%low_open = low_open
+   end function real_field
+
+   pure function int_field(name, blank, default, low, high, meaning) result(f)
+      character(len=*), intent(in) :: name, meaning
+      integer, intent(in) :: blank, default, low, high
+      type(field_spec_t) :: f
+      f%name = name
+      f%kind = kind_int
+      f%unit = '-'
+      f%blank = blank
+      f%default = real(default, wp)
+      f%low = real(low, wp)
+      f%high = real(high, wp)
+      f%meaning = meaning
+   end function int_field
+
+   pure function word_field(name, words, blank, meaning) result(f)
+      character(len=*), intent(in) :: name, words, meaning
+      integer, intent(in) :: blank
+      type(field_spec_t) :: f
+      f%name = name
+      f%kind = kind_word
+      f%unit = '-'
+      f%blank = blank
+      f%words = words
+      f%meaning = meaning
+   end function word_field
+
+   pure function text_field(name, blank, meaning) result(f)
+      character(len=*), intent(in) :: name, meaning
+      integer, intent(in) :: blank
+      type(field_spec_t) :: f
+      f%name = name
+      f%kind = kind_text
+      f%unit = '-'
+      f%blank = blank
+      f%meaning = meaning
+      f%first_col = 1
+      f%last_col = data_last_col
+   end function text_field
+
+   !> Place the data fields of a group at their columns (text fields keep theirs).
+   pure subroutine set_fields(g, fields)
+      type(group_spec_t), intent(inout) :: g
+      type(field_spec_t), intent(in) :: fields(:)
+      integer :: k
+      g%n_fields = size(fields)
+      do k = 1, size(fields)
+         g%field(k) = fields(k)
+         if (fields(k)%kind /= kind_text) then
+            g%field(k)%first_col = field_first_col(k)
+            g%field(k)%last_col = field_last_col(k)
+         end if
+      end do
+   end subroutine set_fields
+
+   !> The card table. Report references: C.1 and Tables 1-6 for the body,
+   !! C.3 for the time controls and vehicle tables, C.7 for the end tests.
+   pure function card_table() result(t)
+      type(group_spec_t) :: t(n_groups)
+      ! an upper bound on magnitudes that keeps every product of the model far
+      ! from overflow (the divergence guard of equations_of_motion relies on it)
+      real(wp), parameter :: big = 1.0e12_wp, one = 1.0_wp, zero = 0.0_wp
+
+      t(g_title)%name = 'TITLE'
+      t(g_title)%title = 'Run title, printed at the head of every page'
+      call set_fields(t(g_title), [text_field('TITLE', blank_default, 'title text (columns 1-72)')])
+
+      t(g_options)%name = 'OPTIONS'
+      t(g_options)%title = 'Program options (C.1)'
+      t(g_options)%note = 'NBELT and NLOAD are read and checked for the belt and contact issues to come: ' &
+         //'this version models no belts (NBELT must be 0) and NLOAD has no effect yet. ' &
+         //'NEND = 2 needs contact surfaces, which this version does not model yet.'
+      call set_fields(t(g_options), [ &
+         int_field('NBODY', blank_default, 1, 1, 3, 'occupant: 1 driver, 2 front-seat passenger, 3 rear-seat passenger'), &
+         int_field('NBELT', blank_default, 0, 0, 3, 'belts: 0 none, 1 lap, 2 torso, 3 lap and torso (C.4.e)'), &
+         int_field('NEND', blank_default, 1, 1, 4, 'end test: 1 time, 2 +undesired contact, 3 +injury, 4 +rest'), &
+         int_field('NLOAD', blank_default, 1, 1, 2, 'loading curves: 1 polynomial, 2 tabulated'), &
+         int_field('NOUT', blank_default, 2, 0, 3, 'output: 0 summary, 1 +accelerations/energies, 2 +body, 3 all'), &
+         int_field('NINT', blank_default, 2, 1, 3, 'integrator: 1 Adams-Moulton (report), 2 RK4, 3 Dormand-Prince')])
+
+      t(g_time)%name = 'TIME'
+      t(g_time)%title = 'Time controls (C.3, C.6, C.7)'
+      t(g_time)%note = 'For the fixed-step integrators (NINT 1, 2) TMAX and DTPRINT must be whole multiples ' &
+         //'of DT. For NINT 3, DT is the first trial step and the step never exceeds DTPRINT.'
+      call set_fields(t(g_time), [ &
+         real_field('TMAX', 's', one, blank_default, 0.2_wp, zero, 1.0e3_wp, 'duration of the run', .true.), &
+         real_field('DT', 's', one, blank_default, 1.0e-4_wp, zero, 1.0_wp, 'integration step', .true.), &
+         real_field('DTPRINT', 's', one, blank_default, 5.0e-3_wp, zero, 1.0e3_wp, 'print interval', .true.), &
+         real_field('CTOL', '-', one, blank_default, 1.0e-6_wp, zero, 1.0_wp, &
+            'corrector tolerance (relative to max(1,|y|))', .true.), &
+         int_field('CITER', blank_default, 10, 1, 1000, 'corrector iteration limit'), &
+         real_field('RTOL', '-', one, blank_default, 1.0e-7_wp, zero, 1.0_wp, 'adaptive relative tolerance', .true.), &
+         real_field('ATOL', '-', one, blank_default, 1.0e-9_wp, zero, 1.0_wp, 'adaptive absolute tolerance', .true.)])
+
+      t(g_segments)%name = 'SEGMENTS'
+      t(g_segments)%title = 'Body segments, Table 1 (i as in Table 5)'
+      t(g_segments)%layout = layout_indexed
+      t(g_segments)%max_index = 8
+      t(g_segments)%all_rows = .true.
+      t(g_segments)%required = .true.
+      t(g_segments)%index_name = 'segment i'
+      t(g_segments)%note = 'L3 and L4 are the neck and shoulder offsets along segment 3 from the upper-spine ' &
+         //'joint; L6 and L8 are used by contacts only. RHO is measured from the segment''s proximal joint ' &
+         //'(the hip for segments 1 and 7, the knee for 8).'
+      call set_fields(t(g_segments), [ &
+         real_field('M', 'lb*s^2/in', one, blank_required, zero, zero, big, 'mass m_i', .true.), &
+         real_field('I', 'lb*in*s^2', one, blank_required, zero, zero, big, 'moment of inertia I_i about the CG', .true.), &
+         real_field('L', 'in', one, blank_default, zero, zero, big, 'link length L_i'), &
+         real_field('RHO', 'in', one, blank_required, zero, zero, big, 'distance rho_i from the joint to the CG')])
+
+      t(g_joints)%name = 'JOINTS'
+      t(g_joints)%title = 'Body joints, Table 1 (i as in Table 5; partner m(i) as in Table 6)'
+      t(g_joints)%layout = layout_indexed
+      t(g_joints)%max_index = 7
+      t(g_joints)%all_rows = .true.
+      t(g_joints)%required = .true.
+      t(g_joints)%index_name = 'joint i'
+      t(g_joints)%note = 'Joint i couples segments i and m(i) = 7,1,2,3,3,5,8; its relative angle is ' &
+         //'alpha_i - alpha_m. The stops act beyond OMEGA and BOMEGA with restoring torque of slope ' &
+         //'TLOW and THIGH (magnitudes); see *RESTRAINTS for cubic and tabulated forms.'
+      call set_fields(t(g_joints), [ &
+         real_field('K', 'in*lb/rad', one, blank_default, zero, zero, big, 'elasticity K_i'), &
+         real_field('CF', 'in*lb', one, blank_default, zero, zero, big, 'Coulomb friction torque C''_i'), &
+         real_field('XI', 'deg/s', deg, blank_default, 0.01_wp/deg, zero, big, 'friction velocity limit xi_i'), &
+         real_field('OMEGA', 'deg', deg, blank_required, zero, -360.0_wp, 360.0_wp, 'lower stop angle omega_i'), &
+         real_field('BOMEGA', 'deg', deg, blank_required, zero, -360.0_wp, 360.0_wp, 'upper stop angle Omega_i'), &
+         real_field('TLOW', 'in*lb/rad', one, blank_default, zero, zero, big, 'lower stop stiffness T''_i'), &
+         real_field('THIGH', 'in*lb/rad', one, blank_default, zero, zero, big, 'upper stop stiffness T-hat''_i')])
+
+      t(g_restraints)%name = 'RESTRAINTS'
+      t(g_restraints)%title = 'Form of the joint angular restraints (C.4.c, figure 9)'
+      t(g_restraints)%layout = layout_indexed
+      t(g_restraints)%max_index = 7
+      t(g_restraints)%index_name = 'joint i'
+      t(g_restraints)%note = 'A joint without a card here has the LINEAR form. CUBIC adds c2*d**2 + c3*d**3 ' &
+         //'to the linear term, d being the penetration beyond the stop; TABLE takes the torque from ' &
+         //'the *STOPCURVE cards of the joint. DISLOW and DISHIGH are the dislocation angles of figure 10 ' &
+         //'(blank: the stop angles, as Table 1 defines omega and Omega).'
+      call set_fields(t(g_restraints), [ &
+         word_field('FORM', 'LINEAR|CUBIC|TABLE', blank_default, 'restraint form'), &
+         real_field('C2LOW', 'in*lb/rad^2', one, blank_default, zero, zero, big, 'lower stop, quadratic coefficient'), &
+         real_field('C3LOW', 'in*lb/rad^3', one, blank_default, zero, zero, big, 'lower stop, cubic coefficient'), &
+         real_field('C2HIGH', 'in*lb/rad^2', one, blank_default, zero, zero, big, 'upper stop, quadratic coefficient'), &
+         real_field('C3HIGH', 'in*lb/rad^3', one, blank_default, zero, zero, big, 'upper stop, cubic coefficient'), &
+         real_field('DISLOW', 'deg', deg, blank_absent, zero, -360.0_wp, 360.0_wp, 'lower dislocation angle'), &
+         real_field('DISHIGH', 'deg', deg, blank_absent, zero, -360.0_wp, 360.0_wp, 'upper dislocation angle')])
+      t(g_restraints)%field(1)%default = real(1, wp)   ! word 1: LINEAR
+
+      t(g_stopcurve)%name = 'STOPCURVE'
+      t(g_stopcurve)%title = 'Tabulated restraint torques (C.4.c, figure 9)'
+      t(g_stopcurve)%layout = layout_multi
+      t(g_stopcurve)%max_index = 7
+      t(g_stopcurve)%min_cards = 2
+      t(g_stopcurve)%max_cards = 100000
+      t(g_stopcurve)%index_name = 'joint i'
+      t(g_stopcurve)%note = 'Points (depth, torque) of one side of a joint''s stop, depth increasing from 0; ' &
+         //'between points the torque is interpolated linearly and beyond the last point extrapolated ' &
+         //'along the last segment.'
+      call set_fields(t(g_stopcurve), [ &
+         word_field('SIDE', 'LOWER|UPPER', blank_required, 'which stop'), &
+         real_field('DEPTH', 'deg', deg, blank_required, zero, zero, 360.0_wp, 'penetration beyond the stop'), &
+         real_field('TORQUE', 'in*lb', one, blank_required, zero, zero, big, 'restoring torque magnitude')])
+
+      t(g_injury)%name = 'INJURY'
+      t(g_injury)%title = 'Force injury criteria, Table 1 (i as in Table 5)'
+      t(g_injury)%layout = layout_indexed
+      t(g_injury)%max_index = 10
+      t(g_injury)%index_name = 'row i'
+      t(g_injury)%note = 'Zero or blank means the criterion is not checked. They are read here for the ' &
+         //'contact and belt forces to come (C.4.f, figure 26).'
+      call set_fields(t(g_injury), [ &
+         real_field('FSF', 'lb', one, blank_default, zero, zero, big, 'shear fracture force'), &
+         real_field('FCF', 'lb', one, blank_default, zero, zero, big, 'compression fracture force'), &
+         real_field('FTD', 'lb', one, blank_default, zero, zero, big, 'tension dislocation force')])
+
+      t(g_arcs)%name = 'ARCS'
+      t(g_arcs)%title = 'Body contact arcs, Table 1 (i as in Table 5; 11 = ankle radius r_A)'
+      t(g_arcs)%layout = layout_indexed
+      t(g_arcs)%max_index = 11
+      t(g_arcs)%index_name = 'arc i'
+      t(g_arcs)%note = 'RHOP is used for arcs 2-4 and GAMMA for arcs 2-3 (Table 1). Read here for the contacts to come.'
+      call set_fields(t(g_arcs), [ &
+         real_field('R', 'in', one, blank_default, zero, zero, big, 'contact arc radius r_i'), &
+         real_field('RHOP', 'in', one, blank_default, zero, zero, big, 'distance rho''_i to the arc centre'), &
+         real_field('GAMMA', 'deg', deg, blank_default, zero, -180.0_wp, 180.0_wp, 'angle gamma_i of the arc centre')])
+
+      t(g_initial)%name = 'INITIAL'
+      t(g_initial)%title = 'Initial body position (C.1), relative to the vehicle interior'
+      t(g_initial)%layout = layout_indexed
+      t(g_initial)%max_index = 8
+      t(g_initial)%all_rows = .true.
+      t(g_initial)%required = .true.
+      t(g_initial)%index_name = 'segment i'
+      t(g_initial)%note = 'Angles are measured counter-clockwise from the interior horizontal (x forward, y up). ' &
+         //'The hip starts at the origin of the interior frame with the vehicle''s velocity.'
+      call set_fields(t(g_initial), [ &
+         real_field('THETA', 'deg', deg, blank_required, zero, -360.0_wp, 360.0_wp, 'angle Theta_i0'), &
+         real_field('THETADOT', 'deg/s', deg, blank_default, zero, -1.0e6_wp, 1.0e6_wp, 'angular rate')])
+
+      t(g_vehicle)%name = 'VEHICLE'
+      t(g_vehicle)%title = 'Vehicle (C.1)'
+      t(g_vehicle)%note = 'x is forward and y up; the pitch Phi is positive front end down. Initial ' &
+         //'positions are zero; PHI0 is the initial pitch.'
+      call set_fields(t(g_vehicle), [ &
+         real_field('MASS', 'lb*s^2/in', one, blank_default, zero, zero, big, 'vehicle mass m_c'), &
+         real_field('INERTIA', 'lb*in*s^2', one, blank_default, zero, zero, big, 'pitch moment of inertia I_c'), &
+         real_field('XDOT0', 'in/s', one, blank_default, zero, -1.0e5_wp, 1.0e5_wp, 'initial forward velocity'), &
+         real_field('YDOT0', 'in/s', one, blank_default, zero, -1.0e5_wp, 1.0e5_wp, 'initial vertical velocity'), &
+         real_field('PHI0', 'deg', deg, blank_default, zero, -90.0_wp, 90.0_wp, 'initial pitch'), &
+         real_field('PHIDOT0', 'deg/s', deg, blank_default, zero, -1.0e5_wp, 1.0e5_wp, 'initial pitch rate')])
+
+      t(g_gravity)%name = 'GRAVITY'
+      t(g_gravity)%title = 'Gravity'
+      call set_fields(t(g_gravity), [ &
+         real_field('G', 'in/s^2', one, blank_default, g_std, zero, 1.0e4_wp, 'acceleration of gravity')])
+
+      t(g_pulse)%name = 'PULSE'
+      t(g_pulse)%kind = 'PULSE'
+      t(g_pulse)%title = 'Vehicle accelerations at times t_m (C.1, C.3)'
+      t(g_pulse)%layout = layout_list
+      t(g_pulse)%min_cards = 1
+      t(g_pulse)%max_cards = 1000000
+      t(g_pulse)%note = 'Times increase from 0. Between the t_m the accelerations are linear in time and ' &
+         //'velocities and positions are their exact integrals; after the last t_m the last values hold. ' &
+         //'*PULSEFILE gives the same table from a CSV file and replaces this group.'
+      call set_fields(t(g_pulse), [ &
+         real_field('T', 's', one, blank_required, zero, zero, 1.0e3_wp, 'time t_m'), &
+         real_field('XDDOT', 'g', g_std, blank_default, zero, -1.0e4_wp, 1.0e4_wp, 'horizontal acceleration'), &
+         real_field('YDDOT', 'g', g_std, blank_default, zero, -1.0e4_wp, 1.0e4_wp, 'vertical acceleration'), &
+         real_field('PHIDDOT', 'deg/s^2', deg, blank_default, zero, -1.0e8_wp, 1.0e8_wp, 'pitch acceleration')])
+
+      t(g_pulserates)%name = 'PULSERATES'
+      t(g_pulserates)%title = 'Vehicle velocities at times t_m, where available (C.1, C.3)'
+      t(g_pulserates)%layout = layout_list
+      t(g_pulserates)%min_cards = 1
+      t(g_pulserates)%max_cards = 1000000
+      t(g_pulserates)%note = 'A column left blank on every card is not available and is integrated from the ' &
+         //'accelerations; a column given replaces that integration (linear between the t_m).'
+      call set_fields(t(g_pulserates), [ &
+         real_field('T', 's', one, blank_required, zero, zero, 1.0e3_wp, 'time t_m'), &
+         real_field('XDOT', 'in/s', one, blank_absent, zero, -1.0e5_wp, 1.0e5_wp, 'horizontal velocity'), &
+         real_field('YDOT', 'in/s', one, blank_absent, zero, -1.0e5_wp, 1.0e5_wp, 'vertical velocity'), &
+         real_field('PHIDOT', 'deg/s', deg, blank_absent, zero, -1.0e6_wp, 1.0e6_wp, 'pitch rate')])
+
+      t(g_pulsepos)%name = 'PULSEPOSITIONS'
+      t(g_pulsepos)%title = 'Vehicle positions at times t_m, where available (C.1, C.3)'
+      t(g_pulsepos)%layout = layout_list
+      t(g_pulsepos)%min_cards = 1
+      t(g_pulsepos)%max_cards = 1000000
+      t(g_pulsepos)%note = 'As *PULSERATES, for the displacements of the vehicle from its initial position.'
+      call set_fields(t(g_pulsepos), [ &
+         real_field('T', 's', one, blank_required, zero, zero, 1.0e3_wp, 'time t_m'), &
+         real_field('X', 'in', one, blank_absent, zero, -1.0e6_wp, 1.0e6_wp, 'horizontal displacement'), &
+         real_field('Y', 'in', one, blank_absent, zero, -1.0e6_wp, 1.0e6_wp, 'vertical displacement'), &
+         real_field('PHI', 'deg', deg, blank_absent, zero, -360.0_wp, 360.0_wp, 'pitch angle')])
+
+      t(g_pulsefile)%name = 'PULSEFILE'
+      t(g_pulsefile)%kind = 'PULSE'
+      t(g_pulsefile)%title = 'Vehicle accelerations from a CSV file'
+      t(g_pulsefile)%note = 'The file (a path relative to the deck''s directory, or absolute) holds lines ' &
+         //'"t, xddot, yddot, phiddot" in s, g, g, deg/s^2; missing trailing columns are 0; lines ' &
+         //'starting with # and a first line of column names are skipped. Replaces *PULSE.'
+      call set_fields(t(g_pulsefile), [text_field('FILE', blank_required, 'CSV file name (columns 1-72)')])
+
+      t(g_endtests)%name = 'ENDTESTS'
+      t(g_endtests)%title = 'End-of-program test thresholds (C.7)'
+      t(g_endtests)%note = 'With NEND = 4 the run ends once every joint speed relative to the interior is ' &
+         //'below VREST, every segment angular rate relative to the interior below WREST, for THOLD seconds.'
+      call set_fields(t(g_endtests), [ &
+         real_field('VREST', 'in/s', one, blank_default, 0.1_wp, zero, big, 'speed counted as rest', .true.), &
+         real_field('WREST', 'deg/s', deg, blank_default, 0.5_wp, zero, big, 'angular rate counted as rest', .true.), &
+         real_field('THOLD', 's', one, blank_default, 0.01_wp, zero, big, 'time at rest before the run ends')])
+
+      block
+         integer :: i
+         do i = 1, n_groups
+            if (t(i)%kind == ' ') t(i)%kind = t(i)%name
+            ! a repeated index is reported as such, not as "too many cards"
+            if (t(i)%layout == layout_indexed) t(i)%max_cards = 10*t(i)%max_index
+         end do
+      end block
+   end function card_table
+
+end module deck_cards

@@ -1,0 +1,162 @@
+!> Adaptive embedded Runge-Kutta: Dormand-Prince 5(4) with local
+!! extrapolation (the 5th-order solution is kept), first-same-as-last,
+!! and a PI step-size controller (Hairer, Norsett & Wanner, Solving ODE I,
+!! II.4 and IV.2). An integration option of C.3.
+module dormand_prince
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use kinds, only: wp
+   use ode_system, only: ode_system_t, stepper_t, step_ok, step_rhs_failed, step_too_small, &
+      step_not_finite
+   implicit none
+   private
+
+   public :: dopri_stepper_t
+
+   ! Butcher tableau of Dormand & Prince (1980)
+   real(wp), parameter :: c2 = 1.0_wp/5, c3 = 3.0_wp/10, c4 = 4.0_wp/5, c5 = 8.0_wp/9
+   real(wp), parameter :: a21 = 1.0_wp/5
+   real(wp), parameter :: a31 = 3.0_wp/40, a32 = 9.0_wp/40
+   real(wp), parameter :: a41 = 44.0_wp/45, a42 = -56.0_wp/15, a43 = 32.0_wp/9
+   real(wp), parameter :: a51 = 19372.0_wp/6561, a52 = -25360.0_wp/2187, a53 = 64448.0_wp/6561, &
+                          a54 = -212.0_wp/729
+   real(wp), parameter :: a61 = 9017.0_wp/3168, a62 = -355.0_wp/33, a63 = 46732.0_wp/5247, &
+                          a64 = 49.0_wp/176, a65 = -5103.0_wp/18656
+   real(wp), parameter :: a71 = 35.0_wp/384, a73 = 500.0_wp/1113, a74 = 125.0_wp/192, &
+                          a75 = -2187.0_wp/6784, a76 = 11.0_wp/84
+   ! error weights: 5th-order minus embedded 4th-order weights
+   real(wp), parameter :: e1 = 71.0_wp/57600, e3 = -71.0_wp/16695, e4 = 71.0_wp/1920, &
+                          e5 = -17253.0_wp/339200, e6 = 22.0_wp/525, e7 = -1.0_wp/40
+   ! step-size control
+   real(wp), parameter :: safety = 0.9_wp, fac_min = 0.2_wp, fac_max = 5.0_wp
+   real(wp), parameter :: beta = 0.04_wp, alpha = 0.2_wp - 0.75_wp*beta
+   integer, parameter :: max_rejections_in_row = 60
+
+   type, extends(stepper_t) :: dopri_stepper_t
+      real(wp) :: h = 0.0_wp           !< the next step to try
+      real(wp) :: rtol = 1.0e-7_wp, atol = 1.0e-9_wp
+      real(wp) :: err_old = 1.0e-4_wp
+      real(wp), allocatable :: k2(:), k3(:), k4(:), k5(:), k6(:), k7(:), yt(:), ynew(:), e(:)
+   contains
+      procedure :: init => dopri_init
+      procedure :: advance => dopri_advance
+   end type dopri_stepper_t
+
+contains
+
+   subroutine dopri_init(this, sys, t0, y0, status)
+      class(dopri_stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t0
+      real(wp), intent(in) :: y0(:)
+      integer, intent(out) :: status
+      integer :: n
+      n = size(y0)
+      if (allocated(this%f)) deallocate (this%f, this%k2, this%k3, this%k4, this%k5, this%k6, &
+                                         this%k7, this%yt, this%ynew, this%e)
+      allocate (this%f(n), this%k2(n), this%k3(n), this%k4(n), this%k5(n), this%k6(n), this%k7(n), &
+                this%yt(n), this%ynew(n), this%e(n))
+      call sys%rhs(t0, y0, this%f, this%rhs_status)
+      this%stats%evaluations = this%stats%evaluations + 1
+      status = merge(step_ok, step_rhs_failed, this%rhs_status == 0)
+   end subroutine dopri_init
+
+   !> Try steps until one is accepted (or the step collapses).
+   subroutine dopri_advance(this, sys, t, y, t_limit, status)
+      class(dopri_stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(inout) :: t
+      real(wp), intent(inout) :: y(:)
+      real(wp), intent(in) :: t_limit
+      integer, intent(out) :: status
+      real(wp) :: h, err, fac, h_floor
+      logical :: clipped, stages_ok
+      integer :: rejections
+
+      rejections = 0
+      h_floor = 16.0_wp*epsilon(1.0_wp)*max(abs(t), 1.0e-3_wp)
+      do
+         h = this%h
+         clipped = t + h >= t_limit
+         if (clipped) h = t_limit - t
+         call try_step(h, stages_ok, err)
+         if (stages_ok .and. err <= 1.0_wp) exit
+         ! rejected: shrink, without growth until a step is accepted
+         this%stats%rejected = this%stats%rejected + 1
+         rejections = rejections + 1
+         if (stages_ok) then
+            fac = max(fac_min, safety*err**(-0.2_wp))
+         else
+            fac = 0.25_wp    ! the trial state could not be evaluated: back off hard
+         end if
+         this%h = h*fac
+         if (this%h < h_floor .or. rejections > max_rejections_in_row) then
+            status = merge(step_too_small, step_rhs_failed, stages_ok)
+            return
+         end if
+      end do
+
+      ! accepted: PI controller for the next step
+      err = max(err, 1.0e-10_wp)
+      fac = safety*err**(-alpha)*this%err_old**beta
+      fac = min(fac_max, max(fac_min, fac))
+      if (rejections > 0) fac = min(fac, 1.0_wp)
+      this%err_old = max(err, 1.0e-4_wp)
+      if (clipped) then
+         ! a step shortened to meet t_limit does not shrink the next one
+         this%h = max(this%h, h*fac)
+         t = t_limit
+      else
+         this%h = h*fac
+         t = t + h
+      end if
+      y = this%ynew
+      this%f = this%k7
+      this%stats%steps = this%stats%steps + 1
+      this%stats%h_min = min(this%stats%h_min, h)
+      this%stats%h_max = max(this%stats%h_max, h)
+      status = step_ok
+   contains
+      !> The seven stages and the scaled error norm of one trial step.
+      subroutine try_step(h, ok, err)
+         real(wp), intent(in) :: h
+         logical, intent(out) :: ok
+         real(wp), intent(out) :: err
+         real(wp) :: sc
+         integer :: i
+         err = huge(1.0_wp)
+         associate (k1 => this%f, k2 => this%k2, k3 => this%k3, k4 => this%k4, k5 => this%k5, &
+                    k6 => this%k6, k7 => this%k7, yt => this%yt, ynew => this%ynew, e => this%e)
+            ok = .false.
+            yt = y + h*a21*k1
+            if (.not. evaluate(t + c2*h, yt, k2)) return
+            yt = y + h*(a31*k1 + a32*k2)
+            if (.not. evaluate(t + c3*h, yt, k3)) return
+            yt = y + h*(a41*k1 + a42*k2 + a43*k3)
+            if (.not. evaluate(t + c4*h, yt, k4)) return
+            yt = y + h*(a51*k1 + a52*k2 + a53*k3 + a54*k4)
+            if (.not. evaluate(t + c5*h, yt, k5)) return
+            yt = y + h*(a61*k1 + a62*k2 + a63*k3 + a64*k4 + a65*k5)
+            if (.not. evaluate(t + h, yt, k6)) return
+            ynew = y + h*(a71*k1 + a73*k3 + a74*k4 + a75*k5 + a76*k6)
+            if (.not. all(ieee_is_finite(ynew))) return
+            if (.not. evaluate(t + h, ynew, k7)) return
+            e = h*(e1*k1 + e3*k3 + e4*k4 + e5*k5 + e6*k6 + e7*k7)
+            err = 0.0_wp
+            do i = 1, size(y)
+               sc = this%atol + this%rtol*max(abs(y(i)), abs(ynew(i)))
+               err = err + (e(i)/sc)**2
+            end do
+            err = sqrt(err/real(size(y), wp))
+            ok = ieee_is_finite(err)
+         end associate
+      end subroutine try_step
+
+      logical function evaluate(te, ye, fe)
+         real(wp), intent(in) :: te, ye(:)
+         real(wp), intent(out) :: fe(:)
+         call sys%rhs(te, ye, fe, this%rhs_status)
+         this%stats%evaluations = this%stats%evaluations + 1
+         evaluate = this%rhs_status == 0
+      end function evaluate
+   end subroutine dopri_advance
+end module dormand_prince

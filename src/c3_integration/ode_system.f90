@@ -1,0 +1,99 @@
+!> The interface between the integrators (C.3) and what they integrate:
+!! an ODE system y' = f(t, y) and the abstract stepper that advances it.
+module ode_system
+   use kinds, only: wp, i8
+   implicit none
+   private
+
+   public :: ode_system_t, stepper_t, step_stats_t
+   public :: step_ok, step_rhs_failed, step_too_small, step_not_finite, step_beyond_limit
+   public :: step_status_text
+
+   !> Status codes of an integration step.
+   integer, parameter :: step_ok = 0
+   integer, parameter :: step_rhs_failed = 1   !< the right-hand side could not be evaluated
+   integer, parameter :: step_too_small = 2    !< the adaptive step fell below its floor
+   integer, parameter :: step_not_finite = 3   !< the state became NaN or infinite
+   integer, parameter :: step_beyond_limit = 4 !< a fixed step would pass the time limit
+
+   !> A system y' = f(t, y). rhs may update diagnostics held in the system
+   !! (evaluation counters) but no physical state: integrators call it for
+   !! trial points that may be thrown away.
+   type, abstract :: ode_system_t
+   contains
+      procedure(rhs_interface), deferred :: rhs
+   end type ode_system_t
+
+   abstract interface
+      !> status: 0 when f could be evaluated, otherwise a code the system explains.
+      subroutine rhs_interface(this, t, y, dydt, status)
+         import :: ode_system_t, wp
+         class(ode_system_t), intent(inout) :: this
+         real(wp), intent(in) :: t
+         real(wp), intent(in) :: y(:)
+         real(wp), intent(out) :: dydt(:)
+         integer, intent(out) :: status
+      end subroutine rhs_interface
+   end interface
+
+   !> What an integration cost.
+   type :: step_stats_t
+      integer(i8) :: steps = 0              !< accepted steps
+      integer(i8) :: rejected = 0           !< rejected trial steps (adaptive)
+      integer(i8) :: evaluations = 0        !< right-hand-side evaluations
+      integer(i8) :: corrector_iterations = 0 !< corrector passes (Adams-Moulton, modified Euler)
+      integer(i8) :: corrector_at_limit = 0 !< steps whose corrector reached the iteration limit
+      real(wp) :: h_min = huge(1.0_wp), h_max = 0.0_wp   !< accepted step sizes
+   end type step_stats_t
+
+   !> An integrator. After init and after every advance, f holds y' at the
+   !! current accepted point, so output needs no extra evaluation.
+   type, abstract :: stepper_t
+      real(wp), allocatable :: f(:)
+      type(step_stats_t) :: stats
+      integer :: rhs_status = 0             !< the system's code when step_rhs_failed
+   contains
+      procedure(init_interface), deferred :: init
+      procedure(advance_interface), deferred :: advance
+   end type stepper_t
+
+   abstract interface
+      !> Prepare to integrate from (t0, y0); evaluates f there.
+      subroutine init_interface(this, sys, t0, y0, status)
+         import :: stepper_t, ode_system_t, wp
+         class(stepper_t), intent(inout) :: this
+         class(ode_system_t), intent(inout) :: sys
+         real(wp), intent(in) :: t0
+         real(wp), intent(in) :: y0(:)
+         integer, intent(out) :: status
+      end subroutine init_interface
+
+      !> Take one accepted step, ending no later than t_limit; t and y are
+      !! updated only when status is step_ok.
+      subroutine advance_interface(this, sys, t, y, t_limit, status)
+         import :: stepper_t, ode_system_t, wp
+         class(stepper_t), intent(inout) :: this
+         class(ode_system_t), intent(inout) :: sys
+         real(wp), intent(inout) :: t
+         real(wp), intent(inout) :: y(:)
+         real(wp), intent(in) :: t_limit
+         integer, intent(out) :: status
+      end subroutine advance_interface
+   end interface
+
+contains
+
+   pure function step_status_text(status) result(text)
+      integer, intent(in) :: status
+      character(len=:), allocatable :: text
+      select case (status)
+      case (step_ok);         text = 'ok'
+      case (step_rhs_failed); text = 'the right-hand side could not be evaluated'
+      case (step_too_small);  text = 'the step size fell below its floor (the problem is too stiff ' &
+                                     //'or discontinuous for the tolerances)'
+      case (step_not_finite); text = 'the state became infinite or NaN'
+      case (step_beyond_limit); text = 'a fixed step would pass the requested end time'
+      case default;           text = 'unknown integration status'
+      end select
+   end function step_status_text
+end module ode_system

@@ -1,0 +1,156 @@
+!> Report C.1/C.3: the vehicle's motion from its time tables. For each of
+!! x_c, y_c and the pitch Phi the acceleration table is given; the rate
+!! and position tables are optional, and where given "some or all of the
+!! integrations for the vehicle may be omitted and the proper values read
+!! in from the table" (C.3).
+!!
+!! Between the t_m (docs/errata.md, D-5): accelerations vary linearly and
+!! the rate and position are their exact integrals (no integration error);
+!! a tabulated rate varies linearly and the position is its exact
+!! integral; a tabulated position varies linearly. After the last t_m the
+!! acceleration holds its last value and tabulated rates and positions
+!! continue along their last interval. The report evaluates the tables only
+!! at the t_m (Phi(t_m)); here they are evaluated at the time itself.
+module vehicle_motion
+   use kinds, only: wp
+   use model, only: model_t, pulse_table_t
+   implicit none
+   private
+
+   public :: vehicle_motion_t, vehicle_state_t, vehicle_motion_init, vehicle_state_at
+
+   !> The motion of one coordinate (x_c, y_c or Phi).
+   type :: axis_t
+      real(wp), allocatable :: ta(:), acc(:)          !< acceleration table
+      real(wp), allocatable :: acc_v(:), acc_x(:)     !< its integrals at the knots
+      logical :: rate_given = .false., pos_given = .false.
+      real(wp), allocatable :: tv(:), vel(:), vel_x(:) !< rate table and its integral
+      real(wp), allocatable :: tx(:), pos(:)           !< position table
+   end type axis_t
+
+   type :: vehicle_motion_t
+      type(axis_t) :: axis(3)
+   end type vehicle_motion_t
+
+   !> Vehicle state at a time: x_c, y_c, Phi; their rates; their accelerations.
+   type :: vehicle_state_t
+      real(wp) :: pos(3) = 0.0_wp, vel(3) = 0.0_wp, acc(3) = 0.0_wp
+   end type vehicle_state_t
+
+contains
+
+   !> Prepare the tables: cumulative integrals at the knots, once per run.
+   pure subroutine vehicle_motion_init(m, vm)
+      type(model_t), intent(in) :: m
+      type(vehicle_motion_t), intent(out) :: vm
+      real(wp) :: v0(3), x0(3)
+      integer :: j, k, n
+      real(wp) :: h
+
+      v0 = [m%xc_dot0, m%yc_dot0, m%phi_dot0]
+      x0 = [0.0_wp, 0.0_wp, m%phi0]
+      do j = 1, 3
+         associate (ax => vm%axis(j))
+            n = size(m%pulse_acc%t)
+            allocate (ax%ta(n), ax%acc(n), ax%acc_v(n), ax%acc_x(n))
+            ax%ta(:) = m%pulse_acc%t
+            ax%acc(:) = m%pulse_acc%v(:, j)
+            ax%acc_v(1) = v0(j)
+            ax%acc_x(1) = x0(j)
+            do k = 1, n - 1
+               h = ax%ta(k + 1) - ax%ta(k)
+               ax%acc_v(k + 1) = ax%acc_v(k) + 0.5_wp*h*(ax%acc(k) + ax%acc(k + 1))
+               ax%acc_x(k + 1) = ax%acc_x(k) + h*ax%acc_v(k) + h**2*(2.0_wp*ax%acc(k) + ax%acc(k + 1))/6.0_wp
+            end do
+            if (allocated(m%pulse_vel%t)) ax%rate_given = m%pulse_vel%given(j)
+            if (ax%rate_given) then
+               n = size(m%pulse_vel%t)
+               allocate (ax%tv(n), ax%vel(n), ax%vel_x(n))
+               ax%tv(:) = m%pulse_vel%t
+               ax%vel(:) = m%pulse_vel%v(:, j)
+               ax%vel_x(1) = x0(j)
+               do k = 1, n - 1
+                  ax%vel_x(k + 1) = ax%vel_x(k) + 0.5_wp*(ax%tv(k + 1) - ax%tv(k))*(ax%vel(k) + ax%vel(k + 1))
+               end do
+            end if
+            if (allocated(m%pulse_pos%t)) ax%pos_given = m%pulse_pos%given(j)
+            if (ax%pos_given) then
+               ax%tx = m%pulse_pos%t
+               ax%pos = m%pulse_pos%v(:, j)
+            end if
+         end associate
+      end do
+   end subroutine vehicle_motion_init
+
+   !> The vehicle's position, rate and acceleration at time t.
+   pure function vehicle_state_at(vm, t) result(vs)
+      type(vehicle_motion_t), intent(in) :: vm
+      real(wp), intent(in) :: t
+      type(vehicle_state_t) :: vs
+      integer :: j, k
+      real(wp) :: tau, da
+      do j = 1, 3
+         associate (ax => vm%axis(j))
+            ! acceleration table and its exact integrals
+            k = interval(ax%ta, t)
+            tau = t - ax%ta(k)
+            if (k < size(ax%ta)) then
+               da = (ax%acc(k + 1) - ax%acc(k))/(ax%ta(k + 1) - ax%ta(k))
+            else
+               da = 0.0_wp     ! after the last t_m the acceleration holds
+            end if
+            vs%acc(j) = ax%acc(k) + da*tau
+            vs%vel(j) = ax%acc_v(k) + tau*(ax%acc(k) + 0.5_wp*da*tau)
+            vs%pos(j) = ax%acc_x(k) + tau*(ax%acc_v(k) + tau*(0.5_wp*ax%acc(k) + da*tau/6.0_wp))
+            ! tabulated rates replace the first integration
+            if (ax%rate_given) then
+               k = interval(ax%tv, t)
+               tau = t - ax%tv(k)
+               da = slope(ax%tv, ax%vel, k)
+               vs%vel(j) = ax%vel(k) + da*tau
+               vs%pos(j) = ax%vel_x(k) + tau*(ax%vel(k) + 0.5_wp*da*tau)
+            end if
+            ! tabulated positions replace the second
+            if (ax%pos_given) then
+               k = interval(ax%tx, t)
+               vs%pos(j) = ax%pos(k) + slope(ax%tx, ax%pos, k)*(t - ax%tx(k))
+            end if
+         end associate
+      end do
+   end function vehicle_state_at
+
+   !> The knot interval holding t: t(k) <= t < t(k+1), or the last knot
+   !! beyond the table (k = size) and the first before it.
+   pure integer function interval(tk, t) result(k)
+      real(wp), intent(in) :: tk(:), t
+      integer :: lo, hi, mid
+      if (t >= tk(size(tk))) then
+         k = size(tk)
+         return
+      end if
+      lo = 1
+      hi = size(tk)
+      do while (hi - lo > 1)
+         mid = (lo + hi)/2
+         if (t < tk(mid)) then
+            hi = mid
+         else
+            lo = mid
+         end if
+      end do
+      k = lo
+   end function interval
+
+   !> Slope of interval k; beyond the table, that of the last interval.
+   pure real(wp) function slope(tk, v, k)
+      real(wp), intent(in) :: tk(:), v(:)
+      integer, intent(in) :: k
+      integer :: j
+      if (size(tk) < 2) then
+         slope = 0.0_wp
+         return
+      end if
+      j = min(k, size(tk) - 1)
+      slope = (v(j + 1) - v(j))/(tk(j + 1) - tk(j))
+   end function slope
+end module vehicle_motion

@@ -1,0 +1,119 @@
+!> Positions, velocities and accelerations of the body's points from the
+!! generalized coordinates (section B, the start of C.4, C.6). The body is a
+!! tree rooted at the hip; chain(:, i) lists the links from the hip to the
+!! proximal joint of segment i as (segment, length index) pairs:
+!!   1 lower torso: -                    5 upper arm:  1 L1, 2 L2, 3 L4
+!!   2 center torso: 1 L1                6 lower arm:  1 L1, 2 L2, 3 L4, 5 L5
+!!   3 upper torso: 1 L1, 2 L2           7 upper leg:  -
+!!   4 head: 1 L1, 2 L2, 3 L3            8 lower leg:  7 L7
+!! (L3 and L4 are the neck and shoulder offsets along segment 3.) Joint k
+!! is the proximal joint of segment k for k = 1..6; the knee, joint 7, is
+!! that of segment 8.
+module body_kinematics
+   use kinds, only: wp
+   use model, only: model_t, n_seg, n_dof, n_joint
+   implicit none
+   private
+
+   public :: point_state_t, segment_cg_state, joint_state, to_interior, joint_segment
+
+   integer, parameter :: max_links = 4
+   integer, parameter :: n_links(n_seg) = [0, 1, 2, 3, 3, 4, 0, 1]
+   !> chain_seg(k, i): segment of the k-th link towards segment i
+   integer, parameter :: chain_seg(max_links, n_seg) = reshape([ &
+      0, 0, 0, 0, 1, 0, 0, 0, 1, 2, 0, 0, 1, 2, 3, 0, &
+      1, 2, 3, 0, 1, 2, 3, 5, 0, 0, 0, 0, 7, 0, 0, 0], [max_links, n_seg])
+   !> chain_len(k, i): which L_j is the length of that link
+   integer, parameter :: chain_len(max_links, n_seg) = reshape([ &
+      0, 0, 0, 0, 1, 0, 0, 0, 1, 2, 0, 0, 1, 2, 3, 0, &
+      1, 2, 4, 0, 1, 2, 4, 5, 0, 0, 0, 0, 7, 0, 0, 0], [max_links, n_seg])
+   !> the segment whose proximal joint is joint k
+   integer, parameter :: joint_segment(n_joint) = [1, 2, 3, 4, 5, 6, 8]
+
+   !> Position, velocity and acceleration of a point (inertial unless said).
+   type :: point_state_t
+      real(wp) :: x = 0.0_wp, y = 0.0_wp
+      real(wp) :: vx = 0.0_wp, vy = 0.0_wp
+      real(wp) :: ax = 0.0_wp, ay = 0.0_wp
+   end type point_state_t
+
+contains
+
+   !> The point at distance d along segment i from its proximal joint
+   !! (d = rho_i: the centre of gravity; d = 0: the joint itself).
+   pure function point_on_segment(m, z, zdot, zdd, i, d) result(p)
+      type(model_t), intent(in) :: m
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
+      integer, intent(in) :: i
+      real(wp), intent(in) :: d
+      type(point_state_t) :: p
+      integer :: k
+      p%x = z(9)
+      p%y = z(10)
+      p%vx = zdot(9)
+      p%vy = zdot(10)
+      p%ax = zdd(9)
+      p%ay = zdd(10)
+      do k = 1, n_links(i)
+         call add_link(p, z, zdot, zdd, chain_seg(k, i), m%length(chain_len(k, i)))
+      end do
+      call add_link(p, z, zdot, zdd, i, d)
+   end function point_on_segment
+
+   !> Move p along segment j by the distance len.
+   pure subroutine add_link(p, z, zdot, zdd, j, len)
+      type(point_state_t), intent(inout) :: p
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
+      integer, intent(in) :: j
+      real(wp), intent(in) :: len
+      real(wp) :: c, s
+      c = cos(z(j))
+      s = sin(z(j))
+      p%x = p%x + len*c
+      p%y = p%y + len*s
+      p%vx = p%vx - len*zdot(j)*s
+      p%vy = p%vy + len*zdot(j)*c
+      ! C.6 head/chest accelerations: -L(alpha'' sin + alpha'^2 cos), +L(alpha'' cos - alpha'^2 sin)
+      p%ax = p%ax - len*(zdd(j)*s + zdot(j)**2*c)
+      p%ay = p%ay + len*(zdd(j)*c - zdot(j)**2*s)
+   end subroutine add_link
+
+   !> Centre of gravity of segment i (section B X_i, Y_i with errata E-B1,
+   !! E-B2; C.6 with E-65).
+   pure function segment_cg_state(m, z, zdot, zdd, i) result(p)
+      type(model_t), intent(in) :: m
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
+      integer, intent(in) :: i
+      type(point_state_t) :: p
+      p = point_on_segment(m, z, zdot, zdd, i, m%rho(i))
+   end function segment_cg_state
+
+   !> Joint k (1 hip .. 7 knee), inertial.
+   pure function joint_state(m, z, zdot, zdd, k) result(p)
+      type(model_t), intent(in) :: m
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
+      integer, intent(in) :: k
+      type(point_state_t) :: p
+      p = point_on_segment(m, z, zdot, zdd, joint_segment(k), 0.0_wp)
+   end function joint_state
+
+   !> The start of C.4: a point's position and velocity relative to the
+   !! vehicle interior, x = R(Phi)(X - x_c), with the -y Phi', +x Phi'
+   !! terms of the rotating frame. vpos/vvel: x_c, y_c, Phi and their rates.
+   pure function to_interior(p, vpos, vvel) result(q)
+      type(point_state_t), intent(in) :: p
+      real(wp), intent(in) :: vpos(3), vvel(3)
+      type(point_state_t) :: q
+      real(wp) :: c, s, dx, dy, dvx, dvy
+      c = cos(vpos(3))
+      s = sin(vpos(3))
+      dx = p%x - vpos(1)
+      dy = p%y - vpos(2)
+      dvx = p%vx - vvel(1)
+      dvy = p%vy - vvel(2)
+      q%x = dx*c - dy*s
+      q%y = dx*s + dy*c
+      q%vx = dvx*c - dvy*s - q%y*vvel(3)
+      q%vy = dvx*s + dvy*c + q%x*vvel(3)
+   end function to_interior
+end module body_kinematics

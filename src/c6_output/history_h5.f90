@@ -1,0 +1,730 @@
+!> The run's time histories in an HDF5 file, written as the run goes (C.6).
+!!
+!! Layout (h5py shapes; Fortran shapes are the reverse):
+!!
+!! - root attributes `title`, `program` (= "hsri2d"), `units`;
+!! - `/input/deck`: the deck's card images, 1-D fixed-length strings;
+!! - one dataset per series, e.g. `/time`, `/body/z`: float64 of shape
+!!   (rows, ncols), growing along rows, chunked; every series is 2-D, even a
+!!   one-column one such as `/time` (shape (rows, 1)), so that readers need
+!!   no special case. Attributes `columns` and `units` (string arrays, one
+!!   per column) and `description`;
+!! - `/events/time` (float64), `/events/kind` (int32), `/events/index`
+!!   (int32), `/events/text` (80-character strings): 1-D, one entry per
+!!   event, present (empty) even when no event happens.
+!!
+!! Strings are stored fixed-length, null-padded, ASCII.
+!!
+!! Rows are kept in memory per series and written in blocks of
+!! `block_rows`, which amortizes the extend/select/write cost of HDF5;
+!! `flush` writes whatever is pending and flushes the file, after which a
+!! run killed at any point leaves a file holding everything up to that
+!! flush. The file uses the oldest file format the data allows (the HDF5
+!! default): its superblock has no "open for writing" flag, so a file whose
+!! writer was killed opens with every HDF5 1.8/1.10 tool without `h5clear`.
+!!
+!! No times are stored in object headers, so the same calls give a
+!! byte-identical file.
+module history_h5
+   use kinds, only: wp
+   use error_handling, only: error_t, error_set, exit_io
+   use hdf5, only: hid_t, hsize_t, size_t, &
+                   h5open_f, h5eset_auto_f, h5iis_valid_f, &
+                   h5fcreate_f, h5fclose_f, h5fflush_f, h5f_acc_trunc_f, h5f_scope_global_f, h5f_close_strong_f, &
+                   h5pcreate_f, h5pclose_f, h5pset_obj_track_times_f, h5pset_fclose_degree_f, h5pset_chunk_f, &
+                   h5p_file_create_f, h5p_file_access_f, h5p_group_create_f, h5p_dataset_create_f, &
+                   h5gcreate_f, h5gclose_f, h5lexists_f, &
+                   h5screate_f, h5screate_simple_f, h5sclose_f, h5sselect_hyperslab_f, &
+                   h5s_scalar_f, h5s_unlimited_f, h5s_select_set_f, &
+                   h5dcreate_f, h5dclose_f, h5dset_extent_f, h5dget_space_f, h5dwrite_f, &
+                   h5acreate_f, h5aclose_f, h5awrite_f, &
+                   h5tcopy_f, h5tclose_f, h5tset_size_f, h5tset_strpad_f, h5t_str_nullpad_f, &
+                   h5t_native_character, h5t_native_double, h5t_native_integer, h5t_ieee_f64le, h5t_std_i32le
+   implicit none
+   private
+
+   public :: history_file_t
+
+   !> Rows kept in memory per series before they are written; also the
+   !! chunk length along rows.
+   integer, parameter :: block_rows = 64
+   !> Chunk length of the event datasets (events are few).
+   integer, parameter :: event_chunk = 32
+   !> Length of an event's text in the file.
+   integer, parameter :: event_text_len = 80
+   !> First capacity of the series table (it grows as needed).
+   integer, parameter :: first_capacity = 16
+
+   !> Identifier value meaning "nothing open".
+   integer(hid_t), parameter :: no_id = -1_hid_t
+
+   character(len=*), parameter :: units_text = &
+      'inch, pound force, second, radian unless an attribute says otherwise'
+
+   !> One time series: its dataset and the rows not yet written.
+   type :: series_t
+      character(len=:), allocatable :: name
+      integer(hid_t) :: dset = no_id
+      integer :: ncols = 0
+      !> Rows already in the file.
+      integer(hsize_t) :: rows_written = 0
+      !> Rows waiting in buf(:, 1:nbuf).
+      integer :: nbuf = 0
+      real(wp), allocatable :: buf(:, :)
+   end type series_t
+
+   !> An HDF5 time-history file being written. Components are private; use
+   !! the bound procedures. Call `close` before the object goes away:
+   !! pending rows are written only by `flush` and `close`.
+   type :: history_file_t
+      private
+      character(len=:), allocatable :: path
+      integer(hid_t) :: file = no_id
+      !> Group creation properties (no times) for every group we create.
+      integer(hid_t) :: gcpl = no_id
+      integer :: nseries = 0
+      type(series_t), allocatable :: series(:)
+      integer(hid_t) :: ev_time = no_id, ev_kind = no_id, ev_index = no_id, ev_text = no_id
+      integer(hsize_t) :: nevents = 0
+   contains
+      !> Create (truncate) the file: root attributes, /input/deck, /events.
+      procedure :: open => history_file_open
+      !> Add a series (a dataset growing by rows); returns its id.
+      procedure :: add_series => history_file_add_series
+      !> Append one row to a series.
+      procedure :: append => history_file_append
+      !> Append one event.
+      procedure :: add_event => history_file_add_event
+      !> Write pending rows and flush the file to the operating system.
+      procedure :: flush => history_file_flush
+      !> Write pending rows and close; harmless when not open.
+      procedure :: close => history_file_close
+      !> True between a successful `open` and `close`.
+      procedure :: is_open => history_file_is_open
+   end type history_file_t
+
+contains
+
+   !> Create the file at `path` (replacing any file there), with the root
+   !! attributes, the deck's card images as /input/deck and the empty
+   !! /events datasets. Also silences HDF5's own error printing: failures
+   !! come back in `err` only.
+   subroutine history_file_open(this, path, title, deck_lines, err)
+      class(history_file_t), intent(inout) :: this
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: title
+      character(len=*), intent(in) :: deck_lines(:)
+      type(error_t), intent(inout) :: err
+      type(error_t) :: local
+      integer(hid_t) :: fcpl, fapl, grp
+      integer :: hdferr, ignore
+
+      if (this%is_open()) then
+         call error_set(err, exit_io, 'cannot open HDF5 file '//path//': '//this%path//' is still open')
+         return
+      end if
+      this%path = path
+
+      call init_hdf5(hdferr)
+      if (hdferr < 0) then
+         call error_set(err, exit_io, 'cannot initialize the HDF5 library to write '//path)
+         return
+      end if
+      call h5eset_auto_f(0, hdferr)
+      if (hdferr < 0) then
+         call error_set(err, exit_io, 'cannot silence HDF5 error printing to write '//path)
+         return
+      end if
+
+      fcpl = no_id
+      fapl = no_id
+      call h5pcreate_f(h5p_file_create_f, fcpl, hdferr)
+      ! The root group is created with the file: no times in its header.
+      if (hdferr >= 0) call h5pset_obj_track_times_f(fcpl, .false., hdferr)
+      if (hdferr >= 0) call h5pcreate_f(h5p_file_access_f, fapl, hdferr)
+      ! Closing the file then releases every object in it, even after an error.
+      if (hdferr >= 0) call h5pset_fclose_degree_f(fapl, h5f_close_strong_f, hdferr)
+      if (hdferr >= 0) call h5pcreate_f(h5p_group_create_f, this%gcpl, hdferr)
+      if (hdferr >= 0) call h5pset_obj_track_times_f(this%gcpl, .false., hdferr)
+      if (hdferr < 0) then
+         call error_set(err, exit_io, 'cannot set up HDF5 properties to write '//path)
+      else
+         call h5fcreate_f(path, h5f_acc_trunc_f, this%file, hdferr, creation_prp=fcpl, access_prp=fapl)
+         if (hdferr < 0) then
+            this%file = no_id
+            call error_set(err, exit_io, 'cannot create HDF5 file '//path)
+         end if
+      end if
+      if (fcpl > 0) call h5pclose_f(fcpl, ignore)
+      if (fapl > 0) call h5pclose_f(fapl, ignore)
+      if (hdferr < 0) then
+         call release(this)
+         return
+      end if
+
+      this%nseries = 0
+      this%nevents = 0
+      allocate (this%series(first_capacity))
+
+      ! `local`, not `err`, says whether a step failed: `err` may hold an
+      ! earlier, unrelated error.
+      call write_string_attribute(this%file, this%path, '/', 'title', [title], .true., local)
+      if (.not. local%failed()) &
+         call write_string_attribute(this%file, this%path, '/', 'program', ['hsri2d'], .true., local)
+      if (.not. local%failed()) &
+         call write_string_attribute(this%file, this%path, '/', 'units', [units_text], .true., local)
+      if (.not. local%failed()) call write_deck(this%file, this%gcpl, this%path, deck_lines, local)
+      if (.not. local%failed()) then
+         call create_group(this%file, this%gcpl, this%path, 'events', grp, local)
+         if (grp > 0) call h5gclose_f(grp, ignore)
+      end if
+      if (.not. local%failed()) &
+         call create_growing(this%file, this%path, 'events/time', h5t_ieee_f64le, 0, event_chunk, this%ev_time, local)
+      if (.not. local%failed()) &
+         call create_growing(this%file, this%path, 'events/kind', h5t_std_i32le, 0, event_chunk, this%ev_kind, local)
+      if (.not. local%failed()) &
+         call create_growing(this%file, this%path, 'events/index', h5t_std_i32le, 0, event_chunk, this%ev_index, local)
+      if (.not. local%failed()) call create_event_text(this%file, this%path, this%ev_text, local)
+      ! Flushed now so that even a run killed before its first flush leaves
+      ! a readable file (with the deck).
+      if (.not. local%failed()) call flush_file(this%file, this%path, local)
+      if (local%failed()) then
+         call release(this)
+         call error_set(err, local%code, local%message)
+      end if
+   end subroutine history_file_open
+
+   !> Add a series `name` (a path such as "body/z"; missing groups are
+   !! created) with one column per entry of `columns` and `units`. `id`
+   !! is what `append` takes; 0 when it fails.
+   subroutine history_file_add_series(this, name, columns, units, description, id, err)
+      class(history_file_t), intent(inout) :: this
+      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: columns(:)
+      character(len=*), intent(in) :: units(:)
+      character(len=*), intent(in) :: description
+      integer, intent(out) :: id
+      type(error_t), intent(inout) :: err
+      type(series_t), allocatable :: bigger(:)
+      type(error_t) :: local
+      integer(hid_t) :: dset
+      integer :: i, ignore
+
+      id = 0
+      if (.not. this%is_open()) then
+         call error_set(err, exit_io, 'cannot add series '//name//': no HDF5 file is open')
+         return
+      end if
+      if (len_trim(name) == 0) then
+         call error_set(err, exit_io, 'cannot add a series without a name to '//this%path)
+         return
+      end if
+      if (size(columns) < 1 .or. size(columns) /= size(units)) then
+         call error_set(err, exit_io, 'cannot add series '//trim(name)//' to '//this%path// &
+                        ': it needs at least one column and one unit per column')
+         return
+      end if
+
+      ! Groups on the way, e.g. "body" for "body/z".
+      do i = 2, len_trim(name)
+         if (name(i:i) == '/' .and. name(i - 1:i - 1) /= '/') then
+            call ensure_group(this%file, this%gcpl, this%path, name(1:i - 1), local)
+            if (local%failed()) then
+               call error_set(err, local%code, local%message)
+               return
+            end if
+         end if
+      end do
+
+      call create_growing(this%file, this%path, trim(name), h5t_ieee_f64le, size(columns), block_rows, dset, local)
+      if (.not. local%failed()) &
+         call write_string_attribute(dset, this%path, trim(name), 'columns', columns, .false., local)
+      if (.not. local%failed()) &
+         call write_string_attribute(dset, this%path, trim(name), 'units', units, .false., local)
+      if (.not. local%failed()) &
+         call write_string_attribute(dset, this%path, trim(name), 'description', [description], .true., local)
+      if (local%failed()) then
+         if (dset > 0) call h5dclose_f(dset, ignore)
+         call error_set(err, local%code, local%message)
+         return
+      end if
+
+      if (this%nseries == size(this%series)) then
+         allocate (bigger(2*size(this%series)))
+         bigger(1:this%nseries) = this%series(1:this%nseries)
+         call move_alloc(bigger, this%series)
+      end if
+      this%nseries = this%nseries + 1
+      id = this%nseries
+      associate (s => this%series(id))
+         s%name = trim(name)
+         s%dset = dset
+         s%ncols = size(columns)
+         s%rows_written = 0
+         s%nbuf = 0
+         allocate (s%buf(s%ncols, block_rows))
+      end associate
+      ! The file's structure is then on disk even if no row ever is.
+      call flush_file(this%file, this%path, err)
+   end subroutine history_file_add_series
+
+   !> Append one row to series `id`; `values` holds one value per column.
+   !! The row reaches the file when the series' block fills, or at `flush`
+   !! or `close`.
+   subroutine history_file_append(this, id, values, err)
+      class(history_file_t), intent(inout) :: this
+      integer, intent(in) :: id
+      real(wp), intent(in) :: values(:)
+      type(error_t), intent(inout) :: err
+      character(len=24) :: got, want
+
+      if (.not. this%is_open()) then
+         call error_set(err, exit_io, 'cannot append a row: no HDF5 file is open')
+         return
+      end if
+      if (id < 1 .or. id > this%nseries) then
+         write (got, '(i0)') id
+         call error_set(err, exit_io, 'cannot append a row to series '//trim(got)//' in '//this%path// &
+                        ': no such series')
+         return
+      end if
+      associate (s => this%series(id))
+         if (size(values) /= s%ncols) then
+            write (got, '(i0)') size(values)
+            write (want, '(i0)') s%ncols
+            call error_set(err, exit_io, 'cannot append a row of '//trim(got)//' values to dataset '//s%name// &
+                           ' in '//this%path//': it has '//trim(want)//' columns')
+            return
+         end if
+         s%nbuf = s%nbuf + 1
+         s%buf(:, s%nbuf) = values
+         if (s%nbuf == block_rows) call write_block(this%path, s, err)
+      end associate
+   end subroutine history_file_append
+
+   !> Append one event: its time, kind, index (e.g. the joint) and a text
+   !! of up to 80 characters (longer text is cut). Written at once.
+   subroutine history_file_add_event(this, time, kind, index, text, err)
+      class(history_file_t), intent(inout) :: this
+      real(wp), intent(in) :: time
+      integer, intent(in) :: kind
+      integer, intent(in) :: index
+      character(len=*), intent(in) :: text
+      type(error_t), intent(inout) :: err
+      integer(hsize_t) :: n_new(1), start(1), one(1)
+      integer(hid_t) :: fspace, mspace, memtype
+      character(len=event_text_len) :: line(1)
+      integer :: hdferr, ignore
+
+      if (.not. this%is_open()) then
+         call error_set(err, exit_io, 'cannot add an event: no HDF5 file is open')
+         return
+      end if
+      start = this%nevents
+      one = 1
+      n_new = this%nevents + 1
+      line(1) = text
+
+      call select_new_rows(this%ev_time, n_new, start, one, fspace, mspace, hdferr)
+      if (hdferr >= 0) call h5dwrite_f(this%ev_time, h5t_native_double, [time], one, hdferr, &
+                                       mem_space_id=mspace, file_space_id=fspace)
+      call close_spaces(fspace, mspace)
+      if (hdferr < 0) then
+         call error_set(err, exit_io, 'cannot write dataset events/time in '//this%path)
+         return
+      end if
+
+      call select_new_rows(this%ev_kind, n_new, start, one, fspace, mspace, hdferr)
+      if (hdferr >= 0) call h5dwrite_f(this%ev_kind, h5t_native_integer, [kind], one, hdferr, &
+                                       mem_space_id=mspace, file_space_id=fspace)
+      call close_spaces(fspace, mspace)
+      if (hdferr < 0) then
+         call error_set(err, exit_io, 'cannot write dataset events/kind in '//this%path)
+         return
+      end if
+
+      call select_new_rows(this%ev_index, n_new, start, one, fspace, mspace, hdferr)
+      if (hdferr >= 0) call h5dwrite_f(this%ev_index, h5t_native_integer, [index], one, hdferr, &
+                                       mem_space_id=mspace, file_space_id=fspace)
+      call close_spaces(fspace, mspace)
+      if (hdferr < 0) then
+         call error_set(err, exit_io, 'cannot write dataset events/index in '//this%path)
+         return
+      end if
+
+      memtype = no_id
+      call select_new_rows(this%ev_text, n_new, start, one, fspace, mspace, hdferr)
+      if (hdferr >= 0) call string_type(event_text_len, .false., memtype, hdferr)
+      if (hdferr >= 0) call h5dwrite_f(this%ev_text, memtype, line, one, hdferr, &
+                                       mem_space_id=mspace, file_space_id=fspace)
+      if (memtype > 0) call h5tclose_f(memtype, ignore)
+      call close_spaces(fspace, mspace)
+      if (hdferr < 0) then
+         call error_set(err, exit_io, 'cannot write dataset events/text in '//this%path)
+         return
+      end if
+      this%nevents = this%nevents + 1
+   end subroutine history_file_add_event
+
+   !> Write every pending row, then have HDF5 write all it holds to the
+   !! file: a run stopped after this leaves a readable file with everything
+   !! appended so far.
+   subroutine history_file_flush(this, err)
+      class(history_file_t), intent(inout) :: this
+      type(error_t), intent(inout) :: err
+      type(error_t) :: local
+      integer :: k
+
+      if (.not. this%is_open()) then
+         call error_set(err, exit_io, 'cannot flush: no HDF5 file is open')
+         return
+      end if
+      do k = 1, this%nseries
+         call write_block(this%path, this%series(k), local)
+         if (local%failed()) exit
+      end do
+      if (.not. local%failed()) call flush_file(this%file, this%path, local)
+      if (local%failed()) call error_set(err, local%code, local%message)
+   end subroutine history_file_flush
+
+   !> Write pending rows and close the file. Everything is released even
+   !! when a write fails; an error already in `err` is kept rather than
+   !! replaced. Does nothing when the file is not open.
+   subroutine history_file_close(this, err)
+      class(history_file_t), intent(inout) :: this
+      type(error_t), intent(inout) :: err
+      type(error_t) :: local
+      integer :: k
+
+      if (.not. this%is_open()) return
+      do k = 1, this%nseries
+         if (local%failed()) exit
+         call write_block(this%path, this%series(k), local)
+      end do
+      call release(this, local)
+      if (local%failed() .and. .not. err%failed()) call error_set(err, local%code, local%message)
+   end subroutine history_file_close
+
+   !> True while the file is open.
+   pure logical function history_file_is_open(this)
+      class(history_file_t), intent(in) :: this
+      history_file_is_open = this%file > 0
+   end function history_file_is_open
+
+   ! ---------------------------------------------------------------- helpers
+
+   !> Close everything and return the object to its never-opened state.
+   !! A failure to close the file is reported through `err` when present.
+   subroutine release(this, err)
+      class(history_file_t), intent(inout) :: this
+      type(error_t), intent(inout), optional :: err
+      integer :: k, ignore, hdferr
+
+      if (allocated(this%series)) then
+         do k = 1, this%nseries
+            if (this%series(k)%dset > 0) call h5dclose_f(this%series(k)%dset, ignore)
+         end do
+         deallocate (this%series)
+      end if
+      this%nseries = 0
+      call close_dataset(this%ev_time)
+      call close_dataset(this%ev_kind)
+      call close_dataset(this%ev_index)
+      call close_dataset(this%ev_text)
+      this%nevents = 0
+      if (this%gcpl > 0) call h5pclose_f(this%gcpl, ignore)
+      this%gcpl = no_id
+      if (this%file > 0) then
+         call h5fclose_f(this%file, hdferr)
+         if (hdferr < 0 .and. present(err)) call error_set(err, exit_io, 'cannot close HDF5 file '//this%path)
+      end if
+      this%file = no_id
+   end subroutine release
+
+   !> Initialize HDF5's Fortran interface unless that is done already:
+   !! h5open_f creates the predefined types anew at every call (some 30 kB
+   !! that h5close_f alone frees), so it is called only when they are not
+   !! valid yet.
+   subroutine init_hdf5(hdferr)
+      integer, intent(out) :: hdferr
+      logical :: ready
+      call h5iis_valid_f(h5t_native_double, ready, hdferr)
+      if (hdferr < 0 .or. .not. ready) call h5open_f(hdferr)
+   end subroutine init_hdf5
+
+   !> Have HDF5 write everything it holds for the file (metadata, chunk
+   !! caches) to the operating system.
+   subroutine flush_file(file, path, err)
+      integer(hid_t), intent(in) :: file
+      character(len=*), intent(in) :: path
+      type(error_t), intent(inout) :: err
+      integer :: hdferr
+      call h5fflush_f(file, h5f_scope_global_f, hdferr)
+      if (hdferr < 0) call error_set(err, exit_io, 'cannot flush HDF5 file '//path)
+   end subroutine flush_file
+
+   subroutine close_dataset(dset)
+      integer(hid_t), intent(inout) :: dset
+      integer :: ignore
+      if (dset > 0) call h5dclose_f(dset, ignore)
+      dset = no_id
+   end subroutine close_dataset
+
+   !> Write the pending rows of one series to its dataset (nothing to do
+   !! when none are pending).
+   subroutine write_block(path, s, err)
+      character(len=*), intent(in) :: path
+      type(series_t), intent(inout) :: s
+      type(error_t), intent(inout) :: err
+      integer(hsize_t) :: n_new(2), start(2), count(2)
+      integer(hid_t) :: fspace, mspace
+      integer :: hdferr
+
+      if (s%nbuf == 0) return
+      n_new = [int(s%ncols, hsize_t), s%rows_written + s%nbuf]
+      start = [0_hsize_t, s%rows_written]
+      count = [int(s%ncols, hsize_t), int(s%nbuf, hsize_t)]
+      call select_new_rows(s%dset, n_new, start, count, fspace, mspace, hdferr)
+      if (hdferr >= 0) call h5dwrite_f(s%dset, h5t_native_double, s%buf(:, 1:s%nbuf), count, hdferr, &
+                                       mem_space_id=mspace, file_space_id=fspace)
+      call close_spaces(fspace, mspace)
+      if (hdferr < 0) then
+         call error_set(err, exit_io, 'cannot write dataset '//s%name//' in '//path)
+         return
+      end if
+      s%rows_written = s%rows_written + s%nbuf
+      s%nbuf = 0
+   end subroutine write_block
+
+   !> Grow `dset` to `n_new` and select the block at `start` of extent
+   !! `count` in its file space; `mspace` describes that block in memory.
+   !! The spaces are returned even on failure, for `close_spaces`.
+   subroutine select_new_rows(dset, n_new, start, count, fspace, mspace, hdferr)
+      integer(hid_t), intent(in) :: dset
+      integer(hsize_t), intent(in) :: n_new(:), start(:), count(:)
+      integer(hid_t), intent(out) :: fspace, mspace
+      integer, intent(out) :: hdferr
+      fspace = no_id
+      mspace = no_id
+      call h5dset_extent_f(dset, n_new, hdferr)
+      if (hdferr >= 0) call h5dget_space_f(dset, fspace, hdferr)
+      if (hdferr >= 0) call h5sselect_hyperslab_f(fspace, h5s_select_set_f, start, count, hdferr)
+      if (hdferr >= 0) call h5screate_simple_f(size(count), count, mspace, hdferr)
+   end subroutine select_new_rows
+
+   subroutine close_spaces(fspace, mspace)
+      integer(hid_t), intent(inout) :: fspace, mspace
+      integer :: ignore
+      if (fspace > 0) call h5sclose_f(fspace, ignore)
+      if (mspace > 0) call h5sclose_f(mspace, ignore)
+      fspace = no_id
+      mspace = no_id
+   end subroutine close_spaces
+
+   !> Create an empty dataset that grows along its last dimension: 1-D when
+   !! `ncols` is 0, otherwise ncols x rows. Chunked by `chunk_rows` rows.
+   subroutine create_growing(file, path, name, file_type, ncols, chunk_rows, dset, err)
+      integer(hid_t), intent(in) :: file
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(in) :: file_type
+      integer, intent(in) :: ncols, chunk_rows
+      integer(hid_t), intent(out) :: dset
+      type(error_t), intent(inout) :: err
+      integer(hsize_t), allocatable :: dims(:), maxdims(:), chunk(:)
+      integer(hid_t) :: space, dcpl
+      integer :: hdferr, ignore
+
+      if (ncols == 0) then
+         dims = [0_hsize_t]
+         maxdims = [h5s_unlimited_f]
+         chunk = [int(chunk_rows, hsize_t)]
+      else
+         dims = [int(ncols, hsize_t), 0_hsize_t]
+         maxdims = [int(ncols, hsize_t), h5s_unlimited_f]
+         chunk = [int(ncols, hsize_t), int(chunk_rows, hsize_t)]
+      end if
+      dset = no_id
+      space = no_id
+      dcpl = no_id
+      call h5screate_simple_f(size(dims), dims, space, hdferr, maxdims)
+      if (hdferr >= 0) call h5pcreate_f(h5p_dataset_create_f, dcpl, hdferr)
+      if (hdferr >= 0) call h5pset_chunk_f(dcpl, size(chunk), chunk, hdferr)
+      if (hdferr >= 0) call h5pset_obj_track_times_f(dcpl, .false., hdferr)
+      if (hdferr >= 0) call h5dcreate_f(file, name, file_type, space, dset, hdferr, dcpl_id=dcpl)
+      if (hdferr < 0) then
+         dset = no_id
+         call error_set(err, exit_io, 'cannot create dataset '//name//' in '//path)
+      end if
+      if (dcpl > 0) call h5pclose_f(dcpl, ignore)
+      if (space > 0) call h5sclose_f(space, ignore)
+   end subroutine create_growing
+
+   !> The 80-character event text dataset (its type is not a predefined one).
+   subroutine create_event_text(file, path, dset, err)
+      integer(hid_t), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hid_t), intent(out) :: dset
+      type(error_t), intent(inout) :: err
+      integer(hid_t) :: ftype
+      integer :: hdferr, ignore
+      call string_type(event_text_len, .true., ftype, hdferr)
+      if (hdferr < 0) then
+         dset = no_id
+         call error_set(err, exit_io, 'cannot create dataset events/text in '//path)
+         return
+      end if
+      call create_growing(file, path, 'events/text', ftype, 0, event_chunk, dset, err)
+      call h5tclose_f(ftype, ignore)
+   end subroutine create_event_text
+
+   !> A fixed-length string type of `n` characters: as stored in the file
+   !! (null-padded, what C and Python readers expect) or as held in Fortran
+   !! memory (blank-padded); HDF5 converts between the two.
+   subroutine string_type(n, in_file, type_id, hdferr)
+      integer, intent(in) :: n
+      logical, intent(in) :: in_file
+      integer(hid_t), intent(out) :: type_id
+      integer, intent(out) :: hdferr
+      integer :: ignore
+      call h5tcopy_f(h5t_native_character, type_id, hdferr)
+      if (hdferr < 0) then
+         type_id = no_id
+         return
+      end if
+      call h5tset_size_f(type_id, int(n, size_t), hdferr)
+      if (hdferr >= 0 .and. in_file) call h5tset_strpad_f(type_id, h5t_str_nullpad_f, hdferr)
+      if (hdferr < 0) then
+         call h5tclose_f(type_id, ignore)
+         type_id = no_id
+      end if
+   end subroutine string_type
+
+   !> Attach a string attribute to object `obj` (named `obj_name` in
+   !! messages): a scalar when `scalar` (values has one element), else a
+   !! 1-D array. Stored as wide as the longest value with blanks trimmed.
+   subroutine write_string_attribute(obj, path, obj_name, name, values, scalar, err)
+      integer(hid_t), intent(in) :: obj
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: obj_name, name
+      character(len=*), intent(in) :: values(:)
+      logical, intent(in) :: scalar
+      type(error_t), intent(inout) :: err
+      character(len=1) :: blanks(size(values))
+      integer(hsize_t) :: dims(1)
+      integer(hid_t) :: space, ftype, mtype, attr
+      integer :: hdferr, ignore
+
+      dims = size(values, kind=hsize_t)
+      space = no_id
+      ftype = no_id
+      mtype = no_id
+      attr = no_id
+      if (scalar) then
+         call h5screate_f(h5s_scalar_f, space, hdferr)
+      else
+         call h5screate_simple_f(1, dims, space, hdferr)
+      end if
+      if (hdferr >= 0) call string_type(stored_width(values), .true., ftype, hdferr)
+      if (hdferr >= 0) call string_type(max(1, len(values)), .false., mtype, hdferr)
+      if (hdferr >= 0) call h5acreate_f(obj, name, ftype, space, attr, hdferr)
+      if (hdferr >= 0) then
+         ! Zero-length strings: HDF5 string types have at least one character.
+         if (len(values) == 0) then
+            blanks = ' '
+            call h5awrite_f(attr, mtype, blanks, dims, hdferr)
+         else if (scalar) then
+            call h5awrite_f(attr, mtype, values(1), dims, hdferr)
+         else
+            call h5awrite_f(attr, mtype, values, dims, hdferr)
+         end if
+      end if
+      if (hdferr < 0) call error_set(err, exit_io, 'cannot write attribute '//name//' of '//obj_name// &
+                                     ' in '//path)
+      if (attr > 0) call h5aclose_f(attr, ignore)
+      if (mtype > 0) call h5tclose_f(mtype, ignore)
+      if (ftype > 0) call h5tclose_f(ftype, ignore)
+      if (space > 0) call h5sclose_f(space, ignore)
+   end subroutine write_string_attribute
+
+   !> Width of strings stored for `values`: the longest with trailing
+   !! blanks trimmed, at least 1. HDF5 trims the rest when it converts the
+   !! blank-padded memory strings to the null-padded file type.
+   pure integer function stored_width(values)
+      character(len=*), intent(in) :: values(:)
+      stored_width = 1
+      if (size(values) > 0) stored_width = max(1, maxval(len_trim(values)))
+   end function stored_width
+
+   !> /input/deck: one fixed-length string per card image.
+   subroutine write_deck(file, gcpl, path, deck_lines, err)
+      integer(hid_t), intent(in) :: file, gcpl
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: deck_lines(:)
+      type(error_t), intent(inout) :: err
+      integer(hsize_t) :: dims(1)
+      integer(hid_t) :: grp, space, ftype, mtype, dcpl, dset
+      integer :: hdferr, ignore
+
+      call create_group(file, gcpl, path, 'input', grp, err)
+      if (grp <= 0) return
+      call h5gclose_f(grp, ignore)
+
+      dims = size(deck_lines, kind=hsize_t)
+      space = no_id
+      ftype = no_id
+      mtype = no_id
+      dcpl = no_id
+      dset = no_id
+      call h5screate_simple_f(1, dims, space, hdferr)
+      if (hdferr >= 0) call string_type(stored_width(deck_lines), .true., ftype, hdferr)
+      if (hdferr >= 0) call string_type(max(1, len(deck_lines)), .false., mtype, hdferr)
+      if (hdferr >= 0) call h5pcreate_f(h5p_dataset_create_f, dcpl, hdferr)
+      if (hdferr >= 0) call h5pset_obj_track_times_f(dcpl, .false., hdferr)
+      if (hdferr >= 0) call h5dcreate_f(file, 'input/deck', ftype, space, dset, hdferr, dcpl_id=dcpl)
+      ! Nothing to write for an empty deck or one of zero-length lines (the
+      ! dataset then holds empty strings, the fill value).
+      if (hdferr >= 0 .and. size(deck_lines) > 0 .and. len(deck_lines) > 0) &
+         call h5dwrite_f(dset, mtype, deck_lines, dims, hdferr)
+      if (hdferr < 0) call error_set(err, exit_io, 'cannot write dataset input/deck in '//path)
+      if (dset > 0) call h5dclose_f(dset, ignore)
+      if (dcpl > 0) call h5pclose_f(dcpl, ignore)
+      if (mtype > 0) call h5tclose_f(mtype, ignore)
+      if (ftype > 0) call h5tclose_f(ftype, ignore)
+      if (space > 0) call h5sclose_f(space, ignore)
+   end subroutine write_deck
+
+   !> Create group `name`, without times in its header; `grp` is left open.
+   subroutine create_group(file, gcpl, path, name, grp, err)
+      integer(hid_t), intent(in) :: file, gcpl
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: name
+      integer(hid_t), intent(out) :: grp
+      type(error_t), intent(inout) :: err
+      integer :: hdferr
+      call h5gcreate_f(file, name, grp, hdferr, gcpl_id=gcpl)
+      if (hdferr < 0) then
+         grp = no_id
+         call error_set(err, exit_io, 'cannot create group '//name//' in '//path)
+      end if
+   end subroutine create_group
+
+   !> Create group `name` unless a link of that name exists already.
+   subroutine ensure_group(file, gcpl, path, name, err)
+      integer(hid_t), intent(in) :: file, gcpl
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: name
+      type(error_t), intent(inout) :: err
+      logical :: exists
+      integer(hid_t) :: grp
+      integer :: hdferr, ignore
+      call h5lexists_f(file, name, exists, hdferr)
+      if (hdferr < 0) then
+         call error_set(err, exit_io, 'cannot look up group '//name//' in '//path)
+         return
+      end if
+      if (exists) return
+      call create_group(file, gcpl, path, name, grp, err)
+      if (grp > 0) call h5gclose_f(grp, ignore)
+   end subroutine ensure_group
+end module history_h5

@@ -1,0 +1,109 @@
+!> A line-printer listing: 132 columns, pages of a fixed number of lines,
+!! each page headed by the program, the run title, the section and the
+!! page number. A form feed starts every page after the first. Nothing in
+!! it depends on the clock, so the same run gives the same bytes.
+module listing
+   use strings, only: itoa
+   implicit none
+   private
+
+   public :: listing_t, listing_width
+
+   integer, parameter :: listing_width = 132
+
+   type :: listing_t
+      integer :: unit = -1
+      integer :: page = 0
+      integer :: line = 0
+      integer :: lines_per_page = 60
+      character(len=72) :: title = ' '
+      character(len=60) :: section = ' '
+      character(len=24) :: program = ' '
+      integer :: io_status = 0           !< first write error (0: none)
+   contains
+      procedure :: start => listing_start
+      procedure :: new_page => listing_new_page
+      procedure :: put => listing_put
+      procedure :: blank => listing_blank
+      procedure :: heading => listing_heading
+      procedure :: keep => listing_keep
+   end type listing_t
+
+contains
+
+   subroutine listing_start(this, unit, program, title)
+      class(listing_t), intent(inout) :: this
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: program, title
+      this%unit = unit
+      this%program = program
+      this%title = title
+      this%page = 0
+      this%line = this%lines_per_page   ! the first put opens page 1
+   end subroutine listing_start
+
+   !> Start a new page for a new section.
+   subroutine listing_new_page(this, section)
+      class(listing_t), intent(inout) :: this
+      character(len=*), intent(in) :: section
+      this%section = section
+      call page_header(this)
+   end subroutine listing_new_page
+
+   subroutine page_header(this)
+      class(listing_t), intent(inout) :: this
+      character(len=listing_width) :: head
+      character(len=:), allocatable :: pg
+      this%page = this%page + 1
+      pg = 'PAGE '//itoa(this%page)
+      head = ' '
+      head(1:) = this%program
+      head(27:) = this%title
+      head(listing_width - len(pg) + 1:) = pg
+      if (this%page > 1) call emit(this, achar(12)//trim(head))
+      if (this%page == 1) call emit(this, trim(head))
+      call emit(this, trim(this%section))
+      call emit(this, '')
+      this%line = 3
+   end subroutine page_header
+
+   !> One line (cut at 132 columns), opening a new page when the page is full.
+   subroutine listing_put(this, text)
+      class(listing_t), intent(inout) :: this
+      character(len=*), intent(in) :: text
+      if (this%line >= this%lines_per_page) call page_header(this)
+      call emit(this, trim(text(1:min(len(text), listing_width))))
+      this%line = this%line + 1
+   end subroutine listing_put
+
+   subroutine listing_blank(this)
+      class(listing_t), intent(inout) :: this
+      if (this%line > 3) call this%put('')
+   end subroutine listing_blank
+
+   !> A heading with at least min_lines lines of room below it.
+   subroutine listing_heading(this, text, min_lines)
+      class(listing_t), intent(inout) :: this
+      character(len=*), intent(in) :: text
+      integer, intent(in) :: min_lines
+      call this%keep(min_lines + 3)
+      call this%blank()
+      call this%put(' '//text)
+      call this%put(' '//repeat('-', len_trim(text)))
+   end subroutine listing_heading
+
+   !> Open a new page unless n more lines fit on this one.
+   subroutine listing_keep(this, n)
+      class(listing_t), intent(inout) :: this
+      integer, intent(in) :: n
+      if (this%line + n > this%lines_per_page) call page_header(this)
+   end subroutine listing_keep
+
+   subroutine emit(this, text)
+      class(listing_t), intent(inout) :: this
+      character(len=*), intent(in) :: text
+      integer :: ios
+      write (this%unit, '(a)', iostat=ios) text
+      if (ios /= 0 .and. this%io_status == 0) this%io_status = ios
+   end subroutine emit
+end module listing

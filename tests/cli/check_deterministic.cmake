@@ -1,0 +1,15 @@
+# Two runs of the same deck give byte-identical listings and HDF5 files.
+file(MAKE_DIRECTORY ${WORK})
+foreach(i 1 2)
+  execute_process(COMMAND ${EXE} ${DECK} -o ${WORK}/run${i}.lst --h5 ${WORK}/run${i}.h5 RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "run ${i} failed with status ${rc}")
+  endif()
+endforeach()
+foreach(ext lst h5)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/run1.${ext} ${WORK}/run2.${ext}
+                  RESULT_VARIABLE same)
+  if(NOT same EQUAL 0)
+    message(FATAL_ERROR "two runs of ${DECK} gave different .${ext} files")
+  endif()
+endforeach()

@@ -1,0 +1,22 @@
+# Run a shipped deck and compare its listing with the archived one, number
+# by number within stated tolerances (numdiff): relative 1e-6, absolute
+# 1e-9 (the listing prints 4-6 significant digits, so these allow only
+# last-digit rounding differences between builds).
+# The deck is named relative to its directory so that the listing, which
+# names its decks, does not depend on where the source tree lies.
+file(MAKE_DIRECTORY ${WORK})
+get_filename_component(deck_dir ${DECK} DIRECTORY)
+get_filename_component(deck_name ${DECK} NAME)
+execute_process(COMMAND ${EXE} ${deck_name} -o ${WORK}/actual.lst WORKING_DIRECTORY ${deck_dir}
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "hsri2d ${DECK} failed with status ${rc}:\n${err}")
+endif()
+execute_process(COMMAND ${NUMDIFF} -q -s " \t\n=:()," -r 1e-6 -a 1e-9 ${EXPECTED} ${WORK}/actual.lst
+                RESULT_VARIABLE same OUTPUT_VARIABLE out)
+if(NOT same EQUAL 0)
+  execute_process(COMMAND ${NUMDIFF} -s " \t\n=:()," -r 1e-6 -a 1e-9 ${EXPECTED} ${WORK}/actual.lst
+                  OUTPUT_VARIABLE out)
+  message(FATAL_ERROR "the listing of ${DECK} differs from ${EXPECTED}:\n${out}\n"
+                      "If the change is intended: tools/regenerate-listings")
+endif()

@@ -1,0 +1,131 @@
+!> Helpers shared by the tests: models built from card images (the same
+!! path a user's deck takes), a small deterministic random generator, and
+!! an independent kinetic-energy function written from section B.
+module test_support
+   use kinds, only: wp
+   use error_handling, only: error_t
+   use text_io, only: string_t
+   use deck_reader, only: deck_t, deck_init, deck_add_lines, deck_finish
+   use model_builder, only: build_model
+   use model, only: model_t
+   use default_deck, only: default_deck_lines
+   implicit none
+   private
+
+   public :: default_model, model_from_cards, model_with_changes, rng_t, kinetic_energy_section_b
+   public :: cards_of_default
+
+   !> A linear congruential generator: the same numbers on every machine.
+   type :: rng_t
+      integer(kind=8) :: state = 12345
+   contains
+      procedure :: uniform => rng_uniform
+   end type rng_t
+
+contains
+
+   !> The model of the built-in default deck.
+   function default_model() result(m)
+      type(model_t) :: m
+      type(error_t) :: err
+      call model_from_lines(default_deck_lines(), m, err)
+      if (err%failed()) error stop 'the default deck does not parse'
+   end function default_model
+
+   !> The default deck's card images.
+   function cards_of_default() result(lines)
+      type(string_t), allocatable :: lines(:)
+      lines = default_deck_lines()
+   end function cards_of_default
+
+   !> A model from the default deck followed by extra card groups (which
+   !! replace the default's groups of the same kind).
+   subroutine model_with_changes(cards, m, err)
+      character(len=*), intent(in) :: cards(:)
+      type(model_t), intent(out) :: m
+      type(error_t), intent(inout) :: err
+      type(deck_t) :: deck
+      call deck_init(deck)
+      call deck_add_lines(deck, 'default', '', default_deck_lines(), err)
+      call deck_add_lines(deck, 'changes', '', to_strings(cards), err)
+      call deck_finish(deck, err)
+      if (.not. err%failed()) call build_model(deck, m, err)
+   end subroutine model_with_changes
+
+   !> A model from card images alone.
+   subroutine model_from_cards(cards, m, err)
+      character(len=*), intent(in) :: cards(:)
+      type(model_t), intent(out) :: m
+      type(error_t), intent(inout) :: err
+      call model_from_lines(to_strings(cards), m, err)
+   end subroutine model_from_cards
+
+   subroutine model_from_lines(lines, m, err)
+      type(string_t), intent(in) :: lines(:)
+      type(model_t), intent(out) :: m
+      type(error_t), intent(inout) :: err
+      type(deck_t) :: deck
+      call deck_init(deck)
+      call deck_add_lines(deck, 'test', '', lines, err)
+      call deck_finish(deck, err)
+      if (.not. err%failed()) call build_model(deck, m, err)
+   end subroutine model_from_lines
+
+   function to_strings(cards) result(lines)
+      character(len=*), intent(in) :: cards(:)
+      type(string_t), allocatable :: lines(:)
+      integer :: k
+      allocate (lines(size(cards)))
+      do k = 1, size(cards)
+         lines(k)%s = trim(cards(k))
+      end do
+   end function to_strings
+
+   !> Uniform in [a, b).
+   real(wp) function rng_uniform(this, a, b)
+      class(rng_t), intent(inout) :: this
+      real(wp), intent(in) :: a, b
+      this%state = modulo(this%state*6364136223846793005_8 + 1442695040888963407_8, huge(1_8))
+      rng_uniform = a + (b - a)*real(modulo(this%state/1024_8, 2_8**40), wp)/2.0_wp**40
+   end function rng_uniform
+
+   !> Kinetic energy of the body written out from section B (with errata
+   !! E-B1, E-B2), independently of the program's body_kinematics: the
+   !! velocity of every centre of gravity, link by link.
+   pure real(wp) function kinetic_energy_section_b(m, q, qd) result(ke)
+      type(model_t), intent(in) :: m
+      real(wp), intent(in) :: q(10), qd(10)
+      real(wp) :: vx(8), vy(8), l(8), r(8)
+      real(wp) :: j2x, j2y, j3x, j3y, sx, sy, ex, ey, kx, ky
+      l = m%length
+      r = m%rho
+      ! joint velocities
+      j2x = qd(9) - l(1)*qd(1)*sin(q(1))
+      j2y = qd(10) + l(1)*qd(1)*cos(q(1))
+      j3x = j2x - l(2)*qd(2)*sin(q(2))
+      j3y = j2y + l(2)*qd(2)*cos(q(2))
+      sx = j3x - l(4)*qd(3)*sin(q(3))          ! shoulder, offset L4 along segment 3
+      sy = j3y + l(4)*qd(3)*cos(q(3))
+      ex = sx - l(5)*qd(5)*sin(q(5))           ! elbow
+      ey = sy + l(5)*qd(5)*cos(q(5))
+      kx = qd(9) - l(7)*qd(7)*sin(q(7))        ! knee
+      ky = qd(10) + l(7)*qd(7)*cos(q(7))
+      vx(1) = qd(9) - r(1)*qd(1)*sin(q(1))
+      vy(1) = qd(10) + r(1)*qd(1)*cos(q(1))
+      vx(2) = j2x - r(2)*qd(2)*sin(q(2))
+      vy(2) = j2y + r(2)*qd(2)*cos(q(2))
+      vx(3) = j3x - r(3)*qd(3)*sin(q(3))
+      vy(3) = j3y + r(3)*qd(3)*cos(q(3))
+      vx(4) = j3x - l(3)*qd(3)*sin(q(3)) - r(4)*qd(4)*sin(q(4))   ! neck at L3 along segment 3
+      vy(4) = j3y + l(3)*qd(3)*cos(q(3)) + r(4)*qd(4)*cos(q(4))
+      vx(5) = sx - r(5)*qd(5)*sin(q(5))
+      vy(5) = sy + r(5)*qd(5)*cos(q(5))
+      vx(6) = ex - r(6)*qd(6)*sin(q(6))
+      vy(6) = ey + r(6)*qd(6)*cos(q(6))
+      vx(7) = qd(9) - r(7)*qd(7)*sin(q(7))
+      vy(7) = qd(10) + r(7)*qd(7)*cos(q(7))
+      vx(8) = kx - r(8)*qd(8)*sin(q(8))
+      vy(8) = ky + r(8)*qd(8)*cos(q(8))
+      ke = 0.5_wp*sum(m%mass*(vx**2 + vy**2) + m%inertia*qd(1:8)**2)
+   end function kinetic_energy_section_b
+end module test_support

@@ -1,0 +1,437 @@
+#!/usr/bin/env python3
+"""pfunit_lite preprocessor: pFUnit test modules (.pf) to plain Fortran.
+
+A stand-in for pFUnit's funitproc, used when no pFUnit is installed, for
+the subset of pFUnit described in tests/funit_lite/README.md. The same .pf
+files build unchanged under a real pFUnit.
+
+    pfproc.py module INPUT.pf OUTPUT.F90
+        Write the test module with every @assert... line replaced by a call
+        to the assertion of the funit module (tests/funit_lite/funit.F90)
+        carrying the .pf file's name and line, followed by
+        `if (anyExceptions()) return`. `#line` markers keep compiler
+        messages pointing at the .pf file.
+
+    pfproc.py driver OUTPUT.F90 INPUT.pf [INPUT.pf ...]
+        Write a program that runs every @test of the given modules in file
+        order, with the module's @before and @after around each, and prints
+        a summary; its exit status is 1 if any test failed.
+
+Malformed input is reported as `file:line: error: ...` with exit status 1.
+Standard library only.
+"""
+
+import argparse
+import os
+import re
+import sys
+
+# Supported assertions: lower-case directive -> (funit procedure, operands
+# required, counted as pFUnit's preprocessor counts them).
+ASSERTIONS = {
+    "assertequal": ("assertEqual", 2),
+    "assertnotequal": ("assertNotEqual", 2),
+    "assertrelativelyequal": ("assertRelativelyEqual", 2),
+    "asserttrue": ("assertTrue", 1),
+    "assertfalse": ("assertFalse", 1),
+    "assertlessthan": ("assertLessThan", 2),
+    "assertlessthanorequal": ("assertLessThanOrEqual", 2),
+    "assertgreaterthan": ("assertGreaterThan", 2),
+    "assertgreaterthanorequal": ("assertGreaterThanOrEqual", 2),
+    "assertexceptionraised": ("assertExceptionRaised", 0),
+}
+
+# @test options that change which tests exist or how they run; the stand-in
+# cannot honour them, so it refuses them rather than ignore them.
+UNSUPPORTED_TEST_OPTIONS = ("npes", "ifdef", "ifndef", "type", "cases", "testparameters")
+
+MODULE_RE = re.compile(r"\s*module\s+(\w+)\s*$", re.IGNORECASE)
+SUBROUTINE_RE = re.compile(r"\s*subroutine\s+(\w+)\s*(\((.*)\))?\s*$", re.IGNORECASE)
+KEYWORD_ARG_RE = re.compile(r"\s*[A-Za-z]\w*\s*=(?!=)")
+
+# Longest generated line before continuation (the project allows 132).
+WRAP_WIDTH = 100
+
+
+class PfError(Exception):
+    """Malformed .pf input, reported as file:line: error: text."""
+
+    def __init__(self, path, line, text):
+        super().__init__(f"{path}:{line}: error: {text}")
+
+
+class Suite:
+    """What the driver needs from one .pf file."""
+
+    def __init__(self, path):
+        self.path = path
+        self.module = None
+        self.tests = []  # (name, line, disabled) in file order
+        self.before = None
+        self.after = None
+
+
+# --------------------------------------------------------------------------
+# Fortran lexical helpers
+# --------------------------------------------------------------------------
+
+def strip_comment(text, quote):
+    """Cut a trailing `!` comment; `quote` is the string delimiter open at
+    the start of the text (or None). Returns (code, quote open at the end)."""
+    i = 0
+    while i < len(text):
+        c = text[i]
+        if quote:
+            if c == quote:
+                if text[i + 1:i + 2] == quote:  # doubled quote inside a string
+                    i += 1
+                else:
+                    quote = None
+        elif c in "'\"":
+            quote = c
+        elif c == "!":
+            return text[:i], quote
+        i += 1
+    return text, quote
+
+
+def is_blank_or_comment(line):
+    stripped = line.strip()
+    return not stripped or stripped.startswith("!")
+
+
+def read_directive(lines, start, path):
+    """Join a directive continued with `&` (comment lines may sit between
+    the parts) and drop its comments. Returns (text, index after it)."""
+    text, quote = strip_comment(lines[start], None)
+    text = text.rstrip()
+    i = start + 1
+    while text.endswith("&"):
+        text = text[:-1]
+        while i < len(lines) and is_blank_or_comment(lines[i]) and not quote:
+            i += 1
+        if i == len(lines):
+            raise PfError(path, start + 1, "directive continued past the end of the file")
+        part = lines[i].lstrip()
+        if part.startswith("&"):
+            part = part[1:]
+        part, quote = strip_comment(part, quote)
+        text += part.rstrip()
+        i += 1
+    if quote:
+        raise PfError(path, start + 1, "unterminated character string in directive")
+    return text.strip(), i
+
+
+def split_arguments(text, path, line):
+    """Split '(a, b, ...)' at its top-level commas, respecting strings and
+    nested () and []. Nothing may follow the closing parenthesis."""
+    if not text.startswith("("):
+        raise PfError(path, line, "expected '(' after the assertion name")
+    closing = {"(": ")", "[": "]"}
+    stack, quote, args, start = [], None, [], 1
+    for i, c in enumerate(text):
+        if quote:
+            if c == quote:
+                quote = None  # a doubled quote reopens at once: same result
+            continue
+        if c in "'\"":
+            quote = c
+        elif c in closing:
+            stack.append(closing[c])
+        elif c in ")]":
+            if not stack or stack.pop() != c:
+                raise PfError(path, line, f"unbalanced '{c}' in assertion arguments")
+            if not stack:
+                if text[i + 1:].strip():
+                    raise PfError(path, line, f"unexpected text after the arguments: '{text[i + 1:].strip()}'")
+                args.append(text[start:i])
+                return arguments_list(args, path, line)
+        elif c == "," and len(stack) == 1:
+            args.append(text[start:i])
+            start = i + 1
+    raise PfError(path, line, "unbalanced '(' in assertion arguments")
+
+
+def arguments_list(args, path, line):
+    args = [a.strip() for a in args]
+    if args == [""]:
+        return []
+    if any(not a for a in args):
+        raise PfError(path, line, "empty argument in assertion")
+    return args
+
+
+def wrap(indent, statement):
+    """Lines of `statement` no wider than WRAP_WIDTH. Breaks use `&` at both
+    ends, which continues the text exactly, even inside strings or tokens."""
+    room = max(40, WRAP_WIDTH - len(indent) - 4)
+    lines, prefix = [], indent
+    while len(statement) > room:
+        cut = break_point(statement, room)
+        lines.append(prefix + statement[:cut] + "&")
+        statement = statement[cut:]
+        prefix = indent + "   &"
+    lines.append(prefix + statement)
+    return lines
+
+
+def break_point(text, room):
+    """Index just after the last blank outside strings within `room`, else
+    `room` itself."""
+    quote, best = None, 0
+    for i, c in enumerate(text[:room]):
+        if quote:
+            if c == quote:
+                quote = None
+        elif c in "'\"":
+            quote = c
+        elif c == " " and i > 0:
+            best = i + 1
+    return best or room
+
+
+def fortran_string(text):
+    return "'" + text.replace("'", "''") + "'"
+
+
+def line_marker(line, path):
+    return f'#line {line} "{os.path.abspath(path)}"'
+
+
+# --------------------------------------------------------------------------
+# .pf parsing
+# --------------------------------------------------------------------------
+
+class Parser:
+    """Reads one .pf file, producing the Fortran module text and the Suite."""
+
+    def __init__(self, path):
+        self.path = path
+        self.name = os.path.basename(path)
+        with open(path, encoding="utf-8") as f:
+            self.lines = f.read().splitlines()
+        self.suite = Suite(path)
+        self.out = []
+        self.pending = None  # (directive, line) waiting for its subroutine
+        self.disabled = False
+
+    def error(self, line, text):
+        return PfError(self.path, line, text)
+
+    def run(self):
+        self.out.append(f"! Generated from {self.name} by tools/pfunit_lite/pfproc.py: do not edit.")
+        self.out.append(line_marker(1, self.path))
+        i = 0
+        while i < len(self.lines):
+            line = self.lines[i]
+            if line.lstrip().startswith("@"):
+                text, after = read_directive(self.lines, i, self.path)
+                self.directive(text, i + 1, after - i)
+                i = after
+                continue
+            if not is_blank_or_comment(line):
+                self.statement(line, i + 1)
+            self.out.append(line)
+            i += 1
+        self.finish()
+        return "\n".join(self.out) + "\n"
+
+    def finish(self):
+        if self.pending:
+            directive, line = self.pending
+            raise self.error(line, f"@{directive} is not followed by a subroutine")
+        if not self.suite.module:
+            raise self.error(1, "no 'module <name>' statement found")
+        if not self.suite.tests:
+            raise self.error(1, "no @test found")
+
+    def statement(self, line, number):
+        """A Fortran line: the module statement, or the subroutine a pending
+        @test, @before or @after applies to."""
+        if self.pending:
+            self.subroutine(line, number)
+            return
+        match = MODULE_RE.match(strip_comment(line, None)[0])
+        if match and not self.suite.module:
+            self.module(match.group(1), number)
+
+    def module(self, name, number):
+        stem = os.path.splitext(self.name)[0]
+        if name.lower() != stem.lower():
+            raise self.error(number, f"module '{name}' must be named after its file: '{stem}'")
+        self.suite.module = name
+
+    def subroutine(self, line, number):
+        directive, _ = self.pending
+        match = SUBROUTINE_RE.match(strip_comment(line, None)[0])
+        if not match:
+            raise self.error(number, f"expected 'subroutine <name>()' after @{directive}")
+        name = match.group(1)
+        if match.group(3) and match.group(3).strip():
+            raise self.error(number, f"@{directive} subroutine '{name}' must take no arguments "
+                                     "(test-case classes are not supported)")
+        if directive == "test":
+            if any(t[0].lower() == name.lower() for t in self.suite.tests):
+                raise self.error(number, f"test '{name}' defined twice")
+            self.suite.tests.append((name, number, self.disabled))
+        else:
+            setattr(self.suite, directive, name)
+        self.pending = None
+        self.disabled = False
+
+    def directive(self, text, number, length):
+        match = re.match(r"@(\w+)\s*(.*)$", text, re.DOTALL)
+        if not match:
+            raise self.error(number, f"malformed directive '{text}'")
+        name, rest = match.group(1), match.group(2)
+        word = name.lower()
+        if word in ASSERTIONS:
+            self.assertion(word, rest, number, length)
+            return
+        if word not in ("test", "before", "after", "disable"):
+            raise self.error(number, f"@{name} is not supported by pfunit_lite "
+                                     "(see tests/funit_lite/README.md)")
+        if word == "test":
+            self.test_options(rest, number)
+        elif rest:
+            raise self.error(number, f"@{word} takes no arguments")
+        if word == "disable":
+            self.disable(number)
+        else:
+            self.expect_subroutine(word, number)
+        # Comment lines in place of the directive's lines.
+        self.out.append("!" + self.lines[number - 1].lstrip())
+        self.out.extend("!" for _ in range(length - 1))
+
+    def disable(self, number):
+        if not self.pending or self.pending[0] != "test" or self.disabled:
+            raise self.error(number, "@disable must stand between @test and its subroutine")
+        self.disabled = True
+
+    def expect_subroutine(self, word, number):
+        if self.pending:
+            raise self.error(self.pending[1], f"@{self.pending[0]} is not followed by a subroutine")
+        if word in ("before", "after") and getattr(self.suite, word):
+            raise self.error(number, f"second @{word} in the module")
+        self.pending = (word, number)
+
+    def test_options(self, rest, number):
+        if not rest:
+            return
+        if not (rest.startswith("(") and rest.endswith(")")):
+            raise self.error(number, "expected '@test' or '@test(options)'")
+        for option in UNSUPPORTED_TEST_OPTIONS:
+            if re.search(r"\b" + option + r"\s*=", rest, re.IGNORECASE):
+                raise self.error(number, f"@test option '{option}' is not supported by pfunit_lite")
+
+    def assertion(self, word, rest, number, length):
+        if self.pending:
+            directive, line = self.pending
+            raise self.error(line, f"@{directive} is not followed by a subroutine")
+        procedure, operands = ASSERTIONS[word]
+        args = split_arguments(rest, self.path, number)
+        if len(args) < operands:
+            raise self.error(number, f"@{procedure} needs at least {operands} argument(s)")
+        location = f"location=SourceLocation({fortran_string(self.name)}, {number})"
+        indent = re.match(r"\s*", self.lines[number - 1]).group(0)
+        expansion = wrap(indent, f"call {procedure}(" + ", ".join(args + [location]) + ")")
+        expansion.append(f"{indent}if (anyExceptions()) return")
+        # Each generated line is marked as the directive's line, so that
+        # compiler messages point at it; then numbering resumes after it.
+        for text in expansion:
+            self.out += [line_marker(number, self.path), text]
+        self.out.append(line_marker(number + length, self.path))
+
+
+def parse(path):
+    parser = Parser(path)
+    text = parser.run()
+    return text, parser.suite
+
+
+# --------------------------------------------------------------------------
+# Driver
+# --------------------------------------------------------------------------
+
+def driver_text(suites):
+    """The program that runs every test of `suites` in order."""
+    check_unique_modules(suites)
+    uses = ["   use funit, only: funit_run_test, funit_skip_test, funit_finish"]
+    calls = []
+    for m, suite in enumerate(suites, start=1):
+        suite_uses, suite_calls = suite_driver(m, suite)
+        uses += suite_uses
+        calls += suite_calls
+    return "\n".join(["! Generated by tools/pfunit_lite/pfproc.py: do not edit.",
+                      "program funit_driver"] + uses + ["   implicit none", ""] + calls
+                     + ["   call funit_finish()", "end program funit_driver"]) + "\n"
+
+
+def check_unique_modules(suites):
+    seen = {}
+    for suite in suites:
+        key = suite.module.lower()
+        if key in seen:
+            raise PfError(suite.path, 1, f"module '{suite.module}' also defined in {seen[key]}")
+        seen[key] = suite.path
+
+
+def suite_driver(m, suite):
+    """The use statements and calls for the m-th suite. Procedures are
+    renamed on import (t<m>_<k>, b<m>, a<m>) so that modules may share names."""
+    uses, calls, fixtures = [], [], ""
+    for prefix, keyword, name in (("b", "before", suite.before), ("a", "after", suite.after)):
+        if name:
+            uses.append(f"   use {suite.module}, only: {prefix}{m} => {name}")
+            fixtures += f", {keyword}={prefix}{m}"
+    file_name = fortran_string(os.path.basename(suite.path))
+    for k, (name, line, disabled) in enumerate(suite.tests, start=1):
+        where = f"{file_name}, {line}, {fortran_string(name)}"
+        if disabled:
+            calls += wrap("   ", f"call funit_skip_test({where})")
+        else:
+            uses.append(f"   use {suite.module}, only: t{m}_{k} => {name}")
+            calls += wrap("   ", f"call funit_run_test({where}, t{m}_{k}{fixtures})")
+    return uses, calls
+
+
+# --------------------------------------------------------------------------
+# Command line
+# --------------------------------------------------------------------------
+
+def write(path, text):
+    directory = os.path.dirname(path)
+    if directory:
+        os.makedirs(directory, exist_ok=True)
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    commands = parser.add_subparsers(dest="command", required=True)
+    module = commands.add_parser("module", help="preprocess one .pf file")
+    module.add_argument("input")
+    module.add_argument("output")
+    driver = commands.add_parser("driver", help="write the test program for .pf files")
+    driver.add_argument("output")
+    driver.add_argument("inputs", nargs="+")
+    args = parser.parse_args(argv)
+    try:
+        if args.command == "module":
+            text, _ = parse(args.input)
+            write(args.output, text)
+        else:
+            write(args.output, driver_text([parse(path)[1] for path in args.inputs]))
+    except PfError as error:
+        print(error, file=sys.stderr)
+        return 1
+    except OSError as error:
+        print(f"pfproc.py: {error}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
