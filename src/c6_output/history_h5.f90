@@ -16,15 +16,26 @@
 !! Strings are stored fixed-length, null-padded, ASCII.
 !!
 !! Rows are kept in memory per series and written in blocks of
-!! `block_rows`, which amortizes the extend/select/write cost of HDF5;
-!! `flush` writes whatever is pending and flushes the file, after which a
-!! run killed at any point leaves a file holding everything up to that
-!! flush. The file uses the oldest file format the data allows (the HDF5
-!! default): its superblock has no "open for writing" flag, so a file whose
-!! writer was killed opens with every HDF5 1.8/1.10 tool without `h5clear`.
+!! `block_rows` (also the chunk length), which amortizes HDF5's
+!! extend/select/write cost; `flush` writes whatever is pending, then
+!! H5Fflush(H5F_SCOPE_GLOBAL) hands everything to the operating system
+!! (no fsync: this survives a killed process, not a system crash). `open`
+!! and `add_series` flush too, so the file is readable from the start.
 !!
-!! No times are stored in object headers, so the same calls give a
-!! byte-identical file.
+!! A run killed between flushes leaves a readable file holding everything
+!! up to the last flush (tests/h5/h5_killed_run.sh). This relies on the
+!! HDF5 default file format (libver bounds earliest..latest, superblock
+!! v0), whose superblock has no "open for writing" flag: with libver
+!! latest (and so with SWMR, which needs it) a killed writer leaves a file
+!! that HDF5 1.10 refuses to open until `h5clear -s` is run. HDF5 1.10 has
+!! no journal, so a kill in the middle of a flush can leave the newest
+!! chunks unreadable; `h5clear --increment FILE` usually repairs that.
+!! When the caller flushes at least every `block_rows` rows, only
+!! `add_event` touches the file between flushes.
+!!
+!! No times are stored in object headers (object time tracking is off for
+!! the root group, groups and datasets), so the same calls with the same
+!! HDF5 library give a byte-identical file.
 module history_h5
    use kinds, only: wp
    use error_handling, only: error_t, error_set, exit_io
@@ -295,6 +306,11 @@ contains
             call error_set(err, exit_io, 'cannot append a row of '//trim(got)//' values to dataset '//s%name// &
                            ' in '//this%path//': it has '//trim(want)//' columns')
             return
+         end if
+         if (s%nbuf == block_rows) then
+            ! The block could not be written earlier: try again first.
+            call write_block(this%path, s, err)
+            if (s%nbuf == block_rows) return
          end if
          s%nbuf = s%nbuf + 1
          s%buf(:, s%nbuf) = values

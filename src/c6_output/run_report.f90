@@ -8,7 +8,8 @@ module run_report
    use strings, only: itoa
    use model, only: model_t, n_seg, n_joint, n_injury, n_arc, joint_partner, segment_name, &
       joint_name, arc_name, form_name, form_table, integrator_name, end_option_name
-   use deck_reader, only: deck_t, echo_bad
+   use deck_reader, only: deck_t, echo_bad, echo_header
+   use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text
    use listing, only: listing_t
    use simulation, only: run_result_t
    use output_calc, only: output_record_t
@@ -66,6 +67,7 @@ contains
       type(deck_t), intent(in) :: deck
       integer :: k
       character(len=132) :: line
+      character(len=28) :: where
       character(len=1) :: mark
       call lst%new_page('INPUT DECK (C.1)')
       call lst%put(' CARD  M  SOURCE:LINE                  ' &
@@ -77,14 +79,35 @@ contains
             mark = ' '
             if (e%group < 0) mark = 'R'          ! replaced by a later deck
             if (e%kind == echo_bad) mark = '?'
-            write (line, '(i5,2x,a1,2x,a28,1x,a)') k, mark, &
-               trim(source_line(deck, e%source, e%line)), e%text
+            where = source_line(deck, e%source, e%line)
+            write (line, '(i5,2x,a1,2x,a28,1x,a)') k, mark, where, e%text
             call lst%put(line)
+            ! under each group header, the group's fields at their columns (card table)
+            if (e%kind == echo_header .and. e%group /= 0) then
+               write (line, '(5x,2x,a1,2x,a28,1x,a)') ':', '', field_ruler(deck%spec(abs(e%group)))
+               if (len_trim(line(40:)) > 0) call lst%put(line)
+            end if
          end associate
       end do
       call lst%blank()
       call lst%put(' M: R = card of a group replaced by a later deck; the listing uses the later group.')
+      call lst%put('    : the fields of the group and their columns, from the card table (docs/deck-format.md).')
    end subroutine write_deck_echo
+
+   !> The names of a group's fields placed at their columns, and 'i' over
+   !! the index columns of an indexed group.
+   function field_ruler(spec) result(r)
+      type(group_spec_t), intent(in) :: spec
+      character(len=80) :: r
+      integer :: k
+      r = ' '
+      if (spec%layout == layout_indexed .or. spec%layout == layout_multi) r(2:2) = 'i'
+      do k = 1, spec%n_fields
+         if (spec%field(k)%kind == kind_text) cycle
+         r(spec%field(k)%first_col:spec%field(k)%last_col) = '['//trim(spec%field(k)%name)
+         r(spec%field(k)%last_col:spec%field(k)%last_col) = ']'
+      end do
+   end function field_ruler
 
    function source_line(deck, src, line) result(s)
       type(deck_t), intent(in) :: deck
@@ -94,6 +117,7 @@ contains
       name = deck%source_name(src)%s
       if (len(name) > 22) name = '...'//name(len(name) - 18:)
       s = name//':'//itoa(line)
+      ! left-aligned in its column (A editing would right-align a short string)
    end function source_line
 
    !> Tables 1-6 of the report, as the run uses them.
