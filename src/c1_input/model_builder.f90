@@ -422,7 +422,7 @@ contains
       type(error_t), intent(inout) :: err
       type(string_t), allocatable :: lines(:)
       type(error_t) :: io_err
-      character(len=:), allocatable :: path, line
+      character(len=:), allocatable :: path, line, bad_text
       real(wp), allocatable :: t(:), v(:, :)
       real(wp) :: row(4), scale(4)
       integer :: i, n, nfield, bad
@@ -444,14 +444,14 @@ contains
          line = trim(lines(i)%s)
          if (len(line) == 0) cycle
          if (line(1:1) == '#') cycle
-         call split_csv_row(line, row, nfield, bad)
+         call split_csv_row(line, row, nfield, bad, bad_text)
          if (bad > 0 .and. header_allowed) then
             header_allowed = .false.    ! a first line of column names
             cycle
          end if
          header_allowed = .false.
          if (bad > 0) then
-            call csv_problem(path, i, 'field '//itoa(bad)//': expected a number')
+            call csv_problem(path, i, 'field '//itoa(bad)//': found "'//bad_text//'"; expected a number')
             cycle
          end if
          if (nfield < 2 .or. nfield > 4) then
@@ -485,17 +485,19 @@ contains
    end subroutine read_pulse_csv
 
    !> Split "a, b, c" into numbers; bad is the first field that is not a
-   !! number (0 if none); missing fields are 0.
-   subroutine split_csv_row(line, row, nfield, bad)
+   !! number (0 if none) and bad_text its text; missing fields are 0.
+   subroutine split_csv_row(line, row, nfield, bad, bad_text)
       character(len=*), intent(in) :: line
       real(wp), intent(out) :: row(4)
       integer, intent(out) :: nfield, bad
+      character(len=:), allocatable, intent(out) :: bad_text
       integer :: start, comma
       logical :: ok
       character(len=:), allocatable :: f
       row = 0.0_wp
       nfield = 0
       bad = 0
+      bad_text = ''
       start = 1
       do
          comma = index(line(start:), ',')
@@ -507,7 +509,10 @@ contains
          nfield = nfield + 1
          if (nfield <= 4) then
             call read_real(f, row(nfield), ok)
-            if (.not. ok .and. bad == 0) bad = nfield
+            if (.not. ok .and. bad == 0) then
+               bad = nfield
+               bad_text = f(1:min(len(f), 40))
+            end if
          end if
          if (comma == 0) exit
          start = start + comma
