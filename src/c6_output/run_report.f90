@@ -501,7 +501,8 @@ contains
             ' of the largest body kinetic energy (rounding)'
       else
          write (line, '(a,es13.5,a,f10.5,a,es10.3,a)') '  largest balance error   ', res%energy_error_max%value, &
-            ' in*lb at t =', res%energy_error_max%t, ' s (', abs(res%energy_error_max%value)/ke_max, &
+            ' in*lb at t =', res%energy_error_max%t, ' s (', &
+            abs(res%energy_error_max%value)/max(ke_max, tiny(1.0_wp)), &
             ' of the largest body kinetic energy)'
       end if
       call lst%put(line)

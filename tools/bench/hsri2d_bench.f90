@@ -57,6 +57,11 @@ program hsri2d_bench
          times(k) = real(t1 - t0, wp)/real(rate, wp)
       end do
       median = median_of(times)
+      if (err%failed() .or. res%evaluations == 0 .or. .not. res%t_end > 0.0_wp) then
+         write (error_unit, '(a)') trim(arg)//': the run failed: '//err%message
+         deallocate (times)
+         cycle
+      end if
       write (output_unit, '(2x,a30,i6,f18.3,f16.3,f15.3,i14,i11)') basename(trim(arg)), repeat, 1.0e3_wp*median, &
          1.0e3_wp*median/res%t_end, 1.0e6_wp*median/real(res%evaluations, wp), res%evaluations, res%stats%steps
       deallocate (times)
