@@ -57,8 +57,12 @@ program hsri2d_bench
          times(k) = real(t1 - t0, wp)/real(rate, wp)
       end do
       median = median_of(times)
-      if (err%failed() .or. res%evaluations == 0 .or. .not. res%t_end > 0.0_wp) then
+      if (err%failed()) then
          write (error_unit, '(a)') trim(arg)//': the run failed: '//err%message
+         deallocate (times)
+         cycle
+      else if (res%evaluations == 0 .or. .not. res%t_end > 0.0_wp) then
+         write (error_unit, '(a)') trim(arg)//': the run took no step'
          deallocate (times)
          cycle
       end if
