@@ -1,7 +1,7 @@
 !> The command line of hsri2d (docs/usage.md).
 module command_line
    use error_handling, only: error_t, error_set, exit_usage
-   use text_io, only: string_t
+   use text_io, only: string_t, append_string
    implicit none
    private
 
@@ -37,11 +37,11 @@ contains
          i = i + 1
          arg = argument(i)
          if (options_done .or. len(arg) == 0) then
-            opts%decks = [opts%decks, string_t(arg)]
+            call append_string(opts%decks, arg)
             cycle
          end if
          if (arg(1:1) /= '-') then
-            opts%decks = [opts%decks, string_t(arg)]
+            call append_string(opts%decks, arg)
             cycle
          end if
          select case (arg)

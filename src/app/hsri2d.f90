@@ -5,7 +5,7 @@ program hsri2d
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use, intrinsic :: iso_c_binding, only: c_int
    use error_handling, only: error_t, exit_ok, exit_io, exit_deck, exit_numerical, error_category_name
-   use text_io, only: string_t
+   use text_io, only: string_t, append_string
    use command_line, only: options_t, parse_command_line, usage_text, builtin_deck_name
    use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
    use deck_doc, only: write_deck_format
@@ -62,7 +62,7 @@ program hsri2d
 
    ! C.1: read every deck, then check the whole
    call deck_init(deck)
-   if (size(opts%decks) == 0) opts%decks = [string_t(builtin_deck_name)]
+   if (size(opts%decks) == 0) call append_string(opts%decks, builtin_deck_name)
    do i = 1, size(opts%decks)
       if (opts%decks(i)%s == builtin_deck_name) then
          call deck_add_lines(deck, builtin_deck_name, '', builtin, err)

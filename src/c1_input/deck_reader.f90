@@ -8,7 +8,7 @@ module deck_reader
    use kinds, only: wp
    use strings, only: itoa, num, upper, read_real, read_int
    use error_handling, only: error_t, error_append, exit_deck
-   use text_io, only: string_t, read_text_file
+   use text_io, only: string_t, read_text_file, append_string
    use deck_cards, only: group_spec_t, field_spec_t, card_table, max_fields, card_width, &
       index_first_col, index_last_col, data_last_col, field_first_col, field_last_col, &
       kind_real, kind_int, kind_word, kind_text, blank_default, blank_required, blank_absent, &
@@ -96,8 +96,8 @@ contains
       integer :: src, i, gid, current, first_line(n_groups)
       character(len=:), allocatable :: text, word
 
-      deck%source_name = [deck%source_name, string_t(name)]
-      deck%source_dir = [deck%source_dir, string_t(directory)]
+      call append_string(deck%source_name, name)
+      call append_string(deck%source_dir, directory)
       src = size(deck%source_name)
       current = 0
       first_line = 0

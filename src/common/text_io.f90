@@ -7,7 +7,7 @@ module text_io
    implicit none
    private
 
-   public :: string_t, read_text_file, split_lines, max_file_bytes
+   public :: string_t, read_text_file, split_lines, append_string, max_file_bytes
 
    !> A line of text of any length.
    type :: string_t
@@ -94,4 +94,19 @@ contains
          end if
       end do
    end subroutine split_lines
+   !> Add one string to a list (by hand: an array constructor of derived
+   !! values with allocatable components leaks in gfortran 12).
+   pure subroutine append_string(list, text)
+      type(string_t), allocatable, intent(inout) :: list(:)
+      character(len=*), intent(in) :: text
+      type(string_t), allocatable :: tmp(:)
+      integer :: k
+      allocate (tmp(size(list) + 1))
+      do k = 1, size(list)
+         call move_alloc(list(k)%s, tmp(k)%s)
+      end do
+      tmp(size(tmp))%s = text
+      call move_alloc(tmp, list)
+   end subroutine append_string
+
 end module text_io
