@@ -122,7 +122,9 @@ contains
          if (.not. whole_multiple(m%dt_print, m%dt)) call problem(deck, err, c, 'DTPRINT = ' &
             //num(m%dt_print)//' s is not a whole multiple of DT = '//num(m%dt)//' s')
       end if
+      ! step and print counts must stay countable (and far from integer overflow)
       if (m%t_max/m%dt > 1.0e9_wp) call problem(deck, err, c, 'TMAX/DT is more than 1e9 steps')
+      if (m%dt_print/m%dt > 1.0e9_wp) call problem(deck, err, c, 'DTPRINT/DT is more than 1e9 steps')
    end subroutine read_time
 
    !> Table 1 segment columns and the initial position.
