@@ -4,18 +4,12 @@
 program hsri2d
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use, intrinsic :: iso_c_binding, only: c_int
-   use error_handling, only: error_t, exit_ok, exit_io, exit_deck, exit_numerical, error_category_name
-   use text_io, only: string_t, append_string
-   use command_line, only: options_t, parse_command_line, usage_text, builtin_deck_name
-   use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
+   use error_handling, only: error_t, exit_ok, exit_deck, exit_numerical, error_category_name
+   use text_io, only: string_t
+   use command_line, only: options_t, parse_command_line, usage_text
    use deck_doc, only: write_deck_format
    use default_deck, only: default_deck_lines
-   use model_builder, only: build_model
-   use model, only: model_t
-   use simulation, only: run_result_t, run_simulation
-   use listing, only: listing_t
-   use run_report, only: write_listing
-   use history_sink, only: history_sink_t, history_sink_open
+   use run_case_mod, only: run_request_t, run_case
    use version_info, only: hsri2d_version
    implicit none
 
@@ -28,15 +22,10 @@ program hsri2d
    end interface
 
    type(options_t) :: opts
-   type(error_t) :: err, run_err, io_err
-   type(deck_t) :: deck
-   type(model_t) :: m
-   type(run_result_t) :: res
-   type(listing_t) :: lst
-   type(history_sink_t) :: h5
+   type(run_request_t) :: req
+   type(error_t) :: err
    type(string_t), allocatable :: builtin(:)
-   integer :: i, unit, ios
-   character(len=256) :: msg
+   integer :: i
 
    call parse_command_line(opts, err)
    if (err%failed()) call quit(err)
@@ -60,75 +49,17 @@ program hsri2d
       call finish(exit_ok)
    end if
 
-   ! C.1: read every deck, then check the whole
-   call deck_init(deck)
-   if (size(opts%decks) == 0) call append_string(opts%decks, builtin_deck_name)
-   do i = 1, size(opts%decks)
-      if (opts%decks(i)%s == builtin_deck_name) then
-         call deck_add_lines(deck, builtin_deck_name, '', builtin, err)
-      else
-         call deck_add_file(deck, opts%decks(i)%s, err)
-      end if
-   end do
-   if (err%code /= exit_io) call deck_finish(deck, err)
-   if (.not. err%failed()) call build_model(deck, m, err)
+   ! C.1-C.7: the whole case is one library call
+   req%decks = opts%decks
+   req%listing_file = opts%listing_file
+   req%h5_file = opts%h5_file
+   req%check_only = opts%check_only
+   call run_case(req, err)
    if (err%failed()) call quit(err)
-   if (opts%check_only) then
-      write (output_unit, '(a)') 'hsri2d: the deck is valid'
-      call finish(exit_ok)
-   end if
-
-   ! outputs
-   unit = output_unit
-   if (len(opts%listing_file) > 0) then
-      open (newunit=unit, file=opts%listing_file, status='replace', action='write', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         err%code = exit_io
-         err%message = opts%listing_file//': cannot write the listing: '//trim(msg)
-         call quit(err)
-      end if
-   end if
-   if (len(opts%h5_file) > 0) then
-      call history_sink_open(h5, opts%h5_file, m%title, deck_text(deck), err)
-      if (err%failed()) call quit(err)
-   end if
-
-   ! C.2-C.7
-   if (len(opts%h5_file) > 0) then
-      call run_simulation(m, res, run_err, h5)
-   else
-      call run_simulation(m, res, run_err)
-   end if
-   call lst%start(unit, 'HSRI-2D '//hsri2d_version, m%title)
-   call write_listing(lst, deck, m, res, hsri2d_version)
-   if (len(opts%h5_file) > 0) call h5%close(io_err)
-   if (lst%io_status /= 0) then
-      io_err%code = exit_io
-      io_err%message = 'cannot write the listing (error '//trim(itoa_local(lst%io_status))//')'
-   end if
-   if (unit /= output_unit) close (unit)
-   if (run_err%failed()) call quit(run_err)
-   if (io_err%failed()) call quit(io_err)
+   if (opts%check_only) write (output_unit, '(a)') 'hsri2d: the deck is valid'
    call finish(exit_ok)
 
 contains
-
-   !> The deck's card images, for the HDF5 file.
-   function deck_text(d) result(lines)
-      type(deck_t), intent(in) :: d
-      character(len=80), allocatable :: lines(:)
-      integer :: k
-      allocate (lines(d%n_echo))
-      do k = 1, d%n_echo
-         lines(k) = d%echo(k)%text
-      end do
-   end function deck_text
-
-   function itoa_local(n) result(s)
-      integer, intent(in) :: n
-      character(len=16) :: s
-      write (s, '(i0)') n
-   end function itoa_local
 
    !> Print an error report on standard error and exit with its status.
    subroutine quit(e)
