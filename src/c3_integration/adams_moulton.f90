@@ -101,6 +101,7 @@ contains
       status = step_bad_setting
       if (.not. allocated(this%f)) return
       if (size(y) /= size(this%f)) return
+      if (.not. valid_start(this%start)) return
       this%stats%restarts = this%stats%restarts + 1
       call am_begin(this, sys, t, y, status)
    end subroutine am_restart
@@ -115,7 +116,7 @@ contains
       integer, intent(out) :: status
       this%t0 = t
       this%n = 0
-      if (this%start /= am_start_euler .and. this%start /= am_start_rk4) then
+      if (.not. valid_start(this%start)) then
          status = step_bad_setting
          return
       end if
@@ -123,6 +124,11 @@ contains
       this%stats%evaluations = this%stats%evaluations + 1
       status = merge(step_ok, step_rhs_failed, this%rhs_status == 0)
    end subroutine am_begin
+
+   pure logical function valid_start(start)
+      integer, intent(in) :: start
+      valid_start = start == am_start_euler .or. start == am_start_rk4
+   end function valid_start
 
    subroutine am_advance(this, sys, t, y, t_limit, status)
       class(am_stepper_t), intent(inout) :: this
