@@ -153,8 +153,10 @@ contains
       associate (f0 => this%f, f1 => this%f1, f2 => this%f2, f3 => this%f3, &
                  ynew => this%ynew, yold => this%yold, fnew => this%fnew, yt => this%ytmp)
          if (starting .and. this%start == am_start_rk4) then
-            ! option: classic RK4, accumulated stage by stage into ynew
-            ! (k1 = f0; stages in fnew, their arguments in yt)
+            ! start option (C.3: "different schemes could be chosen according
+            ! to the option"): classic RK4, fourth order so the start no longer
+            ! limits the method; accumulated stage by stage into ynew (k1 = f0,
+            ! k2..k4 in turn in fnew, their arguments in yt): no extra arrays
             ynew = y + (h/6.0_wp)*f0
             yt = y + 0.5_wp*h*f0
             if (.not. evaluate(t + 0.5_wp*h, yt, fnew)) return
