@@ -7,37 +7,72 @@
 !! or the iteration has been tried a prescribed number of times."
 !!
 !! Read as (docs/errata.md, D-6): predictor = Adams-Bashforth with third
-!! differences (4 steps), corrector = Adams-Moulton with third differences
-!! (y_n+1 = y_n + h/24 (9 f_n+1 + 19 f_n - 5 f_n-1 + f_n-2)), iterated; the
-!! starter is modified Euler (Euler predictor, trapezoidal corrector)
-!! iterated the same way. "Within a tolerance": max_i |y_i^k - y_i^k-1| /
-!! max(1, |y_i^k|) <= CTOL. After the last correction f is evaluated once
-!! more at the accepted point (PE(CE)^k). The second-order starter limits
-!! the observed order to three (docs/validation.md).
+!! differences (am_predictor), corrector = Adams-Moulton with third
+!! differences (am_corrector), iterated; the starter is modified Euler
+!! (Euler predictor, trapezoidal corrector) iterated the same way. "Within
+!! a tolerance": max_i |y_i^k - y_i^k-1| / max(1, |y_i^k|) <= CTOL. After
+!! the last correction f is evaluated once more at the accepted point
+!! (P(EC)^kE).
+!!
+!! The second-order starter leaves an O(h^3) error that the fourth-order
+!! formulas carry to the end: the report's method converges with order 3.
+!! Option start = am_start_rk4 takes the three start steps by classic RK4
+!! instead, and the method converges with order 4 (docs/validation.md).
+!! restart begins a new start phase after a change of the right-hand side.
 module adams_moulton
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
    use ode_system, only: ode_system_t, stepper_t, step_ok, step_rhs_failed, step_not_finite, &
-      step_beyond_limit
+      step_beyond_limit, step_bad_setting
    implicit none
    private
 
-   public :: am_stepper_t
+   public :: am_stepper_t, am_start_euler, am_start_rk4
+   public :: am_predictor, am_corrector
+
+   !> How the first three points after the initial (or restart) point are
+   !! found.
+   integer, parameter :: am_start_euler = 1 !< modified Euler, as C.3 says (order 3 overall)
+   integer, parameter :: am_start_rk4 = 2   !< classic RK4 (order 4 overall)
+
+   !> Number of back points the formulas need beyond the current one.
+   integer, parameter :: start_steps = 3
 
    type, extends(stepper_t) :: am_stepper_t
       real(wp) :: h = 0.0_wp
-      real(wp) :: t0 = 0.0_wp
-      real(wp) :: tol = 1.0e-6_wp
-      integer :: max_iter = 10
-      integer :: n = 0                      !< steps taken
+      real(wp) :: t0 = 0.0_wp               !< start of the grid: t = t0 + n*h
+      real(wp) :: tol = 1.0e-6_wp           !< corrector tolerance (CTOL)
+      integer :: max_iter = 10              !< corrector passes at most (CITER)
+      integer :: start = am_start_euler     !< am_start_euler or am_start_rk4
+      integer :: n = 0                      !< steps since init or restart
       real(wp), allocatable :: f1(:), f2(:), f3(:)  !< f at the three previous points
-      real(wp), allocatable :: known(:), ynew(:), yold(:), fnew(:)
+      real(wp), allocatable :: ynew(:), yold(:), fnew(:), ytmp(:)
    contains
       procedure :: init => am_init
       procedure :: advance => am_advance
+      procedure :: restart => am_restart
    end type am_stepper_t
 
 contains
+
+   !> C.3 predictor, Adams-Bashforth with third differences (exact when f is
+   !! a cubic in t): y_n+1 = y_n + h/24 (55 f_n - 59 f_n-1 + 37 f_n-2 - 9 f_n-3).
+   elemental real(wp) function am_predictor(h, y, f0, f1, f2, f3) result(y_new)
+      real(wp), intent(in) :: h   !< step
+      real(wp), intent(in) :: y   !< y_n
+      real(wp), intent(in) :: f0, f1, f2, f3  !< f_n, f_n-1, f_n-2, f_n-3
+      y_new = y + (h/24.0_wp)*(55.0_wp*f0 - 59.0_wp*f1 + 37.0_wp*f2 - 9.0_wp*f3)
+   end function am_predictor
+
+   !> C.3 corrector, Adams-Moulton with third differences (exact when f is
+   !! a cubic in t): y_n+1 = y_n + h/24 (9 f_n+1 + 19 f_n - 5 f_n-1 + f_n-2).
+   elemental real(wp) function am_corrector(h, y, f_new, f0, f1, f2) result(y_new)
+      real(wp), intent(in) :: h   !< step
+      real(wp), intent(in) :: y   !< y_n
+      real(wp), intent(in) :: f_new        !< f_n+1 at the latest estimate of y_n+1
+      real(wp), intent(in) :: f0, f1, f2   !< f_n, f_n-1, f_n-2
+      y_new = y + (h/24.0_wp)*(9.0_wp*f_new + 19.0_wp*f0 - 5.0_wp*f1 + f2)
+   end function am_corrector
 
    subroutine am_init(this, sys, t0, y0, status)
       class(am_stepper_t), intent(inout) :: this
@@ -47,16 +82,53 @@ contains
       integer, intent(out) :: status
       integer :: n
       n = size(y0)
-      if (allocated(this%f)) deallocate (this%f, this%f1, this%f2, this%f3, this%known, &
-                                         this%ynew, this%yold, this%fnew)
-      allocate (this%f(n), this%f1(n), this%f2(n), this%f3(n), this%known(n), this%ynew(n), &
-                this%yold(n), this%fnew(n))
-      this%t0 = t0
+      if (allocated(this%f)) deallocate (this%f, this%f1, this%f2, this%f3, this%ynew, &
+                                         this%yold, this%fnew, this%ytmp)
+      allocate (this%f(n), this%f1(n), this%f2(n), this%f3(n), this%ynew(n), this%yold(n), &
+                this%fnew(n), this%ytmp(n))
+      call am_begin(this, sys, t0, y0, status)
+   end subroutine am_init
+
+   !> See stepper_t: the back values f1..f3 and f at the accepted point were
+   !! computed with the old right-hand side, so the method starts again
+   !! from (t, y) with its starter, on a new grid t0 = t.
+   subroutine am_restart(this, sys, t, y, status)
+      class(am_stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: status
+      status = step_bad_setting
+      if (.not. allocated(this%f)) return
+      if (size(y) /= size(this%f)) return
+      if (.not. valid_start(this%start)) return
+      this%stats%restarts = this%stats%restarts + 1
+      call am_begin(this, sys, t, y, status)
+   end subroutine am_restart
+
+   !> Start (or start again) from (t, y): n = 0 puts the next three steps
+   !! in the start phase, which refills f1..f3 before they are read.
+   subroutine am_begin(this, sys, t, y, status)
+      class(am_stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: status
+      this%t0 = t
       this%n = 0
-      call sys%rhs(t0, y0, this%f, this%rhs_status)
+      if (.not. valid_start(this%start)) then
+         status = step_bad_setting
+         return
+      end if
+      call sys%rhs(t, y, this%f, this%rhs_status)
       this%stats%evaluations = this%stats%evaluations + 1
       status = merge(step_ok, step_rhs_failed, this%rhs_status == 0)
-   end subroutine am_init
+   end subroutine am_begin
+
+   pure logical function valid_start(start)
+      integer, intent(in) :: start
+      valid_start = start == am_start_euler .or. start == am_start_rk4
+   end function valid_start
 
    subroutine am_advance(this, sys, t, y, t_limit, status)
       class(am_stepper_t), intent(inout) :: this
@@ -65,9 +137,8 @@ contains
       real(wp), intent(inout) :: y(:)
       real(wp), intent(in) :: t_limit
       integer, intent(out) :: status
-      real(wp) :: h, t_new, w_new
-      integer :: iter
-      logical :: converged
+      real(wp) :: h, t_new
+      logical :: starting
 
       h = this%h
       t_new = this%t0 + real(this%n + 1, wp)*h
@@ -77,36 +148,37 @@ contains
          status = step_beyond_limit
          return
       end if
+      starting = this%n < start_steps
       status = step_rhs_failed
       associate (f0 => this%f, f1 => this%f1, f2 => this%f2, f3 => this%f3, &
-                 known => this%known, ynew => this%ynew, yold => this%yold, fnew => this%fnew)
-         if (this%n < 3) then
-            ! modified Euler: Euler predictor, trapezoidal corrector
-            ynew = y + h*f0
-            known = y + 0.5_wp*h*f0
-            w_new = 0.5_wp*h
-         else
-            ! Adams-Bashforth (third differences) predictor
-            ynew = y + (h/24.0_wp)*(55.0_wp*f0 - 59.0_wp*f1 + 37.0_wp*f2 - 9.0_wp*f3)
-            known = y + (h/24.0_wp)*(19.0_wp*f0 - 5.0_wp*f1 + f2)
-            w_new = 9.0_wp*h/24.0_wp
-         end if
-         converged = .false.
-         do iter = 1, this%max_iter
-            if (.not. evaluate(t_new, ynew, fnew)) return
-            yold = ynew
-            ynew = known + w_new*fnew
-            this%stats%corrector_iterations = this%stats%corrector_iterations + 1
+                 ynew => this%ynew, yold => this%yold, fnew => this%fnew, yt => this%ytmp)
+         if (starting .and. this%start == am_start_rk4) then
+            ! start option (C.3: "different schemes could be chosen according
+            ! to the option"): classic RK4, fourth order so the start no longer
+            ! limits the method; accumulated stage by stage into ynew (k1 = f0,
+            ! k2..k4 in turn in fnew, their arguments in yt): no extra arrays
+            ynew = y + (h/6.0_wp)*f0
+            yt = y + 0.5_wp*h*f0
+            if (.not. evaluate(t + 0.5_wp*h, yt, fnew)) return
+            ynew = ynew + (h/3.0_wp)*fnew
+            yt = y + 0.5_wp*h*fnew
+            if (.not. evaluate(t + 0.5_wp*h, yt, fnew)) return
+            ynew = ynew + (h/3.0_wp)*fnew
+            yt = y + h*fnew
+            if (.not. evaluate(t_new, yt, fnew)) return
+            ynew = ynew + (h/6.0_wp)*fnew
             if (.not. all(ieee_is_finite(ynew))) then
                status = step_not_finite
                return
             end if
-            if (all(abs(ynew - yold) <= this%tol*max(1.0_wp, abs(ynew)))) then
-               converged = .true.
-               exit
+         else
+            if (starting) then
+               ynew = y + h*f0                    ! C.3 modified Euler: Euler predictor
+            else
+               ynew = am_predictor(h, y, f0, f1, f2, f3)   ! C.3 predictor
             end if
-         end do
-         if (.not. converged) this%stats%corrector_at_limit = this%stats%corrector_at_limit + 1
+            if (.not. correct()) return
+         end if
          ! final evaluation at the accepted point
          if (.not. evaluate(t_new, ynew, fnew)) return
          f3 = f2
@@ -122,6 +194,38 @@ contains
       this%stats%h_max = max(this%stats%h_max, h)
       status = step_ok
    contains
+      !> C.3: iterate the corrector until successive approximations agree
+      !! within tol or max_iter passes were made; sets status on failure.
+      logical function correct() result(ok)
+         integer :: iter
+         logical :: converged
+         ok = .false.
+         converged = .false.
+         associate (f0 => this%f, f1 => this%f1, f2 => this%f2, ynew => this%ynew, &
+                    yold => this%yold, fnew => this%fnew)
+            do iter = 1, this%max_iter
+               if (.not. evaluate(t_new, ynew, fnew)) return
+               yold = ynew
+               if (starting) then
+                  ynew = y + (0.5_wp*h)*(f0 + fnew)  ! C.3 modified Euler: trapezoidal corrector
+               else
+                  ynew = am_corrector(h, y, fnew, f0, f1, f2)   ! C.3 corrector
+               end if
+               this%stats%corrector_iterations = this%stats%corrector_iterations + 1
+               if (.not. all(ieee_is_finite(ynew))) then
+                  status = step_not_finite
+                  return
+               end if
+               if (all(abs(ynew - yold) <= this%tol*max(1.0_wp, abs(ynew)))) then
+                  converged = .true.
+                  exit
+               end if
+            end do
+         end associate
+         if (.not. converged) this%stats%corrector_at_limit = this%stats%corrector_at_limit + 1
+         ok = .true.
+      end function correct
+
       logical function evaluate(te, ye, fe)
          real(wp), intent(in) :: te, ye(:)
          real(wp), intent(out) :: fe(:)

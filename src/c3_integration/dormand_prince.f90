@@ -1,16 +1,18 @@
 !> Adaptive embedded Runge-Kutta: Dormand-Prince 5(4) with local
 !! extrapolation (the 5th-order solution is kept), first-same-as-last,
 !! and a PI step-size controller (Hairer, Norsett & Wanner, Solving ODE I,
-!! II.4 and IV.2). An integration option of C.3.
+!! II.4 and IV.2). An integration option of C.3. restart forgets the
+!! first-same-as-last stage and the controller's previous error after a
+!! change of the right-hand side.
 module dormand_prince
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
    use ode_system, only: ode_system_t, stepper_t, step_ok, step_rhs_failed, step_too_small, &
-      step_not_finite
+      step_not_finite, step_bad_setting
    implicit none
    private
 
-   public :: dopri_stepper_t
+   public :: dopri_stepper_t, dopri_err_old_initial
 
    ! Butcher tableau of Dormand & Prince (1980)
    real(wp), parameter :: c2 = 1.0_wp/5, c3 = 3.0_wp/10, c4 = 4.0_wp/5, c5 = 8.0_wp/9
@@ -30,15 +32,19 @@ module dormand_prince
    real(wp), parameter :: safety = 0.9_wp, fac_min = 0.2_wp, fac_max = 5.0_wp
    real(wp), parameter :: beta = 0.04_wp, alpha = 0.2_wp - 0.75_wp*beta
    integer, parameter :: max_rejections_in_row = 60
+   !> The PI controller's "previous error" before any step, and its floor
+   !! (Hairer's DOPRI5 uses 1e-4 for both).
+   real(wp), parameter :: dopri_err_old_initial = 1.0e-4_wp
 
    type, extends(stepper_t) :: dopri_stepper_t
       real(wp) :: h = 0.0_wp           !< the next step to try
       real(wp) :: rtol = 1.0e-7_wp, atol = 1.0e-9_wp
-      real(wp) :: err_old = 1.0e-4_wp
+      real(wp) :: err_old = dopri_err_old_initial  !< the PI controller's memory
       real(wp), allocatable :: k2(:), k3(:), k4(:), k5(:), k6(:), k7(:), yt(:), ynew(:), e(:)
    contains
       procedure :: init => dopri_init
       procedure :: advance => dopri_advance
+      procedure :: restart => dopri_restart
    end type dopri_stepper_t
 
 contains
@@ -55,10 +61,38 @@ contains
                                          this%k7, this%yt, this%ynew, this%e)
       allocate (this%f(n), this%k2(n), this%k3(n), this%k4(n), this%k5(n), this%k6(n), this%k7(n), &
                 this%yt(n), this%ynew(n), this%e(n))
-      call sys%rhs(t0, y0, this%f, this%rhs_status)
+      call dopri_begin(this, sys, t0, y0, status)
+   end subroutine dopri_init
+
+   !> See stepper_t: the first-same-as-last stage and the previous error
+   !! belong to the old right-hand side. h, the next step to try, is kept:
+   !! y is continuous at a restart, and a step too long is rejected.
+   subroutine dopri_restart(this, sys, t, y, status)
+      class(dopri_stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: status
+      status = step_bad_setting
+      if (.not. allocated(this%f)) return
+      if (size(y) /= size(this%f)) return
+      this%stats%restarts = this%stats%restarts + 1
+      call dopri_begin(this, sys, t, y, status)
+   end subroutine dopri_restart
+
+   !> Start (or start again) from (t, y): the first stage f(t, y) and a
+   !! controller with no past.
+   subroutine dopri_begin(this, sys, t, y, status)
+      class(dopri_stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: status
+      this%err_old = dopri_err_old_initial
+      call sys%rhs(t, y, this%f, this%rhs_status)
       this%stats%evaluations = this%stats%evaluations + 1
       status = merge(step_ok, step_rhs_failed, this%rhs_status == 0)
-   end subroutine dopri_init
+   end subroutine dopri_begin
 
    !> Try steps until one is accepted (or the step collapses).
    subroutine dopri_advance(this, sys, t, y, t_limit, status)
@@ -100,7 +134,7 @@ contains
       fac = safety*err**(-alpha)*this%err_old**beta
       fac = min(fac_max, max(fac_min, fac))
       if (rejections > 0) fac = min(fac, 1.0_wp)
-      this%err_old = max(err, 1.0e-4_wp)
+      this%err_old = max(err, dopri_err_old_initial)
       if (clipped) then
          ! a step shortened to meet t_limit does not shrink the next one
          this%h = max(this%h, h*fac)

@@ -7,6 +7,7 @@ module ode_system
 
    public :: ode_system_t, stepper_t, step_stats_t
    public :: step_ok, step_rhs_failed, step_too_small, step_not_finite, step_beyond_limit
+   public :: step_bad_setting
    public :: step_status_text
 
    !> Status codes of an integration step.
@@ -15,6 +16,7 @@ module ode_system
    integer, parameter :: step_too_small = 2    !< the adaptive step fell below its floor
    integer, parameter :: step_not_finite = 3   !< the state became NaN or infinite
    integer, parameter :: step_beyond_limit = 4 !< a fixed step would pass the time limit
+   integer, parameter :: step_bad_setting = 5  !< a stepper setting has no meaning (init, restart)
 
    !> A system y' = f(t, y). rhs may update diagnostics held in the system
    !! (evaluation counters) but no physical state: integrators call it for
@@ -43,11 +45,12 @@ module ode_system
       integer(i8) :: evaluations = 0        !< right-hand-side evaluations
       integer(i8) :: corrector_iterations = 0 !< corrector passes (Adams-Moulton, modified Euler)
       integer(i8) :: corrector_at_limit = 0 !< steps whose corrector reached the iteration limit
+      integer(i8) :: restarts = 0           !< calls of restart (init is not counted)
       real(wp) :: h_min = huge(1.0_wp), h_max = 0.0_wp   !< accepted step sizes
    end type step_stats_t
 
-   !> An integrator. After init and after every advance, f holds y' at the
-   !! current accepted point, so output needs no extra evaluation.
+   !> An integrator. After init, restart and every advance, f holds y' at
+   !! the current accepted point, so output needs no extra evaluation.
    type, abstract :: stepper_t
       real(wp), allocatable :: f(:)
       type(step_stats_t) :: stats
@@ -55,6 +58,7 @@ module ode_system
    contains
       procedure(init_interface), deferred :: init
       procedure(advance_interface), deferred :: advance
+      procedure(restart_interface), deferred :: restart
    end type stepper_t
 
    abstract interface
@@ -79,6 +83,23 @@ module ode_system
          real(wp), intent(in) :: t_limit
          integer, intent(out) :: status
       end subroutine advance_interface
+
+      !> The right-hand side has just changed at the accepted point (t, y)
+      !! (an effect with memory changed after an accepted step). Forget
+      !! everything that assumed the old right-hand side (back values,
+      !! the derivative kept at the accepted point, step-size controller
+      !! memory), evaluate f at (t, y) (counted in stats%evaluations) and
+      !! continue from there as after init. Must follow init; the workspace
+      !! is kept (no allocation). stats accumulate; stats%restarts counts
+      !! the calls. status: step_ok, step_rhs_failed or step_bad_setting.
+      subroutine restart_interface(this, sys, t, y, status)
+         import :: stepper_t, ode_system_t, wp
+         class(stepper_t), intent(inout) :: this
+         class(ode_system_t), intent(inout) :: sys
+         real(wp), intent(in) :: t
+         real(wp), intent(in) :: y(:)
+         integer, intent(out) :: status
+      end subroutine restart_interface
    end interface
 
 contains
@@ -93,6 +114,8 @@ contains
                                      //'or discontinuous for the tolerances)'
       case (step_not_finite); text = 'the state became infinite or NaN'
       case (step_beyond_limit); text = 'a fixed step would pass the requested end time'
+      case (step_bad_setting); text = 'an integrator setting is invalid, or restart was called ' &
+                                      //'before init or with a state of another size'
       case default;           text = 'unknown integration status'
       end select
    end function step_status_text

@@ -2,11 +2,13 @@
 !! option of C.3: "different schemes could be chosen according to the
 !! option"). The derivative at the new point is computed at the end of
 !! each step and serves as the first stage of the next one, so a step costs
-!! four evaluations and output needs none.
+!! four evaluations and output needs none. restart re-evaluates that first
+!! stage after a change of the right-hand side and begins a new grid.
 module runge_kutta4
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
-   use ode_system, only: ode_system_t, stepper_t, step_ok, step_rhs_failed, step_not_finite
+   use ode_system, only: ode_system_t, stepper_t, step_ok, step_rhs_failed, step_not_finite, &
+      step_bad_setting
    implicit none
    private
 
@@ -20,6 +22,7 @@ module runge_kutta4
    contains
       procedure :: init => rk4_init
       procedure :: advance => rk4_advance
+      procedure :: restart => rk4_restart
    end type rk4_stepper_t
 
 contains
@@ -34,12 +37,38 @@ contains
       n = size(y0)
       if (allocated(this%f)) deallocate (this%f, this%k2, this%k3, this%k4, this%ytmp)
       allocate (this%f(n), this%k2(n), this%k3(n), this%k4(n), this%ytmp(n))
-      this%t0 = t0
+      call rk4_begin(this, sys, t0, y0, status)
+   end subroutine rk4_init
+
+   !> See stepper_t: the first stage kept from the last step assumed the old
+   !! right-hand side, so it is evaluated again; the grid restarts at t.
+   subroutine rk4_restart(this, sys, t, y, status)
+      class(rk4_stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: status
+      status = step_bad_setting
+      if (.not. allocated(this%f)) return
+      if (size(y) /= size(this%f)) return
+      this%stats%restarts = this%stats%restarts + 1
+      call rk4_begin(this, sys, t, y, status)
+   end subroutine rk4_restart
+
+   !> Start (or start again) from (t, y): a new grid t0 = t and the first
+   !! stage f(t, y).
+   subroutine rk4_begin(this, sys, t, y, status)
+      class(rk4_stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in) :: y(:)
+      integer, intent(out) :: status
+      this%t0 = t
       this%n = 0
-      call sys%rhs(t0, y0, this%f, this%rhs_status)
+      call sys%rhs(t, y, this%f, this%rhs_status)
       this%stats%evaluations = this%stats%evaluations + 1
       status = merge(step_ok, step_rhs_failed, this%rhs_status == 0)
-   end subroutine rk4_init
+   end subroutine rk4_begin
 
    !> One step of size h, or shorter if t_limit comes first (a single-step
    !! method can shorten a step without disturbing the next).
