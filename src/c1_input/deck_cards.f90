@@ -23,7 +23,7 @@ module deck_cards
    public :: field_first_col, field_last_col
    public :: g_title, g_options, g_time, g_segments, g_joints, g_restraints, g_stopcurve
    public :: g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates
-   public :: g_pulsepos, g_pulsefile, g_endtests, n_groups
+   public :: g_pulsepos, g_pulsefile, g_endtests, g_numerics, n_groups
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -46,8 +46,8 @@ module deck_cards
    integer, parameter :: g_title = 1, g_options = 2, g_time = 3, g_segments = 4, &
       g_joints = 5, g_restraints = 6, g_stopcurve = 7, g_injury = 8, g_arcs = 9, &
       g_initial = 10, g_vehicle = 11, g_gravity = 12, g_pulse = 13, g_pulserates = 14, &
-      g_pulsepos = 15, g_pulsefile = 16, g_endtests = 17
-   integer, parameter :: n_groups = 17
+      g_pulsepos = 15, g_pulsefile = 16, g_endtests = 17, g_numerics = 18
+   integer, parameter :: n_groups = 18
 
    !> One field of a card.
    type :: field_spec_t
@@ -400,6 +400,22 @@ contains
          real_field('VREST', 'in/s', one, blank_default, 0.1_wp, zero, big, 'speed counted as rest', .true.), &
          real_field('WREST', 'deg/s', deg, blank_default, 0.5_wp, zero, big, 'angular rate counted as rest', .true.), &
          real_field('THOLD', 's', one, blank_default, 0.01_wp, zero, big, 'time at rest before the run ends')])
+
+      t(g_numerics)%name = 'NUMERICS'
+      t(g_numerics)%title = 'Numerical controls beyond the report (C.3, C.5, C.6)'
+      t(g_numerics)%note = 'ASTART: how Adams-Moulton (NINT 1) starts, by the report''s modified Euler ' &
+         //'(order 3) or by RK4 (order 4). SOLVER: A z'''' = b by a Cholesky written for the body''s ' &
+         //'structure or by LAPACK (equal to rounding). An energy-balance error beyond EBTOL times the ' &
+         //'largest body kinetic energy flags the run; with EBFAIL = STOP it ends as a numerical failure (exit 3).'
+      call set_fields(t(g_numerics), [ &
+         word_field('ASTART', 'EULER|RK4', blank_default, 'Adams-Moulton start'), &
+         word_field('SOLVER', 'STRUCTURED|DENSE', blank_default, 'linear solver of C.5'), &
+         real_field('EBTOL', '-', one, blank_default, 0.01_wp, zero, 1.0e6_wp, &
+            'allowed energy-balance error (fraction)', .true.), &
+         word_field('EBFAIL', 'STOP|CONTINUE', blank_default, 'when the balance fails')])
+      t(g_numerics)%field(1)%default = real(1, wp)
+      t(g_numerics)%field(2)%default = real(1, wp)
+      t(g_numerics)%field(4)%default = real(1, wp)
 
       block
          integer :: i

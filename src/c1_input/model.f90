@@ -4,19 +4,25 @@
 !! degrees and g to these).
 module model
    use kinds, only: wp
+   use text_io, only: string_t
    implicit none
    private
 
-   public :: n_seg, n_joint, n_dof, n_arc, n_injury
+   public :: n_seg, n_joint, n_dof, n_arc, n_injury, hip_x, hip_y
    public :: joint_partner, segment_name, joint_name, arc_name
    public :: form_linear, form_cubic, form_table, form_name
    public :: nint_adams, nint_rk4, nint_dopri, integrator_name
    public :: nend_time, nend_contact, nend_injury, nend_rest, end_option_name
    public :: stop_curve_t, restraint_t, model_t, pulse_table_t
+   public :: options_section_t, time_section_t, numerics_section_t, body_section_t, joints_section_t
+   public :: injury_section_t, vehicle_section_t, environment_section_t, end_tests_section_t
+   public :: solver_structured, solver_dense, solver_name, astart_euler, astart_rk4, astart_name
 
    integer, parameter :: n_seg = 8     !< body segments (Table 5)
    integer, parameter :: n_joint = 7   !< body joints (Table 5)
    integer, parameter :: n_dof = 10    !< alpha_1..alpha_8, x_h, y_h (section B)
+   !> The hip's generalized coordinates among the n_dof (section B).
+   integer, parameter :: hip_x = 9, hip_y = 10
    integer, parameter :: n_arc = 10    !< body contact arcs (Table 1, r)
    integer, parameter :: n_injury = 10 !< rows of the bone/joint injury table (Table 5)
 
@@ -77,45 +83,98 @@ module model
       logical :: given(3) = .false.
    end type pulse_table_t
 
-   !> Everything a run needs, as read from the deck. Defaults live in the card
-   !! table (deck_cards), not here: the zeros below are only initial values.
-   type :: model_t
-      character(len=72) :: title = ' '
-      ! options (C.1)
-      integer :: nbody = 0, nbelt = 0, nend = 0, nload = 0, nout = 0
-      integer :: nint = 0
-      ! time controls (C.3, C.6, C.7)
+   !> Linear solver of A z'' = b (C.5).
+   integer, parameter :: solver_structured = 1, solver_dense = 2
+   character(len=48), parameter :: solver_name(2) = [character(len=48) :: &
+      'Cholesky for the body''s structure', 'LAPACK dense Cholesky (dpotf2, dtrsv)']
+
+   !> Start of the Adams-Moulton method (C.3; docs/errata.md D-6).
+   integer, parameter :: astart_euler = 1, astart_rk4 = 2
+   character(len=40), parameter :: astart_name(2) = [character(len=40) :: &
+      'modified Euler (the report''s, order 3)', 'RK4 (order 4)']
+
+   !> Program options (C.1, *OPTIONS).
+   type :: options_section_t
+      integer :: nbody = 0, nbelt = 0, nend = 0, nload = 0, nout = 0, nint = 0
+   end type options_section_t
+
+   !> Time controls (C.3, C.6, C.7, *TIME).
+   type :: time_section_t
       real(wp) :: t_max = 0.0_wp, dt = 0.0_wp, dt_print = 0.0_wp
       real(wp) :: corrector_tol = 0.0_wp
       integer :: corrector_max_iter = 0
       real(wp) :: rtol = 0.0_wp, atol = 0.0_wp
-      ! body, Table 1 (per segment)
+   end type time_section_t
+
+   !> Numerical controls beyond the report (*NUMERICS).
+   type :: numerics_section_t
+      integer :: am_start = astart_euler
+      integer :: solver = solver_structured
+      real(wp) :: energy_tol = 0.0_wp       !< allowed energy-balance error / largest body kinetic energy
+      logical :: energy_continue = .false.  !< go on when the balance fails
+   end type numerics_section_t
+
+   !> The occupant's body (Table 1 segments and contact arcs) and its initial
+   !! position (C.1): angles and rates relative to the interior.
+   type :: body_section_t
       real(wp) :: mass(n_seg) = 0.0_wp, inertia(n_seg) = 0.0_wp
       real(wp) :: length(n_seg) = 0.0_wp, rho(n_seg) = 0.0_wp
-      ! joints, Table 1 (per joint)
+      real(wp) :: r_arc(n_arc + 1) = 0.0_wp, rho_arc(n_arc) = 0.0_wp
+      real(wp) :: gamma_arc(n_arc) = 0.0_wp
+      real(wp) :: theta0(n_seg) = 0.0_wp, theta_dot0(n_seg) = 0.0_wp
+   end type body_section_t
+
+   !> The body's joints (Table 1, Table 6, figure 9).
+   type :: joints_section_t
       real(wp) :: k_elastic(n_joint) = 0.0_wp   !< K (in*lb/rad)
       real(wp) :: c_friction(n_joint) = 0.0_wp  !< C' (in*lb)
       real(wp) :: xi(n_joint) = 0.0_wp          !< friction velocity limit (rad/s)
       type(restraint_t) :: restraint(n_joint)
-      ! injury limits, Table 1 / Table 5 (0 = not checked)
+   end type joints_section_t
+
+   !> Force injury criteria, Table 1 / Table 5 (0 = not checked).
+   type :: injury_section_t
       real(wp) :: f_shear(n_injury) = 0.0_wp, f_compression(n_injury) = 0.0_wp
       real(wp) :: f_tension(n_injury) = 0.0_wp
-      ! contact arcs, Table 1 (10 arcs + ankle)
-      real(wp) :: r_arc(n_arc + 1) = 0.0_wp, rho_arc(n_arc) = 0.0_wp
-      real(wp) :: gamma_arc(n_arc) = 0.0_wp
-      ! initial conditions (C.1): angles and rates relative to the interior
-      real(wp) :: theta0(n_seg) = 0.0_wp, theta_dot0(n_seg) = 0.0_wp
-      ! vehicle (C.1)
-      real(wp) :: vehicle_mass = 0.0_wp, vehicle_inertia = 0.0_wp
+   end type injury_section_t
+
+   !> The vehicle (C.1, C.3): constants, initial motion, time tables.
+   type :: vehicle_section_t
+      real(wp) :: mass = 0.0_wp, inertia = 0.0_wp
       real(wp) :: xc_dot0 = 0.0_wp, yc_dot0 = 0.0_wp
       real(wp) :: phi0 = 0.0_wp, phi_dot0 = 0.0_wp
       type(pulse_table_t) :: pulse_acc, pulse_vel, pulse_pos
-      character(len=:), allocatable :: pulse_source  !< 'cards' or the CSV path
-      real(wp) :: gravity = 0.0_wp
-      ! end-of-program test thresholds (C.7)
-      real(wp) :: rest_speed = 0.0_wp, rest_rate = 0.0_wp, rest_hold = 0.0_wp
-   end type model_t
+      character(len=:), allocatable :: pulse_source  !< 'cards', 'none ...' or the CSV path
+      logical :: pulse_from_file = .false.
+   end type vehicle_section_t
 
-contains
+   !> Gravity (*GRAVITY).
+   type :: environment_section_t
+      real(wp) :: gravity = 0.0_wp
+   end type environment_section_t
+
+   !> End-of-program test thresholds (C.7, *ENDTESTS).
+   type :: end_tests_section_t
+      real(wp) :: rest_speed = 0.0_wp, rest_rate = 0.0_wp, rest_hold = 0.0_wp
+   end type end_tests_section_t
+
+   !> Everything a run needs, as read from the deck: one section per kind of
+   !! card group, each filled by its own builder (model_builder). Defaults
+   !! live in the card table (deck_cards), not here: the zeros above are
+   !! only initial values.
+   type :: model_t
+      character(len=72) :: title = ' '
+      type(options_section_t) :: options
+      type(time_section_t) :: time
+      type(numerics_section_t) :: numerics
+      type(body_section_t) :: body
+      type(joints_section_t) :: joints
+      type(injury_section_t) :: injury
+      type(vehicle_section_t) :: vehicle
+      type(environment_section_t) :: environment
+      type(end_tests_section_t) :: end_tests
+      !> Things worth a user's attention that are not errors (listing and stderr).
+      type(string_t), allocatable :: warnings(:)
+   end type model_t
 
 end module model

@@ -3,7 +3,7 @@
 !! state of the generalized coordinates.
 module preliminary
    use kinds, only: wp
-   use model, only: model_t, n_seg, n_dof
+   use model, only: body_section_t, vehicle_section_t, n_seg, n_dof, hip_x, hip_y
    implicit none
    private
 
@@ -30,8 +30,8 @@ contains
    !> a_1..a_17 of C.2. a_i (i <= 8) is the first moment of the mass carried
    !! by segment i about its proximal joint; a_9 the total mass; a_10..a_17
    !! the moments of inertia of those masses about the same joint.
-   pure function body_constants(m) result(bc)
-      type(model_t), intent(in) :: m
+   pure function body_constants(body) result(bc)
+      type(body_section_t), intent(in) :: body
       type(body_constants_t) :: bc
       real(wp) :: ms(n_seg), rh(n_seg), ln(n_seg), in(n_seg)
       integer :: i, n
@@ -39,10 +39,10 @@ contains
       integer, parameter :: pair_j(n_pairs) = [2, 3, 4, 5, 6, 3, 4, 5, 6, 4, 5, 6, 6, 8]
       integer, parameter :: pair_l(n_pairs) = [1, 1, 1, 1, 1, 2, 2, 2, 2, 3, 4, 4, 5, 7]
 
-      ms = m%mass
-      rh = m%rho
-      ln = m%length
-      in = m%inertia
+      ms = body%mass
+      rh = body%rho
+      ln = body%length
+      in = body%inertia
       ! C.2: i = 4,6,8
       bc%a(4) = ms(4)*rh(4)
       bc%a(6) = ms(6)*rh(6)
@@ -85,13 +85,15 @@ contains
    !! Theta_i0 - Phi_0; the hip starts at the origin with the vehicle's
    !! velocity; segment rates relative to the interior are converted to
    !! inertial rates (alpha-dot = Theta-dot - Phi-dot).
-   pure subroutine initial_state(m, z, zdot)
-      type(model_t), intent(in) :: m
+   pure subroutine initial_state(body, vehicle, z, zdot)
+      type(body_section_t), intent(in) :: body
+      type(vehicle_section_t), intent(in) :: vehicle
       real(wp), intent(out) :: z(n_dof), zdot(n_dof)
-      z(1:n_seg) = m%theta0 - m%phi0
-      z(9:10) = 0.0_wp
-      zdot(1:n_seg) = m%theta_dot0 - m%phi_dot0
-      zdot(9) = m%xc_dot0
-      zdot(10) = m%yc_dot0
+      z(1:n_seg) = body%theta0 - vehicle%phi0
+      z(hip_x) = 0.0_wp
+      z(hip_y) = 0.0_wp
+      zdot(1:n_seg) = body%theta_dot0 - vehicle%phi_dot0
+      zdot(hip_x) = vehicle%xc_dot0
+      zdot(hip_y) = vehicle%yc_dot0
    end subroutine initial_state
 end module preliminary

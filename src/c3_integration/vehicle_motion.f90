@@ -13,7 +13,7 @@
 !! at the t_m (Phi(t_m)); here they are evaluated at the time itself.
 module vehicle_motion
    use kinds, only: wp
-   use model, only: model_t, pulse_table_t
+   use model, only: vehicle_section_t, pulse_table_t
    implicit none
    private
 
@@ -41,7 +41,7 @@ contains
 
    !> Prepare the tables: cumulative integrals at the knots, once per run.
    pure subroutine vehicle_motion_init(m, vm)
-      type(model_t), intent(in) :: m
+      type(vehicle_section_t), intent(in) :: m
       type(vehicle_motion_t), intent(out) :: vm
       real(wp) :: v0(3), x0(3)
       integer :: j, k, n

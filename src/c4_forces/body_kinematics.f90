@@ -11,7 +11,7 @@
 !! that of segment 8.
 module body_kinematics
    use kinds, only: wp
-   use model, only: model_t, n_seg, n_dof, n_joint
+   use model, only: body_section_t, n_seg, n_dof, n_joint, hip_x, hip_y
    implicit none
    private
 
@@ -41,21 +41,21 @@ contains
 
    !> The point at distance d along segment i from its proximal joint
    !! (d = rho_i: the centre of gravity; d = 0: the joint itself).
-   pure function point_on_segment(m, z, zdot, zdd, i, d) result(p)
-      type(model_t), intent(in) :: m
+   pure function point_on_segment(body, z, zdot, zdd, i, d) result(p)
+      type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
       integer, intent(in) :: i
       real(wp), intent(in) :: d
       type(point_state_t) :: p
       integer :: k
-      p%x = z(9)
-      p%y = z(10)
-      p%vx = zdot(9)
-      p%vy = zdot(10)
-      p%ax = zdd(9)
-      p%ay = zdd(10)
+      p%x = z(hip_x)
+      p%y = z(hip_y)
+      p%vx = zdot(hip_x)
+      p%vy = zdot(hip_y)
+      p%ax = zdd(hip_x)
+      p%ay = zdd(hip_y)
       do k = 1, n_links(i)
-         call add_link(p, z, zdot, zdd, chain_seg(k, i), m%length(chain_len(k, i)))
+         call add_link(p, z, zdot, zdd, chain_seg(k, i), body%length(chain_len(k, i)))
       end do
       call add_link(p, z, zdot, zdd, i, d)
    end function point_on_segment
@@ -80,21 +80,21 @@ contains
 
    !> Centre of gravity of segment i (section B X_i, Y_i with errata E-B1,
    !! E-B2; C.6 with E-65).
-   pure function segment_cg_state(m, z, zdot, zdd, i) result(p)
-      type(model_t), intent(in) :: m
+   pure function segment_cg_state(body, z, zdot, zdd, i) result(p)
+      type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
       integer, intent(in) :: i
       type(point_state_t) :: p
-      p = point_on_segment(m, z, zdot, zdd, i, m%rho(i))
+      p = point_on_segment(body, z, zdot, zdd, i, body%rho(i))
    end function segment_cg_state
 
    !> Joint k (1 hip .. 7 knee), inertial.
-   pure function joint_state(m, z, zdot, zdd, k) result(p)
-      type(model_t), intent(in) :: m
+   pure function joint_state(body, z, zdot, zdd, k) result(p)
+      type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
       integer, intent(in) :: k
       type(point_state_t) :: p
-      p = point_on_segment(m, z, zdot, zdd, joint_segment(k), 0.0_wp)
+      p = point_on_segment(body, z, zdot, zdd, joint_segment(k), 0.0_wp)
    end function joint_state
 
    !> The start of C.4: a point's position and velocity relative to the

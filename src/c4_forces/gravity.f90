@@ -2,14 +2,51 @@
 !! b with a minus sign (b_i = C_i - G_i + ...).
 module gravity
    use kinds, only: wp
-   use model, only: n_seg, n_dof
+   use model, only: n_seg, n_dof, hip_y
    use preliminary, only: body_constants_t
+   use effect_base, only: effect_t, body_state_t, energy_stored, n_energy_kinds
    implicit none
    private
 
-   public :: gravity_forces
+   public :: gravity_forces, gravity_effect_t, gravity_effect
+
+   !> C.4.b as an effect, present when g > 0.
+   type, extends(effect_t) :: gravity_effect_t
+      type(body_constants_t) :: bc
+      real(wp) :: g = 0.0_wp
+      real(wp) :: s0(n_seg) = 0.0_wp   !< sin(alpha_i) at t = 0
+      real(wp) :: y0 = 0.0_wp          !< y_h at t = 0
+   contains
+      procedure :: add_forces => gravity_add_forces
+      procedure :: energy => gravity_energy
+   end type gravity_effect_t
 
 contains
+
+   !> z0: the initial generalized coordinates (the energy is measured from them).
+   function gravity_effect(bc, g, z0) result(e)
+      type(body_constants_t), intent(in) :: bc
+      real(wp), intent(in) :: g, z0(n_dof)
+      type(gravity_effect_t) :: e
+      e%name = 'gravity'
+      e%title = 'gravity (C.4.b)'
+      e%bc = bc
+      e%g = g
+      e%s0 = sin(z0(1:n_seg))
+      e%y0 = z0(hip_y)
+      e%has_energy(energy_stored) = .true.
+   end function gravity_effect
+
+   pure subroutine gravity_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(gravity_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      associate (u1 => size(extra) + size(aux), u2 => size(extra_rate) + size(aux_rate))
+      end associate
+      call gravity_forces(this%bc, this%g, st%c, b)
+   end subroutine gravity_add_forces
 
    !> Subtract G_i = g a_i cos(alpha_i) (i = 1..8), G_9 = 0, G_10 = g a_9.
    pure subroutine gravity_forces(bc, g, c, b)
@@ -17,6 +54,20 @@ contains
       real(wp), intent(in) :: g, c(n_seg)
       real(wp), intent(inout) :: b(n_dof)
       b(1:n_seg) = b(1:n_seg) - g*bc%a(1:n_seg)*c
-      b(10) = b(10) - g*bc%a(9)
+      b(hip_y) = b(hip_y) - g*bc%a(9)
    end subroutine gravity_forces
+
+   !> The potential whose gradient is G (C.4.b): V = g (a_9 y_h + sum a_i sin
+   !! alpha_i), which is g times the sum of m_i times the inertial height of
+   !! each centre of gravity (erratum E-63), measured from t = 0.
+   pure subroutine gravity_energy(this, st, extra, aux, e)
+      class(gravity_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      e = 0.0_wp
+      e(energy_stored) = this%g*(this%bc%a(9)*(st%z(hip_y) - this%y0) + sum(this%bc%a(1:n_seg)*(st%s - this%s0)))
+   end subroutine gravity_energy
 end module gravity

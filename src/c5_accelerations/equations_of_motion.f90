@@ -1,116 +1,214 @@
-!> The right-hand side integrated by C.3: the state y = (z, z', W) holds the
-!! ten generalized coordinates, their rates and, for each joint with
-!! friction, the work dissipated there (an exact integral of the friction
-!! power, for the energy accounting of C.6). f = (z', z'', P) with z''
-!! from A z'' = b (C.4, C.5).
+!> The right-hand side integrated by C.3: the system of the occupants in
+!! the pitching, decelerating vehicle. The state y holds, for each occupant,
+!! its generalized coordinates z, their rates z' and its effects' own
+!! quantities (state_layout); f = (z', z'', ...) with z'' from A z'' = b
+!! (C.4, C.5). The vehicle's motion comes from its tables (C.3), evaluated
+!! only when an effect needs it.
 module equations_of_motion
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp, i8
+   use strings, only: num, itoa
    use model, only: model_t, n_dof, n_seg
-   use preliminary, only: body_constants_t
-   use generalized_forces, only: scene_t, force_counts_t, generalized_force_vector
-   use body_matrix, only: body_accelerations
    use ode_system, only: ode_system_t
+   use state_layout, only: state_layout_t
+   use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init, vehicle_state_t, vehicle_state_at
+   use effect_base, only: body_state_t
+   use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_initial_y, &
+      occupant_add_effect
+   use effect_base, only: effect_t
    implicit none
    private
 
-   public :: body_system_t, body_system_init, state_size, rhs_status_text
-   public :: rhs_not_positive_definite, rhs_not_finite, rhs_diverged
+   public :: crash_system_t, system_build, system_add_occupant, system_add_effect, system_initial_y
+   public :: system_body_state
+   public :: rhs_status_text, rhs_not_positive_definite, rhs_not_finite, rhs_diverged
+   public :: max_angle, max_position, max_rate, max_speed
 
    integer, parameter :: rhs_not_positive_definite = 1
    integer, parameter :: rhs_not_finite = 2
    integer, parameter :: rhs_diverged = 3
 
-   !> Bounds of any physical state (rad, in, rad/s, in/s). A state beyond
-   !! them means the integration has diverged; stopping there, before any
-   !! arithmetic can overflow, lets the run end with a message (and keeps
-   !! Debug builds, which trap overflow, from crashing).
-   real(wp), parameter :: max_angle = 1.0e4_wp, max_position = 1.0e7_wp
-   real(wp), parameter :: max_rate = 1.0e6_wp, max_speed = 1.0e8_wp
+   !> Bounds of any physical state (rad, in, rad/s, in/s), far beyond any
+   !! motion a valid deck can produce (TMAX <= 1000 s, speeds and rates
+   !! bounded by the deck's ranges and by energy): a state beyond them means
+   !! the integration has diverged. Stopping there, before any arithmetic
+   !! can overflow, ends the run with a message (and keeps Debug builds,
+   !! which trap overflow, from crashing).
+   real(wp), parameter :: max_angle = 1.0e9_wp, max_position = 1.0e11_wp
+   real(wp), parameter :: max_rate = 1.0e7_wp, max_speed = 1.0e9_wp
 
-   !> The body in its scene. Read-only during a run except the counters.
-   type, extends(ode_system_t) :: body_system_t
-      type(model_t) :: m
-      type(body_constants_t) :: bc
-      type(scene_t) :: scene
-      type(force_counts_t) :: counts
+   !> The occupants in their vehicle. Read-only during a run except the
+   !! evaluation counters and the diagnostics of a failure.
+   type, extends(ode_system_t) :: crash_system_t
+      type(occupant_t), allocatable :: occupants(:)
+      type(vehicle_motion_t) :: vm
+      type(state_layout_t) :: layout
+      logical :: needs_vehicle = .false.
+      !> evaluations of each effect (effect, occupant)
+      integer(i8), allocatable :: counts(:, :)
       integer(i8) :: evaluations = 0
-      real(wp) :: last_t = 0.0_wp       !< time of the last evaluation (for messages)
+      real(wp) :: last_t = 0.0_wp             !< time of the last evaluation (for messages)
+      character(len=:), allocatable :: failure_detail
    contains
-      procedure :: rhs => body_rhs
-   end type body_system_t
+      procedure :: rhs => system_rhs
+   end type crash_system_t
 
 contains
 
-   subroutine body_system_init(sys, m, bc, scene)
-      type(body_system_t), intent(out) :: sys
+   !> The system of one model: the vehicle and the model's occupant.
+   subroutine system_build(m, sys)
       type(model_t), intent(in) :: m
-      type(body_constants_t), intent(in) :: bc
-      type(scene_t), intent(in) :: scene
-      sys%m = m
-      sys%bc = bc
-      sys%scene = scene
-   end subroutine body_system_init
+      type(crash_system_t), intent(out) :: sys
+      call vehicle_motion_init(m%vehicle, sys%vm)
+      allocate (sys%occupants(0), sys%counts(0, 0))
+      call system_add_occupant(sys, m)
+   end subroutine system_build
 
-   !> Length of y for a scene: z, z' and one work integral per friction joint.
-   pure integer function state_size(scene)
-      type(scene_t), intent(in) :: scene
-      state_size = 2*n_dof + scene%n_aux
-   end function state_size
+   !> One more occupant, from the body, joints and options of m (the vehicle
+   !! stays that of the first model).
+   subroutine system_add_occupant(sys, m)
+      type(crash_system_t), intent(inout) :: sys
+      type(model_t), intent(in) :: m
+      type(occupant_t), allocatable :: longer(:)
+      integer(i8), allocatable :: counts(:, :)
+      integer :: n, k
+      n = size(sys%occupants) + 1
+      allocate (longer(n))
+      do k = 1, n - 1
+         longer(k) = sys%occupants(k)
+      end do
+      call occupant_build(m, 'occupant '//itoa(n), sys%layout, longer(n))
+      call move_alloc(longer, sys%occupants)
+      allocate (counts(max(size(sys%counts, 1), size(sys%occupants(n)%effects)), n))
+      counts = 0
+      counts(1:size(sys%counts, 1), 1:n - 1) = sys%counts
+      call move_alloc(counts, sys%counts)
+      sys%needs_vehicle = sys%needs_vehicle .or. sys%occupants(n)%needs_vehicle
+   end subroutine system_add_occupant
 
-   subroutine body_rhs(this, t, y, dydt, status)
-      class(body_system_t), intent(inout) :: this
+   !> One more effect for occupant o (its quantities go at the end of y).
+   subroutine system_add_effect(sys, o, e)
+      type(crash_system_t), intent(inout) :: sys
+      integer, intent(in) :: o
+      class(effect_t), intent(in) :: e
+      integer(i8), allocatable :: counts(:, :)
+      call occupant_add_effect(sys%occupants(o), e, sys%layout)
+      allocate (counts(max(size(sys%counts, 1), size(sys%occupants(o)%effects)), size(sys%occupants)))
+      counts = 0
+      counts(1:size(sys%counts, 1), :) = sys%counts
+      call move_alloc(counts, sys%counts)
+      sys%needs_vehicle = sys%needs_vehicle .or. sys%occupants(o)%needs_vehicle
+   end subroutine system_add_effect
+
+   !> The initial state vector.
+   subroutine system_initial_y(sys, y)
+      type(crash_system_t), intent(in) :: sys
+      real(wp), allocatable, intent(out) :: y(:)
+      integer :: o
+      allocate (y(sys%layout%n))
+      y = 0.0_wp
+      do o = 1, size(sys%occupants)
+         call occupant_initial_y(sys%occupants(o), y)
+      end do
+   end subroutine system_initial_y
+
+   !> What occupant o's effects see at (t, y), with the vehicle's state.
+   pure function system_body_state(sys, o, t, y) result(st)
+      type(crash_system_t), intent(in) :: sys
+      integer, intent(in) :: o
+      real(wp), intent(in) :: t, y(:)
+      type(body_state_t) :: st
+      call occupant_state(sys%occupants(o), t, y, vehicle_state_at(sys%vm, t), st)
+   end function system_body_state
+
+   subroutine system_rhs(this, t, y, dydt, status)
+      class(crash_system_t), intent(inout) :: this
       real(wp), intent(in) :: t
       real(wp), intent(in) :: y(:)
       real(wp), intent(out) :: dydt(:)
       integer, intent(out) :: status
-      real(wp) :: c(n_seg), s(n_seg), b(n_dof), zdd(n_dof)
-      integer :: info
+      type(vehicle_state_t) :: vs
+      type(body_state_t) :: st
+      integer :: o, info
 
       this%evaluations = this%evaluations + 1
       this%last_t = t
-      if (.not. physical(y)) then
-         dydt = 0.0_wp
-         status = rhs_diverged
-         return
-      end if
-      c = cos(y(1:n_seg))
-      s = sin(y(1:n_seg))
-      call generalized_force_vector(this%scene, this%m, this%bc, c, s, y(1:n_dof), &
-                                    y(n_dof + 1:2*n_dof), b, dydt(2*n_dof + 1:), this%counts)
-      call body_accelerations(this%bc, c, s, b, zdd, info)
-      dydt(1:n_dof) = y(n_dof + 1:2*n_dof)
-      dydt(n_dof + 1:2*n_dof) = zdd
-      if (info /= 0) then
-         status = rhs_not_positive_definite
-      else if (.not. all(ieee_is_finite(zdd))) then
-         status = rhs_not_finite
-      else
-         status = 0
-      end if
-   end subroutine body_rhs
+      status = 0
+      dydt = 0.0_wp
+      if (this%needs_vehicle) vs = vehicle_state_at(this%vm, t)
+      do o = 1, size(this%occupants)
+         associate (occ => this%occupants(o))
+            if (.not. in_range(this, occ, y)) then
+               status = rhs_diverged
+               return
+            end if
+            call occupant_state(occ, t, y, vs, st)
+            call occupant_rhs(occ, st, y, dydt, this%counts(:, o), info)
+            if (info /= 0) then
+               status = rhs_not_positive_definite
+               return
+            end if
+            if (.not. all(ieee_is_finite(dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof)))) then
+               status = rhs_not_finite
+               return
+            end if
+         end associate
+      end do
+   end subroutine system_rhs
 
-   !> Finite, and within the bounds of any physical state.
-   pure logical function physical(y)
+   !> The occupant's coordinates and rates are finite and within the bounds
+   !! of any physical state; if not, say which one left them.
+   logical function in_range(sys, occ, y) result(ok)
+      type(crash_system_t), intent(inout) :: sys
+      type(occupant_t), intent(in) :: occ
       real(wp), intent(in) :: y(:)
-      physical = all(ieee_is_finite(y))
-      if (.not. physical) return
-      physical = all(abs(y(1:n_seg)) <= max_angle) .and. all(abs(y(n_seg + 1:n_dof)) <= max_position) &
-                 .and. all(abs(y(n_dof + 1:n_dof + n_seg)) <= max_rate) &
-                 .and. all(abs(y(n_dof + n_seg + 1:2*n_dof)) <= max_speed)
-   end function physical
+      character(len=6), parameter :: names(n_dof) = [character(len=6) :: 'alpha1', 'alpha2', 'alpha3', &
+         'alpha4', 'alpha5', 'alpha6', 'alpha7', 'alpha8', 'x_h', 'y_h']
+      real(wp) :: bound(2*n_dof), v
+      character(len=8) :: unit(2*n_dof)
+      integer :: i
+      bound(1:n_seg) = max_angle
+      bound(n_seg + 1:n_dof) = max_position
+      bound(n_dof + 1:n_dof + n_seg) = max_rate
+      bound(n_dof + n_seg + 1:) = max_speed
+      unit(1:n_seg) = 'rad'
+      unit(n_seg + 1:n_dof) = 'in'
+      unit(n_dof + 1:n_dof + n_seg) = 'rad/s'
+      unit(n_dof + n_seg + 1:) = 'in/s'
+      ok = .true.
+      do i = 1, 2*n_dof
+         if (i <= n_dof) then
+            v = y(occ%z_offset + i)
+         else
+            v = y(occ%zdot_offset + i - n_dof)
+         end if
+         if (ieee_is_finite(v)) then
+            if (abs(v) <= bound(i)) cycle
+            sys%failure_detail = trim(occ%label)//': |'//trim(names(1 + mod(i - 1, n_dof))) &
+               //trim(merge('    ', ' dot', i <= n_dof))//'| = '//num(abs(v))//' '//trim(unit(i))//' > ' &
+               //num(bound(i))//' '//trim(unit(i))
+         else
+            sys%failure_detail = trim(occ%label)//': '//trim(names(1 + mod(i - 1, n_dof))) &
+               //trim(merge('    ', ' dot', i <= n_dof))//' is not finite'
+         end if
+         ok = .false.
+         return
+      end do
+   end function in_range
 
    pure function rhs_status_text(status) result(text)
       integer, intent(in) :: status
       character(len=:), allocatable :: text
       select case (status)
       case (rhs_not_positive_definite)
-         text = 'the body matrix A (figure 27) is not positive definite (LAPACK dpotf2)'
+         text = 'the body matrix A (figure 27) is not positive definite'
       case (rhs_not_finite)
          text = 'the accelerations are not finite'
       case (rhs_diverged)
-         text = 'the state left every physical range (|angle| > 1e4 rad, |rate| > 1e6 rad/s, ' &
-                //'|hip| > 1e7 in or |hip speed| > 1e8 in/s): the integration diverged; try a smaller DT'
+         text = 'the state left the range of any physical motion (|angle| <= '//num(max_angle) &
+                //' rad, |hip position| <= '//num(max_position)//' in, |rate| <= '//num(max_rate) &
+                //' rad/s, |hip speed| <= '//num(max_speed)//' in/s, bounds no valid deck''s motion ' &
+                //'reaches): the integration diverged; try a smaller DT, or NINT = 3 with tighter RTOL/ATOL'
       case default
          text = 'unknown right-hand-side failure'
       end select

@@ -1,13 +1,17 @@
-!> The HDF5 time-history file as an output sink (C.6): every output
-!! variable at every print time, written as the run goes and flushed
-!! regularly, so a run stopped midway leaves a readable file.
+!> The HDF5 time-history file as an output sink (C.6): every series of the
+!! output registry at every print time, with its columns, units and
+!! description, written as the run goes and flushed regularly, so a run
+!! stopped midway leaves a readable file; at the end, the summary's maxima
+!! and their times.
 module history_sink
    use kinds, only: wp
    use error_handling, only: error_t
-   use model, only: n_seg, n_joint
-   use output_calc, only: output_record_t
-   use joint_injury, only: injury_event_t, event_kind_name
+   use model, only: n_joint
+   use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
+   use equations_of_motion, only: crash_system_t
+   use effect_base, only: event_t, event_kind_name
+   use run_summary, only: run_summary_t
    use history_h5, only: history_file_t
    implicit none
    private
@@ -19,119 +23,127 @@ module history_sink
 
    type, extends(output_sink_t) :: history_sink_t
       type(history_file_t) :: file
-      integer :: id_time = 0, id_acc = 0, id_veh = 0, id_z = 0, id_zdot = 0, id_zdd = 0
-      integer :: id_theta = 0, id_joint = 0, id_jx = 0, id_jy = 0
-      integer :: id_energy = 0, id_ke = 0, id_spring = 0, id_stop = 0, id_fric = 0
+      type(output_registry_t) :: reg
+      integer :: id_time = 0
+      integer, allocatable :: id(:)
       integer :: n_records = 0
    contains
+      procedure :: begin => sink_begin
       procedure :: record => sink_record
       procedure :: event => sink_event
+      procedure :: finish => sink_finish
       procedure :: close => sink_close
    end type history_sink_t
 
 contains
 
-   !> Create the file and its series.
+   !> Create the file (its series are added when the run begins).
    subroutine history_sink_open(this, path, title, deck_lines, err)
       type(history_sink_t), intent(inout) :: this
       character(len=*), intent(in) :: path, title
       character(len=*), intent(in) :: deck_lines(:)
       type(error_t), intent(inout) :: err
-      character(len=12) :: seg(n_seg), jnt(n_joint), dof(10), u_dof(10)
-      integer :: i
-
-      do i = 1, n_seg
-         write (seg(i), '(a,i0)') 'segment_', i
-      end do
-      do i = 1, n_joint
-         write (jnt(i), '(a,i0)') 'joint_', i
-      end do
-      dof(1:8) = [character(len=12) :: 'alpha_1', 'alpha_2', 'alpha_3', 'alpha_4', 'alpha_5', 'alpha_6', &
-                  'alpha_7', 'alpha_8']
-      dof(9:10) = [character(len=12) :: 'x_h', 'y_h']
-      u_dof(1:8) = 'rad'
-      u_dof(9:10) = 'in'
-
       call this%file%open(path, title, deck_lines, err)
-      if (err%failed()) return
-      call add('time', [character(len=12) :: 't'], [character(len=12) :: 's'], 'time', this%id_time)
-      call add('acceleration', [character(len=12) :: 'head', 'chest'], [character(len=12) :: 'in/s^2', 'in/s^2'], &
-               'resultant accelerations of the head and chest centres of gravity (C.6)', this%id_acc)
-      call add('vehicle', [character(len=12) :: 'x_c', 'y_c', 'phi', 'xdot_c', 'ydot_c', 'phidot', 'xddot_c', &
-                           'yddot_c', 'phiddot'], &
-               [character(len=12) :: 'in', 'in', 'rad', 'in/s', 'in/s', 'rad/s', 'in/s^2', 'in/s^2', 'rad/s^2'], &
-               'vehicle motion; pitch positive front end down (C.1, C.3)', this%id_veh)
-      call add('body/z', dof, u_dof, 'generalized coordinates (section B)', this%id_z)
-      u_dof(1:8) = 'rad/s'
-      u_dof(9:10) = 'in/s'
-      call add('body/zdot', dof, u_dof, 'generalized velocities', this%id_zdot)
-      u_dof(1:8) = 'rad/s^2'
-      u_dof(9:10) = 'in/s^2'
-      call add('body/zddot', dof, u_dof, 'generalized accelerations (C.5)', this%id_zdd)
-      call add('body/theta', seg, [('rad', i=1, n_seg)], 'segment angles relative to the interior', this%id_theta)
-      call add('joints/angle', jnt, [('rad', i=1, n_joint)], 'joint angles alpha_i - alpha_m (Table 6)', &
-               this%id_joint)
-      call add('joints/x', jnt, [('in ', i=1, n_joint)], 'joint x relative to the interior (C.4)', this%id_jx)
-      call add('joints/y', jnt, [('in ', i=1, n_joint)], 'joint y relative to the interior (C.4)', this%id_jy)
-      call add('energy/summary', [character(len=14) :: 'ke_vehicle', 'ke_body', 'gravity', 'joint_elastic', &
-                                  'joint_stops', 'friction', 'total_body', 'balance_err'], &
-               [('in*lb', i=1, 8)], 'energies (C.6); total_body is conserved when nothing external acts', &
-               this%id_energy)
-      call add('energy/segment_kinetic', seg, [('in*lb', i=1, n_seg)], 'segment kinetic energies', this%id_ke)
-      call add('energy/joint_elastic', jnt, [('in*lb', i=1, n_joint)], 'joint elastic energy', this%id_spring)
-      call add('energy/joint_stops', jnt, [('in*lb', i=1, n_joint)], 'joint stop energy', this%id_stop)
-      call add('energy/joint_friction', jnt, [('in*lb', i=1, n_joint)], 'friction work dissipated', this%id_fric)
-   contains
-      subroutine add(name, columns, units, description, id)
-         character(len=*), intent(in) :: name, columns(:), units(:), description
-         integer, intent(out) :: id
-         id = 0
-         if (err%failed()) return
-         call this%file%add_series(name, columns, units, description, id, err)
-      end subroutine add
    end subroutine history_sink_open
 
-   subroutine sink_record(this, r, err)
+   !> One dataset per series of the registry, and /time.
+   subroutine sink_begin(this, sys, reg, first, err)
       class(history_sink_t), intent(inout) :: this
-      type(output_record_t), intent(in) :: r
+      type(crash_system_t), intent(in) :: sys
+      type(output_registry_t), intent(in) :: reg
+      type(output_frame_t), intent(in) :: first
       type(error_t), intent(inout) :: err
-      call put(this%id_time, [r%t])
-      call put(this%id_acc, [r%head_acc, r%chest_acc])
-      call put(this%id_veh, [r%veh_pos, r%veh_vel, r%veh_acc])
-      call put(this%id_z, r%z)
-      call put(this%id_zdot, r%zdot)
-      call put(this%id_zdd, r%zdd)
-      call put(this%id_theta, r%theta)
-      call put(this%id_joint, r%joint_angle)
-      call put(this%id_jx, r%joint_x)
-      call put(this%id_jy, r%joint_y)
-      call put(this%id_energy, [r%ke_vehicle, sum(r%ke_seg), sum(r%pe_gravity), sum(r%e_spring), sum(r%e_stop), &
-                                sum(r%w_friction), r%e_total, r%e_error])
-      call put(this%id_ke, r%ke_seg)
-      call put(this%id_spring, r%e_spring)
-      call put(this%id_stop, r%e_stop)
-      call put(this%id_fric, r%w_friction)
+      integer :: k
+      associate (u1 => size(sys%occupants), u2 => first%t)
+      end associate
+      this%reg = reg
+      allocate (this%id(size(reg%series)))
+      this%id = 0
+      if (err%failed()) return
+      call this%file%add_series('time', [character(len=4) :: 't'], [character(len=4) :: 's'], &
+                                'print times (C.6)', this%id_time, err)
+      do k = 1, size(reg%series)
+         if (err%failed()) return
+         associate (s => reg%series(k))
+            call this%file%add_series(s%name, s%col%name, s%col%unit, s%description, this%id(k), err)
+         end associate
+      end do
+   end subroutine sink_begin
+
+   subroutine sink_record(this, frame, err)
+      class(history_sink_t), intent(inout) :: this
+      type(output_frame_t), intent(in) :: frame
+      type(error_t), intent(inout) :: err
+      integer :: k
+      if (err%failed()) return
+      call this%file%append(this%id_time, [frame%t], err)
+      do k = 1, size(this%reg%series)
+         if (err%failed()) return
+         associate (s => this%reg%series(k))
+            call this%file%append(this%id(k), frame%v(s%offset + 1:s%offset + size(s%col)), err)
+         end associate
+      end do
       this%n_records = this%n_records + 1
       if (mod(this%n_records, flush_every) == 0 .and. .not. err%failed()) call this%file%flush(err)
-   contains
-      subroutine put(id, values)
-         integer, intent(in) :: id
-         real(wp), intent(in) :: values(:)
-         if (err%failed()) return
-         call this%file%append(id, values, err)
-      end subroutine put
    end subroutine sink_record
 
    subroutine sink_event(this, e, err)
       class(history_sink_t), intent(inout) :: this
-      type(injury_event_t), intent(in) :: e
+      type(event_t), intent(in) :: e
       type(error_t), intent(inout) :: err
       character(len=80) :: text
+      if (err%failed()) return
       write (text, '(a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of joint ', e%index, &
          ': relative angle ', e%value, ' rad'
       call this%file%add_event(e%t, e%kind, e%index, text, err)
       if (.not. err%failed()) call this%file%flush(err)
    end subroutine sink_event
+
+   !> The summary's maxima and their times: /summary/maxima (values) and
+   !! /summary/maxima_time, one row each, a column per maximum.
+   subroutine sink_finish(this, summary, err)
+      class(history_sink_t), intent(inout) :: this
+      type(run_summary_t), intent(in) :: summary
+      type(error_t), intent(inout) :: err
+      character(len=24), allocatable :: names(:), units(:)
+      real(wp), allocatable :: values(:), times(:)
+      integer :: o, i, n, id_v, id_t
+      character(len=8) :: prefix
+      if (err%failed()) return
+      n = size(summary%occ)*(2 + 2*n_joint)
+      allocate (names(n), units(n), values(n), times(n))
+      n = 0
+      do o = 1, size(summary%occ)
+         prefix = ''
+         if (size(summary%occ) > 1) write (prefix, '(a,i0,a)') 'occ', o, '_'
+         associate (os => summary%occ(o))
+            call put(trim(prefix)//'head_acceleration', 'in/s^2', os%head_max%value, os%head_max%t)
+            call put(trim(prefix)//'chest_acceleration', 'in/s^2', os%chest_max%value, os%chest_max%t)
+            do i = 1, n_joint
+               call put(trim(prefix)//'joint_'//char(48 + i)//'_min', 'rad', os%joint_min(i)%value, os%joint_min(i)%t)
+               call put(trim(prefix)//'joint_'//char(48 + i)//'_max', 'rad', os%joint_max(i)%value, os%joint_max(i)%t)
+            end do
+         end associate
+      end do
+      call this%file%add_series('summary/maxima', names, units, 'maxima (minima for joint_*_min) over all ' &
+                                //'accepted steps, as the listing''s summary gives them', id_v, err)
+      units = 's'
+      if (.not. err%failed()) call this%file%add_series('summary/maxima_time', names, units, &
+                                                       'when each maximum happened', id_t, err)
+      if (.not. err%failed()) call this%file%append(id_v, values, err)
+      if (.not. err%failed()) call this%file%append(id_t, times, err)
+      if (.not. err%failed()) call this%file%flush(err)
+   contains
+      subroutine put(name, unit, value, t)
+         character(len=*), intent(in) :: name, unit
+         real(wp), intent(in) :: value, t
+         n = n + 1
+         names(n) = name
+         units(n) = unit
+         values(n) = value
+         times(n) = t
+      end subroutine put
+   end subroutine sink_finish
 
    subroutine sink_close(this, err)
       class(history_sink_t), intent(inout) :: this

@@ -1,38 +1,40 @@
-!> Report C.6, output calculations: head and chest accelerations, energies
-!! of the vehicle, the segments and the joints, gravitational energy,
-!! angles relative to the interior and joint positions (C.4), for one
-!! accepted state.
+!> Report C.6, output calculations for one occupant at one accepted state:
+!! head and chest accelerations, the vehicle's motion, the generalized
+!! coordinates, angles relative to the interior, joint angles and positions
+!! relative to the interior (C.4), kinetic energies of the vehicle and the
+!! segments. The series these fill are declared here (body_series) for the
+!! output registry; the energies of the effects come from the effects.
 module output_calc
-   use kinds, only: wp
-   use model, only: model_t, n_dof, n_seg, n_joint, joint_partner
-   use generalized_forces, only: scene_t
+   use kinds, only: wp, deg, g_std
+   use model, only: body_section_t, vehicle_section_t, n_dof, n_seg, n_joint, hip_x, hip_y
    use body_kinematics, only: point_state_t, segment_cg_state, joint_state, to_interior
-   use joint_restraints, only: restraint_energy
-   use vehicle_motion, only: vehicle_state_t
+   use effect_base, only: body_state_t
+   use joint_coupling, only: relative_angle, joint_columns
+   use output_series, only: output_series_t, output_column_t, series_new, column
    implicit none
    private
 
-   public :: output_record_t, output_compute, head_chest_acceleration, body_energy
+   public :: body_outputs_t, body_outputs_compute, head_chest_acceleration, body_series, body_series_values
+   public :: body_kinetic_energy
 
    !> Segments whose centre-of-gravity accelerations C.6 prints.
    integer, parameter :: chest = 3, head = 4
 
-   !> All output variables at one time (internal units; the listing converts).
-   type :: output_record_t
-      real(wp) :: t = 0.0_wp
+   !> The C.6 quantities of one occupant at one time (internal units).
+   type :: body_outputs_t
       real(wp) :: head_acc = 0.0_wp, chest_acc = 0.0_wp   !< resultant, in/s^2
       real(wp) :: veh_pos(3) = 0.0_wp, veh_vel(3) = 0.0_wp, veh_acc(3) = 0.0_wp
       real(wp) :: z(n_dof) = 0.0_wp, zdot(n_dof) = 0.0_wp, zdd(n_dof) = 0.0_wp
-      real(wp) :: theta(n_seg) = 0.0_wp        !< segment angles relative to the interior
+      real(wp) :: theta(n_seg) = 0.0_wp         !< segment angles relative to the interior
       real(wp) :: joint_angle(n_joint) = 0.0_wp !< alpha_i - alpha_m
       real(wp) :: joint_x(n_joint) = 0.0_wp, joint_y(n_joint) = 0.0_wp !< relative to the interior
       real(wp) :: ke_vehicle = 0.0_wp
       real(wp) :: ke_seg(n_seg) = 0.0_wp
-      real(wp) :: pe_gravity(n_seg) = 0.0_wp
-      real(wp) :: e_spring(n_joint) = 0.0_wp, e_stop(n_joint) = 0.0_wp, w_friction(n_joint) = 0.0_wp
-      real(wp) :: e_total = 0.0_wp              !< body kinetic + conserved + dissipated
-      real(wp) :: e_error = 0.0_wp              !< e_total minus its initial value
-   end type output_record_t
+   end type body_outputs_t
+
+   !> The series body_series declares, in order.
+   integer, parameter :: s_acc = 1, s_vehicle = 2, s_z = 3, s_zdot = 4, s_zdd = 5, s_theta = 6, &
+      s_joint_angle = 7, s_ke = 8, s_joint_x = 9, s_joint_y = 10, n_body_series = 10
 
 contains
 
@@ -40,16 +42,16 @@ contains
    !! (C.6; the kinematic acceleration, as the report defines it). Written
    !! out for the two chains (hip - L1 - L2 - upper torso - L3 - head) as it
    !! runs on every accepted step.
-   pure subroutine head_chest_acceleration(m, z, zdot, zdd, a_head, a_chest)
-      type(model_t), intent(in) :: m
+   pure subroutine head_chest_acceleration(body, z, zdot, zdd, a_head, a_chest)
+      type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
       real(wp), intent(out) :: a_head, a_chest
       real(wp) :: c(head), s(head), spine(2), chest_cg(2), head_cg(2)
       c = cos(z(1:head))
       s = sin(z(1:head))
-      spine = zdd(9:10) + link(1, m%length(1)) + link(2, m%length(2))
-      chest_cg = spine + link(chest, m%rho(chest))
-      head_cg = spine + link(chest, m%length(3)) + link(head, m%rho(head))
+      spine = [zdd(hip_x), zdd(hip_y)] + link(1, body%length(1)) + link(2, body%length(2))
+      chest_cg = spine + link(chest, body%rho(chest))
+      head_cg = spine + link(chest, body%length(3)) + link(head, body%rho(head))
       a_head = hypot(head_cg(1), head_cg(2))
       a_chest = hypot(chest_cg(1), chest_cg(2))
    contains
@@ -63,62 +65,141 @@ contains
       end function link
    end subroutine head_chest_acceleration
 
-   !> Fill an output record. y is the integrator's state (z, z', friction
-   !! work), zdd the accelerations there, vs the vehicle state, y_cg0 the
-   !! initial CG heights (gravitational energy is measured from them).
-   pure subroutine output_compute(m, sc, t, y, zdd, vs, y_cg0, e_total0, r)
-      type(model_t), intent(in) :: m
-      type(scene_t), intent(in) :: sc
-      real(wp), intent(in) :: t, y(:), zdd(n_dof)
-      type(vehicle_state_t), intent(in) :: vs
-      real(wp), intent(in) :: y_cg0(n_seg), e_total0
-      type(output_record_t), intent(out) :: r
+   !> Kinetic energy of each segment (C.6, erratum E-65).
+   pure function body_kinetic_energy(body, z, zdot) result(ke)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof)
+      real(wp) :: ke(n_seg)
       type(point_state_t) :: p
-      integer :: i, k
-
-      r%t = t
-      r%z = y(1:n_dof)
-      r%zdot = y(n_dof + 1:2*n_dof)
-      r%zdd = zdd
-      r%veh_pos = vs%pos
-      r%veh_vel = vs%vel
-      r%veh_acc = vs%acc
-      call head_chest_acceleration(m, r%z, r%zdot, r%zdd, r%head_acc, r%chest_acc)
-      ! Theta_i = alpha_i + Phi (section B)
-      r%theta = r%z(1:n_seg) + vs%pos(3)
-      do i = 1, n_joint
-         r%joint_angle(i) = r%z(i) - r%z(joint_partner(i))
-         p = to_interior(joint_state(m, r%z, r%zdot, r%zdd, i), vs%pos, vs%vel)
-         r%joint_x(i) = p%x
-         r%joint_y(i) = p%y
-      end do
-      ! C.6 kinetic energies: vehicle, and segments with erratum E-65
-      r%ke_vehicle = 0.5_wp*m%vehicle_mass*(vs%vel(1)**2 + vs%vel(2)**2) &
-                     + 0.5_wp*m%vehicle_inertia*vs%vel(3)**2
+      real(wp) :: zero(n_dof)
+      integer :: i
+      zero = 0.0_wp
       do i = 1, n_seg
-         p = segment_cg_state(m, r%z, r%zdot, r%zdd, i)
-         r%ke_seg(i) = 0.5_wp*m%mass(i)*(p%vx**2 + p%vy**2) + 0.5_wp*m%inertia(i)*r%zdot(i)**2
-         ! gravitational energy from the inertial CG height (erratum E-63)
-         r%pe_gravity(i) = m%gravity*m%mass(i)*(p%y - y_cg0(i))
+         p = segment_cg_state(body, z, zdot, zero, i)
+         ke(i) = 0.5_wp*body%mass(i)*(p%vx**2 + p%vy**2) + 0.5_wp*body%inertia(i)*zdot(i)**2
       end do
-      ! joints: elastic energy with the 1/2 (erratum E-61), stop energy,
-      ! friction work integrated with the motion (erratum E-64)
-      do i = 1, n_joint
-         r%e_spring(i) = 0.5_wp*m%k_elastic(i)*(r%joint_angle(i) - sc%rel0(i))**2
-         r%e_stop(i) = restraint_energy(m%restraint(i), r%joint_angle(i))
-      end do
-      do k = 1, size(sc%friction_joints)
-         r%w_friction(sc%friction_joints(k)) = y(2*n_dof + k)
-      end do
-      r%e_total = body_energy(r)
-      r%e_error = r%e_total - e_total0
-   end subroutine output_compute
+   end function body_kinetic_energy
 
-   !> Body energy that is constant while no external force acts: kinetic +
-   !! gravitational + elastic + stop energy + work dissipated by friction.
-   pure real(wp) function body_energy(r)
-      type(output_record_t), intent(in) :: r
-      body_energy = sum(r%ke_seg) + sum(r%pe_gravity) + sum(r%e_spring) + sum(r%e_stop) &
-                    + sum(r%w_friction)
-   end function body_energy
+   !> The C.6 quantities at the state st, with the accelerations zdd there.
+   pure subroutine body_outputs_compute(body, vehicle, st, zdd, r)
+      type(body_section_t), intent(in) :: body
+      type(vehicle_section_t), intent(in) :: vehicle
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: zdd(n_dof)
+      type(body_outputs_t), intent(out) :: r
+      type(point_state_t) :: p
+      integer :: i
+      associate (vs => st%vehicle)
+         r%z = st%z
+         r%zdot = st%zdot
+         r%zdd = zdd
+         r%veh_pos = vs%pos
+         r%veh_vel = vs%vel
+         r%veh_acc = vs%acc
+         call head_chest_acceleration(body, r%z, r%zdot, r%zdd, r%head_acc, r%chest_acc)
+         ! Theta_i = alpha_i + Phi (section B)
+         r%theta = r%z(1:n_seg) + vs%pos(3)
+         do i = 1, n_joint
+            r%joint_angle(i) = relative_angle(r%z, i)
+            p = to_interior(joint_state(body, r%z, r%zdot, r%zdd, i), vs%pos, vs%vel)
+            r%joint_x(i) = p%x
+            r%joint_y(i) = p%y
+         end do
+         ! C.6 kinetic energies: vehicle, and segments with erratum E-65
+         r%ke_vehicle = 0.5_wp*vehicle%mass*(vs%vel(1)**2 + vs%vel(2)**2) + 0.5_wp*vehicle%inertia*vs%vel(3)**2
+         r%ke_seg = body_kinetic_energy(body, r%z, r%zdot)
+      end associate
+   end subroutine body_outputs_compute
+
+   !> The series of C.6 (without the energy summary, which depends on the
+   !! effects): name, columns, units, listing units, NOUT level.
+   function body_series() result(s)
+      type(output_series_t) :: s(n_body_series)
+      character(len=8) :: seg(n_seg)
+      type(output_column_t) :: dof(n_dof)
+      integer :: i
+      do i = 1, n_seg
+         write (seg(i), '(a,i0)') 'segment', i
+      end do
+      s(s_acc) = series_new('acceleration', 'HEAD AND CHEST ACCELERATIONS', &
+                            'resultant accelerations of the head and chest centres of gravity (C.6)', 1)
+      s(s_acc)%col = [column('head', 'in/s^2', 'g', 1.0_wp/g_std), column('chest', 'in/s^2', 'g', 1.0_wp/g_std)]
+      s(s_vehicle) = series_new('vehicle', 'VEHICLE MOTION', &
+                                'vehicle position, rate and acceleration; pitch positive front end down (C.1, C.3)', 1)
+      s(s_vehicle)%col = [column('x_c', 'in'), column('y_c', 'in'), column('phi', 'rad', 'deg', 1.0_wp/deg), &
+                          column('xdot_c', 'in/s'), column('ydot_c', 'in/s'), column('phidot', 'rad/s', 'deg/s', 1.0_wp/deg), &
+                          column('xddot_c', 'in/s^2', 'g', 1.0_wp/g_std), column('yddot_c', 'in/s^2', 'g', 1.0_wp/g_std), &
+                          column('phiddot', 'rad/s^2', 'deg/s^2', 1.0_wp/deg)]
+      s(s_z) = series_new('body/z', 'GENERALIZED COORDINATES', 'generalized coordinates alpha_1..alpha_8, x_h, y_h ' &
+                          //'(section B)', 2)
+      call dof_columns('', 'rad', 'in', 'deg')
+      s(s_z)%col = dof
+      s(s_zdot) = series_new('body/zdot', 'GENERALIZED VELOCITIES', 'generalized velocities', 2)
+      call dof_columns('dot', 'rad/s', 'in/s', 'deg/s')
+      s(s_zdot)%col = dof
+      s(s_zdd) = series_new('body/zddot', 'GENERALIZED ACCELERATIONS', 'generalized accelerations (C.5)', 2)
+      call dof_columns('ddot', 'rad/s^2', 'in/s^2', 'deg/s^2')
+      s(s_zdd)%col = dof
+      s(s_theta) = series_new('body/theta', 'SEGMENT ANGLES RELATIVE TO THE INTERIOR', &
+                              'segment angles relative to the interior, Theta = alpha + Phi (section B)', 2)
+      s(s_theta)%col = [(column(trim(seg(i)), 'rad', 'deg', 1.0_wp/deg), i=1, n_seg)]
+      s(s_joint_angle) = series_new('joints/angle', 'JOINT ANGLES', 'joint angles alpha_i - alpha_m (Table 6)', 2)
+      s(s_joint_angle)%col = joint_columns('rad')
+      s(s_joint_angle)%col(:)%listing_unit = 'deg'
+      s(s_joint_angle)%col(:)%listing_scale = 1.0_wp/deg
+      s(s_ke) = series_new('energy/segment_kinetic', 'SEGMENT KINETIC ENERGIES', &
+                           'kinetic energy of each segment (C.6, erratum E-65)', 3)
+      s(s_ke)%col = [(column(trim(seg(i)), 'in*lb'), i=1, n_seg)]
+      s(s_joint_x) = series_new('joints/x', 'JOINT POSITIONS RELATIVE TO THE INTERIOR, X', &
+                                'joint x relative to the interior (C.4)', 3)
+      s(s_joint_x)%col = joint_columns('in')
+      s(s_joint_y) = series_new('joints/y', 'JOINT POSITIONS RELATIVE TO THE INTERIOR, Y', &
+                                'joint y relative to the interior (C.4)', 3)
+      s(s_joint_y)%col = joint_columns('in')
+      do i = 1, n_body_series
+         s(i)%producer = 0
+         s(i)%item = i
+      end do
+   contains
+      subroutine dof_columns(suffix, angle_unit, hip_unit, angle_listing)
+         character(len=*), intent(in) :: suffix, angle_unit, hip_unit, angle_listing
+         integer :: k
+         character(len=12) :: name
+         do k = 1, n_seg
+            write (name, '(a,i0,a)') 'alpha', k, suffix
+            dof(k) = column(trim(name), angle_unit, angle_listing, 1.0_wp/deg)
+         end do
+         dof(hip_x) = column('x_h'//suffix, hip_unit)
+         dof(hip_y) = column('y_h'//suffix, hip_unit)
+      end subroutine dof_columns
+   end function body_series
+
+   !> The values of body series item.
+   pure subroutine body_series_values(item, r, values)
+      integer, intent(in) :: item
+      type(body_outputs_t), intent(in) :: r
+      real(wp), intent(out) :: values(:)
+      select case (item)
+      case (s_acc)
+         values = [r%head_acc, r%chest_acc]
+      case (s_vehicle)
+         values = [r%veh_pos, r%veh_vel, r%veh_acc]
+      case (s_z)
+         values = r%z
+      case (s_zdot)
+         values = r%zdot
+      case (s_zdd)
+         values = r%zdd
+      case (s_theta)
+         values = r%theta
+      case (s_joint_angle)
+         values = r%joint_angle
+      case (s_ke)
+         values = r%ke_seg
+      case (s_joint_x)
+         values = r%joint_x
+      case default
+         values = r%joint_y
+      end select
+   end subroutine body_series_values
 end module output_calc

@@ -1,46 +1,171 @@
-!> The listing of a run (C.6): the deck echoed with card numbers, the
-!! parameter tables laid out like the report's Tables 1-6, the preliminary
-!! constants of C.2, the time-history tables chosen by NOUT and a summary
-!! (maxima and when they occurred, injuries, the end of the run, the energy
-!! balance, the cost of the integration).
+!> The listing of a run (C.6), written as the run goes: the deck echoed
+!! with card numbers, the parameter tables laid out like the report's
+!! Tables 1-6 and the preliminary constants of C.2 when the run begins; the
+!! time-history tables of the output registry chosen by NOUT, a page of
+!! rows at a time for every table (so memory stays bounded whatever TMAX and
+!! DTPRINT are); the summary at the end (maxima and when they occurred,
+!! injuries, the end of the run, the energy balance, the cost).
 module run_report
-   use kinds, only: wp, deg, g_std
+   use kinds, only: wp, deg, g_std, i8
    use strings, only: itoa
    use model, only: model_t, n_seg, n_joint, n_injury, n_arc, joint_partner, segment_name, &
-      joint_name, arc_name, form_name, form_table, integrator_name, end_option_name
+      joint_name, arc_name, form_name, form_table, integrator_name, end_option_name, nint_adams, &
+      astart_name, solver_name
    use deck_reader, only: deck_t, echo_bad, echo_header
    use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text
+   use error_handling, only: error_t
    use listing, only: listing_t
-   use simulation, only: run_result_t
-   use output_calc, only: output_record_t
-   use generalized_forces, only: effect_name, n_effect_kinds, effect_joint_elastic, effect_joint_friction, &
-      effect_joint_stops
-   use joint_injury, only: event_kind_name
-   use end_tests, only: end_reason_text, end_failure
+   use number_format, only: fixed
+   use output_series, only: output_series_t, max_listing_columns
+   use output_registry, only: output_registry_t, output_frame_t
+   use output_sink, only: output_sink_t
+   use equations_of_motion, only: crash_system_t
+   use effect_base, only: event_t, event_kind_name
+   use run_summary, only: run_summary_t
+   use end_tests, only: end_reason_text, end_failure, end_energy
    implicit none
    private
 
-   public :: write_listing, write_deck_echo
+   public :: listing_sink_t, listing_sink_start, write_deck_echo
 
-   character(len=*), parameter :: fmt_row = '(f10.5,11es11.3)'
+   !> Rows of a time-history table per page (60 lines less the page header,
+   !! the table heading and the two column-heading lines).
+   integer, parameter :: rows_per_page = 50
+
+   !> The listing as an output sink. It keeps one page of rows of the
+   !! tables NOUT selects, nothing more.
+   type, extends(output_sink_t) :: listing_sink_t
+      type(listing_t) :: lst
+      type(deck_t) :: deck
+      type(model_t) :: m
+      character(len=:), allocatable :: version
+      type(output_registry_t) :: reg
+      integer, allocatable :: tables(:)          !< registry series printed (NOUT)
+      real(wp), allocatable :: t(:), rows(:, :)  !< the pending page: times, frame values
+      integer :: n_rows = 0
+      character(len=:), allocatable :: effect_lines
+   contains
+      procedure :: begin => sink_begin
+      procedure :: record => sink_record
+      procedure :: event => sink_event
+      procedure :: finish => sink_finish
+   end type listing_sink_t
 
 contains
 
-   !> The whole listing of a run.
-   subroutine write_listing(lst, deck, m, res, version)
-      type(listing_t), intent(inout) :: lst
+   !> Prepare the listing on unit (already open) for the deck and model.
+   subroutine listing_sink_start(this, unit, deck, m, version)
+      type(listing_sink_t), intent(out) :: this
+      integer, intent(in) :: unit
       type(deck_t), intent(in) :: deck
       type(model_t), intent(in) :: m
-      type(run_result_t), intent(in) :: res
       character(len=*), intent(in) :: version
+      this%deck = deck
+      this%m = m
+      this%version = version
+      call this%lst%start(unit, 'HSRI-2D '//version, m%title)
+   end subroutine listing_sink_start
 
-      call write_banner(lst, deck, m, version)
-      call write_deck_echo(lst, deck)
-      call write_parameters(lst, m)
-      call write_preliminary(lst, res)
-      if (m%nout >= 1) call write_histories(lst, m, res)
-      call write_summary(lst, m, res)
-   end subroutine write_listing
+   subroutine sink_begin(this, sys, reg, first, err)
+      class(listing_sink_t), intent(inout) :: this
+      type(crash_system_t), intent(in) :: sys
+      type(output_registry_t), intent(in) :: reg
+      type(output_frame_t), intent(in) :: first
+      type(error_t), intent(inout) :: err
+      integer :: k
+      logical, allocatable :: printed(:)
+      associate (unused => err%code)
+      end associate
+      this%reg = reg
+      allocate (printed(size(reg%series)))
+      do k = 1, size(reg%series)
+         printed(k) = this%m%options%nout >= reg%series(k)%nout
+      end do
+      this%tables = pack([(k, k=1, size(reg%series))], printed)
+      allocate (this%t(rows_per_page), this%rows(reg%n_values, rows_per_page))
+      call write_banner(this%lst, this%deck, this%m, this%version)
+      call write_deck_echo(this%lst, this%deck)
+      call write_parameters(this%lst, this%m)
+      call write_preliminary(this%lst, sys, reg, first)
+   end subroutine sink_begin
+
+   subroutine sink_record(this, frame, err)
+      class(listing_sink_t), intent(inout) :: this
+      type(output_frame_t), intent(in) :: frame
+      type(error_t), intent(inout) :: err
+      associate (unused => err%code)
+      end associate
+      if (size(this%tables) == 0) return
+      this%n_rows = this%n_rows + 1
+      this%t(this%n_rows) = frame%t
+      this%rows(:, this%n_rows) = frame%v
+      if (this%n_rows == rows_per_page) call write_page_of_tables(this)
+   end subroutine sink_record
+
+   !> Events are listed in the summary.
+   subroutine sink_event(this, e, err)
+      class(listing_sink_t), intent(inout) :: this
+      type(event_t), intent(in) :: e
+      type(error_t), intent(inout) :: err
+      associate (u1 => this%n_rows, u2 => e%t, u3 => err%code)
+      end associate
+   end subroutine sink_event
+
+   subroutine sink_finish(this, summary, err)
+      class(listing_sink_t), intent(inout) :: this
+      type(run_summary_t), intent(in) :: summary
+      type(error_t), intent(inout) :: err
+      associate (unused => err%code)
+      end associate
+      if (this%n_rows > 0) call write_page_of_tables(this)
+      call write_summary(this%lst, this%m, this%reg, summary)
+   end subroutine sink_finish
+
+   !> The pending rows of every table, each table on its own page(s), with
+   !! its column headings; a table wider than a line is split.
+   subroutine write_page_of_tables(this)
+      class(listing_sink_t), intent(inout) :: this
+      integer :: q, first, last, k, c
+      character(len=132) :: line, names, units
+      real(wp) :: x
+      do q = 1, size(this%tables)
+         associate (s => this%reg%series(this%tables(q)))
+            do first = 1, size(s%col), max_listing_columns
+               last = min(first + max_listing_columns - 1, size(s%col))
+               call this%lst%new_page('TIME HISTORIES (C.6)')
+               call this%lst%heading(s%title//' - '//s%name//trim(merge(' (continued)', '            ', first > 1)), 3)
+               names = '      TIME'
+               units = '       (s)'
+               do c = first, last
+                  names = names(1:10 + 11*(c - first))//adjustr(label(s%col(c)%name))
+                  units = units(1:10 + 11*(c - first))//adjustr(' '//s%col(c)%listing_unit(1:10))
+               end do
+               call this%lst%put(names)
+               call this%lst%put(units)
+               do k = 1, this%n_rows
+                  line = fixed(this%t(k), 10, 5)
+                  do c = first, last
+                     x = this%rows(s%offset + c, k)*s%col(c)%listing_scale
+                     write (line(11 + 11*(c - first):), '(es11.3)') x
+                  end do
+                  call this%lst%put(line)
+               end do
+            end do
+         end associate
+      end do
+      this%n_rows = 0
+   end subroutine write_page_of_tables
+
+   !> A column heading: upper case, 11 columns wide, right-aligned.
+   pure function label(text) result(h)
+      character(len=*), intent(in) :: text
+      character(len=11) :: h
+      integer :: i
+      h = ' '//text(1:min(len_trim(text), 10))
+      do i = 1, len(h)
+         if (h(i:i) >= 'a' .and. h(i:i) <= 'z') h(i:i) = achar(iachar(h(i:i)) - 32)
+      end do
+   end function label
 
    subroutine write_banner(lst, deck, m, version)
       type(listing_t), intent(inout) :: lst
@@ -57,8 +182,11 @@ contains
       do i = 1, size(deck%source_name)
          call lst%put(' DECK    '//deck%source_name(i)%s)
       end do
-      call lst%put(' PULSE   '//m%pulse_source)
+      call lst%put(' PULSE   '//m%vehicle%pulse_source)
       call lst%put(' UNITS   inch, pound force, second; angles in degrees in the listing')
+      do i = 1, size(m%warnings)
+         call lst%put(' WARNING '//m%warnings(i)%s)
+      end do
    end subroutine write_banner
 
    !> Every card image with its card number and where it came from.
@@ -117,7 +245,6 @@ contains
       name = deck%source_name(src)%s
       if (len(name) > 22) name = '...'//name(len(name) - 18:)
       s = name//':'//itoa(line)
-      ! left-aligned in its column (A editing would right-align a short string)
    end function source_line
 
    !> Tables 1-6 of the report, as the run uses them.
@@ -128,30 +255,37 @@ contains
       integer :: i
 
       call lst%new_page('PARAMETERS (C.1, TABLES 1-6)')
-      call lst%heading('OPTIONS AND TIME CONTROLS', 8)
-      write (line, '(a,i2,a,i2,a,i2,a,i2,a,i2,a,i2)') '  NBODY', m%nbody, '   NBELT', m%nbelt, &
-         '   NEND', m%nend, '   NLOAD', m%nload, '   NOUT', m%nout, '   NINT', m%nint
-      call lst%put(line)
-      call lst%put('  integrator: '//trim(integrator_name(m%nint))//'    end test: '//trim(end_option_name(m%nend)))
-      write (line, '(a,es11.4,a,es11.4,a,es11.4,a)') '  TMAX', m%t_max, ' s   DT', m%dt, ' s   DTPRINT', &
-         m%dt_print, ' s'
-      call lst%put(line)
-      write (line, '(a,es10.3,a,i4,a,es10.3,a,es10.3)') '  CTOL', m%corrector_tol, '   CITER', &
-         m%corrector_max_iter, '   RTOL', m%rtol, '   ATOL', m%atol
-      call lst%put(line)
-      write (line, '(a,f10.4,a)') '  G', m%gravity, ' in/s^2'
-      call lst%put(line)
-
-      call lst%heading('TABLE 1 - BODY SEGMENTS (I AS IN TABLE 5)', 12)
-      call lst%put('   I  SEGMENT        MASS        WEIGHT     INERTIA     LENGTH L    CG DIST RHO')
-      call lst%put('                     lb*s^2/in   lb         lb*in*s^2   in          in')
-      do i = 1, n_seg
-         write (line, '(i4,2x,a12,5es12.4)') i, segment_name(i), m%mass(i), m%mass(i)*g_std, &
-            m%inertia(i), m%length(i), m%rho(i)
+      call lst%heading('OPTIONS AND TIME CONTROLS', 9)
+      associate (o => m%options, tc => m%time, nc => m%numerics)
+         write (line, '(a,i2,a,i2,a,i2,a,i2,a,i2,a,i2)') '  NBODY', o%nbody, '   NBELT', o%nbelt, &
+            '   NEND', o%nend, '   NLOAD', o%nload, '   NOUT', o%nout, '   NINT', o%nint
          call lst%put(line)
-      end do
-      write (line, '(6x,a12,2es12.4)') 'total', sum(m%mass), sum(m%mass)*g_std
-      call lst%put(line)
+         call lst%put('  integrator: '//trim(integrator_name(o%nint))//'    end test: '//trim(end_option_name(o%nend)))
+         if (o%nint == nint_adams) call lst%put('  Adams-Moulton start: '//trim(astart_name(nc%am_start)))
+         write (line, '(a,es11.4,a,es11.4,a,es11.4,a)') '  TMAX', tc%t_max, ' s   DT', tc%dt, ' s   DTPRINT', &
+            tc%dt_print, ' s'
+         call lst%put(line)
+         write (line, '(a,es10.3,a,i4,a,es10.3,a,es10.3)') '  CTOL', tc%corrector_tol, '   CITER', &
+            tc%corrector_max_iter, '   RTOL', tc%rtol, '   ATOL', tc%atol
+         call lst%put(line)
+         write (line, '(a,a,a,es10.3,a)') '  solver of A z'''' = b: ', trim(solver_name(nc%solver)), &
+            '    energy balance tolerance', nc%energy_tol, merge(' (continue)', ' (stop)    ', nc%energy_continue)
+         call lst%put(line)
+         call lst%put('  G'//fixed(m%environment%gravity, 10, 4)//' in/s^2')
+      end associate
+
+      associate (b => m%body)
+         call lst%heading('TABLE 1 - BODY SEGMENTS (I AS IN TABLE 5)', 12)
+         call lst%put('   I  SEGMENT        MASS        WEIGHT     INERTIA     LENGTH L    CG DIST RHO')
+         call lst%put('                     lb*s^2/in   lb         lb*in*s^2   in          in')
+         do i = 1, n_seg
+            write (line, '(i4,2x,a12,5es12.4)') i, segment_name(i), b%mass(i), b%mass(i)*g_std, &
+               b%inertia(i), b%length(i), b%rho(i)
+            call lst%put(line)
+         end do
+         write (line, '(6x,a12,2es12.4)') 'total', sum(b%mass), sum(b%mass)*g_std
+         call lst%put(line)
+      end associate
 
       call lst%heading('TABLE 1 - BODY JOINTS (TABLE 6: JOINT I COUPLES SEGMENTS I AND M)', 12)
       call lst%put('   I  JOINT         M  K           C''          XI        OMEGA     BOMEGA    ' &
@@ -159,16 +293,16 @@ contains
       call lst%put('                       in*lb/rad   in*lb       deg/s     deg       deg       ' &
                    //'in*lb/rad   in*lb/rad           deg      deg')
       do i = 1, n_joint
-         associate (r => m%restraint(i))
-            write (line, '(i4,2x,a12,i3,2es12.4,f10.4,2f10.2,2es12.4,2x,a6,2f9.2)') i, joint_name(i), &
-               joint_partner(i), m%k_elastic(i), m%c_friction(i), m%xi(i)/deg, r%lower/deg, r%upper/deg, &
-               r%coef_lower(1), r%coef_upper(1), form_name(r%form), r%dislocation_lower/deg, &
-               r%dislocation_upper/deg
+         associate (r => m%joints%restraint(i), jt => m%joints)
+            write (line, '(i4,2x,a12,i3,2es12.4,4a,2es12.4,2x,a6,2a)') i, joint_name(i), &
+               joint_partner(i), jt%k_elastic(i), jt%c_friction(i), fixed(jt%xi(i)/deg, 10, 4), &
+               fixed(r%lower/deg, 10, 2), fixed(r%upper/deg, 10, 2), '', r%coef_lower(1), r%coef_upper(1), &
+               form_name(r%form), fixed(r%dislocation_lower/deg, 9, 2), fixed(r%dislocation_upper/deg, 9, 2)
          end associate
          call lst%put(line)
       end do
       do i = 1, n_joint
-         associate (r => m%restraint(i))
+         associate (r => m%joints%restraint(i))
             if (r%form == form_table) then
                call lst%put('  joint '//itoa(i)//': tabulated stop torques, depth (deg) : torque (in*lb)')
                call put_curve('    lower', r%curve_lower%depth, r%curve_lower%torque)
@@ -184,39 +318,47 @@ contains
       call lst%heading('TABLE 1 - INJURY CRITERIA (TABLE 5 ROWS; 0 = NOT CHECKED)', 13)
       call lst%put('   I  SHEAR FRACTURE FSF  COMPRESSION FCF  TENSION DISLOCATION FTD   (lb)')
       do i = 1, n_injury
-         write (line, '(i4,3es18.4)') i, m%f_shear(i), m%f_compression(i), m%f_tension(i)
+         write (line, '(i4,3es18.4)') i, m%injury%f_shear(i), m%injury%f_compression(i), m%injury%f_tension(i)
          call lst%put(line)
       end do
 
-      call lst%heading('TABLE 1 - CONTACT ARCS', 13)
-      call lst%put('   I  ARC           RADIUS R    RHO''        GAMMA (deg)')
-      do i = 1, n_arc
-         write (line, '(i4,2x,a12,2es12.4,f10.2)') i, arc_name(i), m%r_arc(i), m%rho_arc(i), m%gamma_arc(i)/deg
+      associate (b => m%body)
+         call lst%heading('TABLE 1 - CONTACT ARCS', 13)
+         call lst%put('   I  ARC           RADIUS R    RHO''        GAMMA (deg)')
+         do i = 1, n_arc
+            write (line, '(i4,2x,a12,2es12.4,a)') i, arc_name(i), b%r_arc(i), b%rho_arc(i), fixed(b%gamma_arc(i)/deg, 10, 2)
+            call lst%put(line)
+         end do
+         write (line, '(i4,2x,a12,es12.4)') n_arc + 1, arc_name(n_arc + 1), b%r_arc(n_arc + 1)
          call lst%put(line)
-      end do
-      write (line, '(i4,2x,a12,es12.4)') n_arc + 1, arc_name(n_arc + 1), m%r_arc(n_arc + 1)
-      call lst%put(line)
 
-      call lst%heading('INITIAL CONDITIONS (C.1) AND VEHICLE', 14)
-      call lst%put('   I  SEGMENT        THETA0 (deg)  THETADOT0 (deg/s)')
-      do i = 1, n_seg
-         write (line, '(i4,2x,a12,f12.3,f16.3)') i, segment_name(i), m%theta0(i)/deg, m%theta_dot0(i)/deg
+         call lst%heading('INITIAL CONDITIONS (C.1) AND VEHICLE', 14)
+         call lst%put('   I  SEGMENT        THETA0 (deg)  THETADOT0 (deg/s)')
+         do i = 1, n_seg
+            write (line, '(i4,2x,a12,2a)') i, segment_name(i), fixed(b%theta0(i)/deg, 12, 3), &
+               fixed(b%theta_dot0(i)/deg, 16, 3)
+            call lst%put(line)
+         end do
+      end associate
+      associate (v => m%vehicle)
+         write (line, '(a,es12.4,a,es12.4,a)') '  vehicle mass', v%mass, ' lb*s^2/in   pitch inertia', &
+            v%inertia, ' lb*in*s^2'
          call lst%put(line)
-      end do
-      write (line, '(a,es12.4,a,es12.4,a)') '  vehicle mass', m%vehicle_mass, ' lb*s^2/in   pitch inertia', &
-         m%vehicle_inertia, ' lb*in*s^2'
-      call lst%put(line)
-      write (line, '(a,f10.3,a,f10.3,a,f8.3,a,f9.3,a)') '  XDOT0', m%xc_dot0, ' in/s   YDOT0', m%yc_dot0, &
-         ' in/s   PHI0', m%phi0/deg, ' deg   PHIDOT0', m%phi_dot0/deg, ' deg/s'
-      call lst%put(line)
+         call lst%put('  XDOT0'//fixed(v%xc_dot0, 10, 3)//' in/s   YDOT0'//fixed(v%yc_dot0, 10, 3)//' in/s   PHI0' &
+                      //fixed(v%phi0/deg, 9, 3)//' deg   PHIDOT0'//fixed(v%phi_dot0/deg, 10, 3)//' deg/s')
+      end associate
       call write_pulse(lst, m)
    contains
-      subroutine put_curve(label, d, t)
-         character(len=*), intent(in) :: label
+      subroutine put_curve(prefix, d, t)
+         character(len=*), intent(in) :: prefix
          real(wp), intent(in) :: d(:), t(:)
          integer :: k, j
          do k = 1, size(d), 5
-            write (line, '(a,5(f9.3,a,es10.3))') label, (d(j)/deg, ':', t(j), j=k, min(k + 4, size(d)))
+            line = prefix
+            do j = k, min(k + 4, size(d))
+               line = trim(line)//fixed(d(j)/deg, 10, 3)//':'
+               write (line(len_trim(line) + 1:), '(es10.3)') t(j)
+            end do
             call lst%put(line)
          end do
       end subroutine put_curve
@@ -227,22 +369,25 @@ contains
       type(model_t), intent(in) :: m
       character(len=132) :: line
       integer :: k, n
-      n = size(m%pulse_acc%t)
-      call lst%heading('VEHICLE ACCELERATION TABLE (C.1): '//itoa(n)//' POINTS', min(n, 20) + 2)
-      call lst%put('   M    T_M (s)     XDDOT (g)   YDDOT (g)   PHIDDOT (deg/s^2)')
-      do k = 1, n
-         if (n > 40 .and. k > 20 .and. k < n - 9) then
-            if (k == 21) call lst%put('   ...')
-            cycle
-         end if
-         write (line, '(i5,f12.5,2f12.4,f16.3)') k, m%pulse_acc%t(k), m%pulse_acc%v(k, 1)/g_std, &
-            m%pulse_acc%v(k, 2)/g_std, m%pulse_acc%v(k, 3)/deg
-         call lst%put(line)
-      end do
-      if (allocated(m%pulse_vel%t)) call lst%put('  vehicle rates tabulated for: '//given_axes(m%pulse_vel%given) &
-                                                 //' ('//itoa(size(m%pulse_vel%t))//' points)')
-      if (allocated(m%pulse_pos%t)) call lst%put('  vehicle positions tabulated for: ' &
-                                                 //given_axes(m%pulse_pos%given)//' ('//itoa(size(m%pulse_pos%t))//' points)')
+      associate (v => m%vehicle)
+         n = size(v%pulse_acc%t)
+         call lst%heading('VEHICLE ACCELERATION TABLE (C.1): '//itoa(n)//' POINTS', min(n, 20) + 2)
+         call lst%put('   M    T_M (s)     XDDOT (g)   YDDOT (g)   PHIDDOT (deg/s^2)')
+         do k = 1, n
+            if (n > 40 .and. k > 20 .and. k < n - 9) then
+               if (k == 21) call lst%put('   ...')
+               cycle
+            end if
+            write (line, '(i5,4a)') k, fixed(v%pulse_acc%t(k), 12, 5), fixed(v%pulse_acc%v(k, 1)/g_std, 12, 4), &
+               fixed(v%pulse_acc%v(k, 2)/g_std, 12, 4), fixed(v%pulse_acc%v(k, 3)/deg, 16, 3)
+            call lst%put(line)
+         end do
+         if (allocated(v%pulse_vel%t)) call lst%put('  vehicle rates tabulated for: '//given_axes(v%pulse_vel%given) &
+                                                    //' ('//itoa(size(v%pulse_vel%t))//' points)')
+         if (allocated(v%pulse_pos%t)) call lst%put('  vehicle positions tabulated for: ' &
+                                                    //given_axes(v%pulse_pos%given)//' ('//itoa(size(v%pulse_pos%t)) &
+                                                    //' points)')
+      end associate
    end subroutine write_pulse
 
    function given_axes(given) result(s)
@@ -256,279 +401,193 @@ contains
    end function given_axes
 
    !> C.2: a_1..a_17, the scene, the initial state and accelerations.
-   subroutine write_preliminary(lst, res)
+   subroutine write_preliminary(lst, sys, reg, first)
       type(listing_t), intent(inout) :: lst
-      type(run_result_t), intent(in) :: res
+      type(crash_system_t), intent(in) :: sys
+      type(output_registry_t), intent(in) :: reg
+      type(output_frame_t), intent(in) :: first
       character(len=132) :: line
-      integer :: i, k
+      integer :: i, k, o, iz, izd, izdd, iacc, ien
 
       call lst%new_page('PRELIMINARY CALCULATIONS (C.2)')
-      call lst%heading('BODY MATRIX PARAMETERS A(1)-A(17)', 5)
-      do k = 1, 17, 6
-         write (line, '(6(a,i2,a,es12.5))') ('  a', i, ' =', res%bc%a(i), i=k, min(k + 5, 17))
-         call lst%put(line)
-      end do
-      call lst%heading('EFFECTS THIS SCENE CALLS FOR (C.4)', 8)
-      do k = 1, res%scene%n_effects
-         call lst%put('  '//trim(effect_name(res%scene%effect(k)))//joints_of(res%scene%effect(k)))
-      end do
-      if (res%n_records > 0) then
-         associate (r => res%records(1))
-            call lst%heading('INITIAL STATE AND ACCELERATIONS', 14)
-            call lst%put('  COORDINATE    VALUE         RATE          ACCELERATION   (deg, deg/s, deg/s^2; in, in/s, in/s^2)')
-            do i = 1, 10
-               if (i <= n_seg) then
-                  write (line, '(a,i1,a,3es14.5)') '  alpha', i, '     ', r%z(i)/deg, r%zdot(i)/deg, r%zdd(i)/deg
-               else
-                  write (line, '(a,3es14.5)') merge('  x_h         ', '  y_h         ', i == 9), r%z(i), r%zdot(i), r%zdd(i)
-               end if
+      do o = 1, size(sys%occupants)
+         associate (occ => sys%occupants(o))
+            if (size(sys%occupants) > 1) call lst%put(' '//trim(occ%label))
+            call lst%heading('BODY MATRIX PARAMETERS A(1)-A(17)', 5)
+            do k = 1, 17, 6
+               write (line, '(6(a,i2,a,es12.5))') ('  a', i, ' =', occ%bc%a(i), i=k, min(k + 5, 17))
                call lst%put(line)
             end do
-            write (line, '(a,f10.4,a,f10.4,a)') '  head acceleration', r%head_acc/g_std, ' g   chest acceleration', &
-               r%chest_acc/g_std, ' g'
-            call lst%put(line)
-            write (line, '(a,es13.5,a,es13.5,a)') '  kinetic energy: vehicle', r%ke_vehicle, '   body', sum(r%ke_seg), &
-               ' in*lb'
-            call lst%put(line)
+            call lst%heading('EFFECTS THIS SCENE CALLS FOR (C.4)', size(occ%effects) + 1)
+            do k = 1, size(occ%effects)
+               call lst%put('  '//occ%effects(k)%e%describe())
+            end do
          end associate
-      end if
-   contains
-      function joints_of(kind) result(s)
-         integer, intent(in) :: kind
-         character(len=:), allocatable :: s
-         s = ''
-         select case (kind)
-         case (effect_joint_elastic)
-            s = list(res%scene%elastic_joints)
-         case (effect_joint_friction)
-            s = list(res%scene%friction_joints)
-         case (effect_joint_stops)
-            s = list(res%scene%stop_joints)
-         end select
-      end function joints_of
-      function list(j) result(s)
-         integer, intent(in) :: j(:)
-         character(len=:), allocatable :: s
-         integer :: q
-         s = ': joints'
-         do q = 1, size(j)
-            s = s//' '//itoa(j(q))
+         iz = series_at(reg, 'body/z', o)
+         izd = series_at(reg, 'body/zdot', o)
+         izdd = series_at(reg, 'body/zddot', o)
+         iacc = series_at(reg, 'acceleration', o)
+         ien = series_at(reg, 'energy/summary', o)
+         call lst%heading('INITIAL STATE AND ACCELERATIONS', 14)
+         call lst%put('  COORDINATE    VALUE         RATE          ACCELERATION   (deg, deg/s, deg/s^2; in, in/s, in/s^2)')
+         do i = 1, 10
+            write (line, '(2x,a12,3es14.5)') reg%series(iz)%col(i)%name, (first%v(reg%series(iz)%offset + i) &
+               *reg%series(iz)%col(i)%listing_scale), first%v(reg%series(izd)%offset + i)*reg%series(izd)%col(i)%listing_scale, &
+               first%v(reg%series(izdd)%offset + i)*reg%series(izdd)%col(i)%listing_scale
+            call lst%put(line)
          end do
-      end function list
+         call lst%put('  head acceleration'//fixed(first%v(reg%series(iacc)%offset + 1)/g_std, 10, 4) &
+                      //' g   chest acceleration'//fixed(first%v(reg%series(iacc)%offset + 2)/g_std, 10, 4)//' g')
+         write (line, '(a,es13.5,a,es13.5,a)') '  kinetic energy: vehicle', first%v(reg%series(ien)%offset + 1), &
+            '   body', first%v(reg%series(ien)%offset + 2), ' in*lb'
+         call lst%put(line)
+      end do
    end subroutine write_preliminary
 
-   !> The time-history tables selected by NOUT.
-   subroutine write_histories(lst, m, res)
-      type(listing_t), intent(inout) :: lst
-      type(model_t), intent(in) :: m
-      type(run_result_t), intent(in) :: res
-      integer :: k
-      real(wp) :: v(11)
-
-      call table('ACCELERATIONS (g) AND VEHICLE MOTION', &
-         '      TIME     HEAD G    CHEST G     XC in      YC in   PHI deg  XCDOT in/s YCDOT in/s' &
-         //' PHIDOT d/s XCDDOT g   YCDDOT g  PHIDDOT d/s2', 1)
-      call table('ENERGIES (in*lb)', '      TIME  KE VEHICLE   KE BODY    GRAVITY   JT ELASTIC  JT STOPS' &
-         //'  FRICTION   TOTAL BODY  BAL ERROR', 2)
-      if (m%nout >= 2) then
-         call table('GENERALIZED COORDINATES: ALPHA (deg), HIP (in)', head_z('    '), 3)
-         call table('GENERALIZED VELOCITIES (deg/s, in/s)', head_z('DOT '), 4)
-         call table('GENERALIZED ACCELERATIONS (deg/s^2, in/s^2)', head_z('DDOT'), 5)
-         call table('SEGMENT ANGLES RELATIVE TO THE INTERIOR, THETA = ALPHA + PHI (deg)', &
-            '      TIME   THETA1     THETA2     THETA3     THETA4     THETA5     THETA6     THETA7     THETA8', 6)
-         call table('JOINT ANGLES ALPHA(I) - ALPHA(M) (deg)', &
-            '      TIME   HIP 1-7    LSPINE 2-1 USPINE 3-2 NECK 4-3   SHLDR 5-3  ELBOW 6-5  KNEE 7-8', 7)
-      end if
-      if (m%nout >= 3) then
-         call table('SEGMENT KINETIC ENERGIES (in*lb)', &
-            '      TIME   KE1        KE2        KE3        KE4        KE5        KE6        KE7        KE8', 8)
-         call table('JOINT ELASTIC ENERGY (in*lb)', joint_head(), 9)
-         call table('JOINT STOP ENERGY (in*lb)', joint_head(), 10)
-         call table('JOINT FRICTION WORK DISSIPATED (in*lb)', joint_head(), 11)
-         call table('JOINT POSITIONS RELATIVE TO THE INTERIOR, X (in) (C.4)', joint_head(), 12)
-         call table('JOINT POSITIONS RELATIVE TO THE INTERIOR, Y (in) (C.4)', joint_head(), 13)
-      end if
-   contains
-      subroutine table(title, head, which)
-         character(len=*), intent(in) :: title, head
-         integer, intent(in) :: which
-         character(len=132) :: line
-         integer :: nv
-         call lst%new_page('TIME HISTORIES (C.6)')
-         call lst%heading(title, 4)
-         call lst%put(head)
-         do k = 1, res%n_records
-            call values_of(res%records(k), which, v, nv)
-            write (line, fmt_row) res%records(k)%t, v(1:nv)
-            call lst%put(line)
-            if (lst%line == 3) then   ! a new page: repeat the column heads
-               call lst%put(' '//title//' (continued)')
-               call lst%put(head)
-            end if
-         end do
-      end subroutine table
-
-      function head_z(suffix) result(h)
-         character(len=*), intent(in) :: suffix
-         character(len=:), allocatable :: h
-         integer :: i
-         h = '      TIME'
-         do i = 1, n_seg
-            h = h//'  A'//itoa(i)//suffix//'    '
-         end do
-         h = h//'  XH'//suffix//'     YH'//suffix
-      end function head_z
-
-      function joint_head() result(h)
-         character(len=:), allocatable :: h
-         h = '      TIME   HIP        LSPINE     USPINE     NECK       SHOULDER   ELBOW      KNEE'
-      end function joint_head
-   end subroutine write_histories
-
-   !> The values of table `which` in listing units.
-   subroutine values_of(r, which, v, nv)
-      type(output_record_t), intent(in) :: r
-      integer, intent(in) :: which
-      real(wp), intent(out) :: v(11)
-      integer, intent(out) :: nv
-      v = 0.0_wp
-      select case (which)
-      case (1)
-         v = [r%head_acc/g_std, r%chest_acc/g_std, r%veh_pos(1), r%veh_pos(2), r%veh_pos(3)/deg, &
-              r%veh_vel(1), r%veh_vel(2), r%veh_vel(3)/deg, r%veh_acc(1)/g_std, r%veh_acc(2)/g_std, &
-              r%veh_acc(3)/deg]
-         nv = 11
-      case (2)
-         v(1:8) = [r%ke_vehicle, sum(r%ke_seg), sum(r%pe_gravity), sum(r%e_spring), sum(r%e_stop), &
-                   sum(r%w_friction), r%e_total, r%e_error]
-         nv = 8
-      case (3)
-         v(1:10) = [r%z(1:n_seg)/deg, r%z(9:10)]
-         nv = 10
-      case (4)
-         v(1:10) = [r%zdot(1:n_seg)/deg, r%zdot(9:10)]
-         nv = 10
-      case (5)
-         v(1:10) = [r%zdd(1:n_seg)/deg, r%zdd(9:10)]
-         nv = 10
-      case (6)
-         v(1:8) = r%theta/deg
-         nv = 8
-      case (7)
-         v(1:7) = r%joint_angle/deg
-         nv = 7
-      case (8)
-         v(1:8) = r%ke_seg
-         nv = 8
-      case (9)
-         v(1:7) = r%e_spring
-         nv = 7
-      case (10)
-         v(1:7) = r%e_stop
-         nv = 7
-      case (11)
-         v(1:7) = r%w_friction
-         nv = 7
-      case (12)
-         v(1:7) = r%joint_x
-         nv = 7
-      case default
-         v(1:7) = r%joint_y
-         nv = 7
-      end select
-   end subroutine values_of
+   !> The series name (of occupant o) in the registry.
+   pure integer function series_at(reg, name, o) result(k)
+      type(output_registry_t), intent(in) :: reg
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: o
+      do k = 1, size(reg%series)
+         if (reg%series(k)%occupant /= o) cycle
+         associate (n => reg%series(k)%name)
+            if (len(n) < len(name)) cycle
+            if (n(len(n) - len(name) + 1:) == name) return
+         end associate
+      end do
+      k = 1
+   end function series_at
 
    !> Maxima and when, injuries, why the run ended, energy balance, cost.
-   subroutine write_summary(lst, m, res)
+   subroutine write_summary(lst, m, reg, res)
       type(listing_t), intent(inout) :: lst
       type(model_t), intent(in) :: m
-      type(run_result_t), intent(in) :: res
+      type(output_registry_t), intent(in) :: reg
+      type(run_summary_t), intent(in) :: res
       character(len=132) :: line
-      integer :: i
-      real(wp) :: ke_max
-      real(wp), parameter :: round_off = 1.0e-12_wp
+      integer :: i, o, k
 
       call lst%new_page('SUMMARY (C.6, C.7)')
       call lst%heading('END OF RUN', 3)
-      write (line, '(a,f10.5,a)') '  ended at t =', res%t_end, ' s: '//end_reason_text(res%end_reason)
-      call lst%put(line)
-      if (res%end_reason == end_failure) call lst%put('  '//res%failure)
+      call lst%put('  ended at t ='//fixed(res%t_end, 10, 5)//' s: '//end_reason_text(res%end_reason))
+      if (res%end_reason == end_failure .or. res%end_reason == end_energy) call put_wrapped(lst, '  ', res%failure)
 
-      call lst%heading('MAXIMA OVER ALL ACCEPTED STEPS', 4)
-      write (line, '(a,f10.3,a,f10.5,a)') '  head acceleration  ', res%head_max%value/g_std, ' g   at t =', &
-         res%head_max%t, ' s'
-      call lst%put(line)
-      write (line, '(a,f10.3,a,f10.5,a)') '  chest acceleration ', res%chest_max%value/g_std, ' g   at t =', &
-         res%chest_max%t, ' s'
-      call lst%put(line)
+      do o = 1, size(res%occ)
+         associate (os => res%occ(o))
+            call lst%heading('MAXIMA OVER ALL ACCEPTED STEPS', 4)
+            call lst%put('  head acceleration  '//fixed(os%head_max%value/g_std, 10, 3)//' g   at t ='// &
+                         fixed(os%head_max%t, 10, 5)//' s')
+            call lst%put('  chest acceleration '//fixed(os%chest_max%value/g_std, 10, 3)//' g   at t ='// &
+                         fixed(os%chest_max%t, 10, 5)//' s')
 
-      call lst%heading('JOINT ANGLE RANGES, ALPHA(I) - ALPHA(M) (deg)', 10)
-      call lst%put('   I  JOINT          MINIMUM   AT t (s)    MAXIMUM   AT t (s)    STOPS            DISLOCATION')
-      do i = 1, n_joint
-         associate (r => m%restraint(i))
-            write (line, '(i4,2x,a12,2(f10.3,f11.5),2x,2f8.2,1x,2f8.2)') i, joint_name(i), &
-               res%joint_min(i)%value/deg, res%joint_min(i)%t, res%joint_max(i)%value/deg, res%joint_max(i)%t, &
-               r%lower/deg, r%upper/deg, r%dislocation_lower/deg, r%dislocation_upper/deg
+            call lst%heading('JOINT ANGLE RANGES, ALPHA(I) - ALPHA(M) (deg)', 10)
+            call lst%put('   I  JOINT          MINIMUM   AT t (s)    MAXIMUM   AT t (s)    STOPS            DISLOCATION')
+            do i = 1, n_joint
+               associate (r => m%joints%restraint(i))
+                  write (line, '(i4,2x,a12,10a)') i, joint_name(i), fixed(os%joint_min(i)%value/deg, 10, 3), &
+                     fixed(os%joint_min(i)%t, 11, 5), fixed(os%joint_max(i)%value/deg, 10, 3), &
+                     fixed(os%joint_max(i)%t, 11, 5), '  ', fixed(r%lower/deg, 8, 2), fixed(r%upper/deg, 8, 2), ' ', &
+                     fixed(r%dislocation_lower/deg, 8, 2), fixed(r%dislocation_upper/deg, 8, 2)
+               end associate
+               call lst%put(line)
+            end do
          end associate
-         call lst%put(line)
       end do
 
       call lst%heading('INJURY EVENTS (C.4.c FIGURE 10)', 3)
       if (res%n_events == 0) call lst%put('  none')
       do i = 1, res%n_events
          associate (e => res%events(i))
-            write (line, '(a,f10.5,a,a12,a,a,f9.3,a,f9.3,a)') '  t =', e%t, ' s  joint ', joint_name(e%index), &
-               '  '//trim(event_kind_name(e%kind)), ': angle', e%value/deg, ' deg, limit', e%limit/deg, ' deg'
+            call lst%put('  t ='//fixed(e%t, 10, 5)//' s  joint '//joint_name(e%index)//'  ' &
+                         //trim(event_kind_name(e%kind))//': angle'//fixed(e%value/deg, 9, 3)//' deg, limit' &
+                         //fixed(e%limit/deg, 9, 3)//' deg')
          end associate
-         call lst%put(line)
       end do
 
-      call lst%heading('ENERGY BALANCE (BODY: KINETIC + GRAVITY + JOINTS + FRICTION WORK)', 4)
-      ke_max = 0.0_wp
-      do i = 1, res%n_records
-         ke_max = max(ke_max, sum(res%records(i)%ke_seg))
+      do o = 1, size(res%occ)
+         associate (os => res%occ(o))
+            call lst%heading('ENERGY BALANCE (BODY KINETIC + STORED + DISSIPATED - SUPPLIED, AT PRINT TIMES)', 6)
+            write (line, '(a,es13.5,a)') '  initial body energy     ', os%e_total0, ' in*lb'
+            call lst%put(line)
+            write (line, '(a,es13.5,a)') '  final balance error     ', os%e_error_final, ' in*lb'
+            call lst%put(line)
+            ! an error at the level of rounding has no meaningful time: say so,
+            ! so that listings from different builds compare equal
+            if (abs(os%energy_error_max%value) <= 1.0e-12_wp*max(1.0_wp, os%ke_max)) then
+               call lst%put('  largest balance error    below 1.0E-12 of the largest body kinetic energy (rounding)')
+            else
+               write (line, '(a,es13.5,a,a,a,es10.3,a)') '  largest balance error   ', os%energy_error_max%value, &
+                  ' in*lb at t =', fixed(os%energy_error_max%t, 10, 5), ' s (', &
+                  abs(os%energy_error_max%value)/max(os%ke_max, tiny(1.0_wp)), ' of the largest body kinetic energy)'
+               call lst%put(line)
+            end if
+            write (line, '(a,es10.3,a)') '  tolerance (EBTOL)        ', m%numerics%energy_tol, &
+               ' of the largest body kinetic energy'
+            call lst%put(line)
+            if (os%energy_flagged) then
+               call lst%put('  *** THE ENERGY BALANCE FAILED at t ='//fixed(os%t_flagged, 10, 5)//' s: the results are ' &
+                            //'not trustworthy ***')
+            else
+               call lst%put('  within tolerance')
+            end if
+         end associate
       end do
-      write (line, '(a,es13.5,a)') '  initial body energy     ', res%e_total0, ' in*lb'
-      call lst%put(line)
-      if (res%n_records > 0) then
-         write (line, '(a,es13.5,a)') '  final balance error     ', res%records(res%n_records)%e_error, ' in*lb'
-         call lst%put(line)
-      end if
-      ! an error at the level of rounding has no meaningful time: say so,
-      ! so that listings from different builds compare equal
-      if (abs(res%energy_error_max%value) <= round_off*max(1.0_wp, ke_max)) then
-         write (line, '(a,es9.1,a)') '  largest balance error    below', round_off, &
-            ' of the largest body kinetic energy (rounding)'
-      else
-         write (line, '(a,es13.5,a,f10.5,a,es10.3,a)') '  largest balance error   ', res%energy_error_max%value, &
-            ' in*lb at t =', res%energy_error_max%t, ' s (', &
-            abs(res%energy_error_max%value)/max(ke_max, tiny(1.0_wp)), &
-            ' of the largest body kinetic energy)'
-      end if
-      call lst%put(line)
 
-      call lst%heading('INTEGRATION (C.3): '//trim(integrator_name(m%nint)), 10)
-      write (line, '(a,i12)') '  accepted steps             ', res%stats%steps
-      call lst%put(line)
-      write (line, '(a,i12)') '  rejected steps             ', res%stats%rejected
-      call lst%put(line)
-      write (line, '(a,i12)') '  right-hand-side evaluations', res%stats%evaluations
-      call lst%put(line)
-      if (m%nint == 1) then
-         write (line, '(a,i12)') '  corrector iterations       ', res%stats%corrector_iterations
-         call lst%put(line)
-         write (line, '(a,i12)') '  steps at the iteration limit', res%stats%corrector_at_limit
-         call lst%put(line)
-      end if
-      if (res%stats%steps > 0) then
-         write (line, '(a,es12.4,a,es12.4,a)') '  step size from          ', res%stats%h_min, ' to', &
-            res%stats%h_max, ' s'
-         call lst%put(line)
-      end if
+      associate (st => res%stats)
+         call lst%heading('INTEGRATION (C.3): '//trim(integrator_name(m%options%nint)), 12)
+         call count_line('  accepted steps             ', st%steps)
+         call count_line('  rejected steps             ', st%rejected)
+         call count_line('  right-hand-side evaluations', st%evaluations)
+         call count_line('  restarts after a jump      ', st%restarts)
+         if (m%options%nint == nint_adams) then
+            call count_line('  corrector iterations       ', st%corrector_iterations)
+            call count_line('  steps at the iteration limit', st%corrector_at_limit)
+         end if
+         if (st%steps > 0) then
+            write (line, '(a,es12.4,a,es12.4,a)') '  step size from          ', st%h_min, ' to', st%h_max, ' s'
+            call lst%put(line)
+         end if
+      end associate
       call lst%put('  evaluations of each effect:')
-      do i = 1, n_effect_kinds
-         write (line, '(4x,a20,i12)') effect_name(i), res%counts%evaluations(i)
-         call lst%put(line)
+      associate (unused => reg%n_values)
+      end associate
+      do o = 1, size(res%occ)
+         do k = 1, size(res%counts, 1)
+            if (res%effect_titles(k, o) == ' ') cycle
+            write (line, '(4x,a,i12)') effect_label(o, k), res%counts(k, o)
+            call lst%put(line)
+         end do
       end do
+   contains
+      subroutine count_line(text, n)
+         character(len=*), intent(in) :: text
+         integer(i8), intent(in) :: n
+         write (line, '(a,i12)') text, n
+         call lst%put(line)
+      end subroutine count_line
+      function effect_label(occupant, k) result(s)
+         integer, intent(in) :: occupant, k
+         character(len=40) :: s
+         s = res%effect_titles(k, occupant)
+      end function effect_label
    end subroutine write_summary
+
+   !> A long text over several lines of at most 130 columns.
+   subroutine put_wrapped(lst, indent, text)
+      type(listing_t), intent(inout) :: lst
+      character(len=*), intent(in) :: indent, text
+      integer :: start, cut, width
+      width = 130 - len(indent)
+      start = 1
+      do while (start <= len(text))
+         cut = min(len(text), start + width - 1)
+         if (cut < len(text)) then
+            cut = start - 1 + index(text(start:cut), ' ', back=.true.)
+            if (cut < start) cut = min(len(text), start + width - 1)
+         end if
+         call lst%put(indent//text(start:cut))
+         start = cut + 1
+      end do
+   end subroutine put_wrapped
 end module run_report

@@ -11,15 +11,31 @@ module run_case_mod
    use default_deck, only: default_deck_lines
    use model_builder, only: build_model
    use model, only: model_t
-   use simulation, only: run_result_t, run_simulation
-   use listing, only: listing_t
-   use run_report, only: write_listing
+   use simulation, only: run_simulation
+   use run_summary, only: run_summary_t
+   use output_registry, only: output_registry_t, output_frame_t
+   use output_sink, only: output_sink_t
+   use equations_of_motion, only: crash_system_t
+   use effect_base, only: event_t
+   use run_report, only: listing_sink_t, listing_sink_start
    use history_sink, only: history_sink_t, history_sink_open
    use version_info, only: hsri2d_version
    implicit none
    private
 
    public :: run_request_t, run_case, read_case_deck, builtin_deck_name
+
+   !> The outputs of a case: the listing, and the HDF5 file when asked for.
+   type, extends(output_sink_t) :: case_sink_t
+      type(listing_sink_t) :: listing
+      type(history_sink_t) :: h5
+      logical :: with_h5 = .false.
+   contains
+      procedure :: begin => case_begin
+      procedure :: record => case_record
+      procedure :: event => case_event
+      procedure :: finish => case_finish
+   end type case_sink_t
 
    !> The name that stands for the built-in default deck.
    character(len=*), parameter :: builtin_deck_name = '@default'
@@ -61,22 +77,23 @@ contains
    !> Run one case: read the decks, simulate (C.2-C.7), write the listing
    !! and the HDF5 file. err says what went wrong, its code being the exit
    !! status (docs/usage.md); a numerical failure still writes both outputs
-   !! up to the failure.
-   subroutine run_case(req, err, result)
+   !! up to the failure. warnings: what the user should know that is not an
+   !! error (the listing shows them too).
+   subroutine run_case(req, err, summary, warnings)
       type(run_request_t), intent(in) :: req
       type(error_t), intent(inout) :: err
-      type(run_result_t), intent(out), optional :: result
+      type(run_summary_t), intent(out), optional :: summary
+      type(string_t), allocatable, intent(out), optional :: warnings(:)
       type(deck_t) :: deck
       type(model_t) :: m
-      type(run_result_t) :: res
+      type(run_summary_t) :: res
       type(error_t) :: run_err, io_err
-      type(listing_t) :: lst
-      type(history_sink_t) :: h5
+      type(case_sink_t) :: sink
       integer :: unit, ios
       character(len=256) :: msg
-      logical :: with_h5
 
       call read_case_deck(req, deck, m, err)
+      if (present(warnings) .and. allocated(m%warnings)) warnings = m%warnings
       if (err%failed() .or. req%check_only) return
 
       unit = req%listing_unit
@@ -87,27 +104,61 @@ contains
             return
          end if
       end if
-      with_h5 = len(req%h5_file) > 0
-      if (with_h5) then
-         call history_sink_open(h5, req%h5_file, m%title, deck_text(deck), err)
+      sink%with_h5 = len(req%h5_file) > 0
+      if (sink%with_h5) then
+         call history_sink_open(sink%h5, req%h5_file, m%title, deck_text(deck), err)
          if (err%failed()) return
-         call run_simulation(m, res, run_err, h5)
-      else
-         call run_simulation(m, res, run_err)
       end if
-      call lst%start(unit, 'HSRI-2D '//hsri2d_version, m%title)
-      call write_listing(lst, deck, m, res, hsri2d_version)
-      if (with_h5) call h5%close(io_err)
-      if (lst%io_status /= 0) call error_set(io_err, exit_io, 'cannot write the listing (error ' &
-                                             //itoa(lst%io_status)//')')
+      call listing_sink_start(sink%listing, unit, deck, m, hsri2d_version)
+      call run_simulation(m, res, run_err, sink)
+      if (sink%with_h5) call sink%h5%close(io_err)
+      if (sink%listing%lst%io_status /= 0) call error_set(io_err, exit_io, 'cannot write the listing (error ' &
+                                                          //itoa(sink%listing%lst%io_status)//')')
       if (unit /= req%listing_unit) close (unit)
       if (run_err%failed()) then
          call error_set(err, run_err%code, run_err%message)
       else if (io_err%failed()) then
          call error_set(err, io_err%code, io_err%message)
       end if
-      if (present(result)) result = res
+      if (present(summary)) summary = res
    end subroutine run_case
+
+   subroutine case_begin(this, sys, reg, first, err)
+      class(case_sink_t), intent(inout) :: this
+      type(crash_system_t), intent(in) :: sys
+      type(output_registry_t), intent(in) :: reg
+      type(output_frame_t), intent(in) :: first
+      type(error_t), intent(inout) :: err
+      call this%listing%begin(sys, reg, first, err)
+      if (this%with_h5) call this%h5%begin(sys, reg, first, err)
+   end subroutine case_begin
+
+   subroutine case_record(this, frame, err)
+      class(case_sink_t), intent(inout) :: this
+      type(output_frame_t), intent(in) :: frame
+      type(error_t), intent(inout) :: err
+      call this%listing%record(frame, err)
+      if (this%with_h5) call this%h5%record(frame, err)
+   end subroutine case_record
+
+   subroutine case_event(this, e, err)
+      class(case_sink_t), intent(inout) :: this
+      type(event_t), intent(in) :: e
+      type(error_t), intent(inout) :: err
+      call this%listing%event(e, err)
+      if (this%with_h5) call this%h5%event(e, err)
+   end subroutine case_event
+
+   !> The listing's summary is written even when the HDF5 file failed.
+   subroutine case_finish(this, summary, err)
+      class(case_sink_t), intent(inout) :: this
+      type(run_summary_t), intent(in) :: summary
+      type(error_t), intent(inout) :: err
+      type(error_t) :: listing_err
+      call this%listing%finish(summary, listing_err)
+      if (this%with_h5) call this%h5%finish(summary, err)
+      if (listing_err%failed() .and. .not. err%failed()) err = listing_err
+   end subroutine case_finish
 
    !> The deck's card images, for the HDF5 file.
    function deck_text(d) result(lines)

@@ -1,152 +1,124 @@
-!> The driver of one run (report figure 6): preliminary calculations (C.2),
-!! scene assembly, then the loop integrate (C.3) -> forces (C.4) -> solve
+!> The driver of one run (report figure 6): preliminary calculations (C.2)
+!! and the scene, then the loop integrate (C.3) -> forces (C.4) -> solve
 !! (C.5), with output (C.6) and the end tests (C.7) after each accepted
-!! step. Everything with memory - maxima, dislocated joints, the rest timer
-!! - is updated here, on accepted steps only; the integrators' trial
-!! evaluations change nothing.
+!! step. Everything with memory - the effects' memory, maxima, the rest
+!! timer - changes here, on accepted steps only; when an effect's memory
+!! makes the right-hand side jump, the stepper restarts.
 module simulation
    use kinds, only: wp, i8
    use error_handling, only: error_t, error_set, exit_numerical
    use strings, only: num
-   use model, only: model_t, n_dof, n_seg, n_joint, joint_partner, nint_adams, nint_rk4, nint_dopri, &
-      nend_rest
-   use preliminary, only: body_constants_t, body_constants, initial_state
-   use generalized_forces, only: scene_t, force_counts_t, scene_assemble
-   use equations_of_motion, only: body_system_t, body_system_init, state_size, rhs_status_text
-   use ode_system, only: stepper_t, step_stats_t, step_ok, step_rhs_failed, step_status_text
+   use model, only: model_t, n_dof, n_joint, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
+   use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state, &
+      rhs_status_text, rhs_diverged
+   use ode_system, only: stepper_t, step_ok, step_rhs_failed, step_status_text
    use runge_kutta4, only: rk4_stepper_t
-   use adams_moulton, only: am_stepper_t
+   use adams_moulton, only: am_stepper_t, am_start_euler, am_start_rk4
    use dormand_prince, only: dopri_stepper_t
-   use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init, vehicle_state_at, vehicle_state_t
-   use body_kinematics, only: segment_cg_state, point_state_t
-   use output_calc, only: output_record_t, output_compute, head_chest_acceleration
+   use effect_base, only: body_state_t, accept_result_t
+   use joint_coupling, only: relative_angle
+   use output_calc, only: head_chest_acceleration
+   use output_registry, only: output_registry_t, output_frame_t
+   use output_producers, only: registry_build, frame_fill, frame_energy, energy_balance_t
    use output_sink, only: output_sink_t
-   use joint_injury, only: injury_event_t, dislocation_check
-   use end_tests, only: end_state_t, end_none, end_time, end_failure, end_test_update, body_at_rest
+   use run_summary, only: run_summary_t, occupant_summary_t, extreme_t, raise, lower, summary_add_event
+   use end_tests, only: end_state_t, end_none, end_time, end_failure, end_energy, end_test_update, body_at_rest
    implicit none
    private
 
-   public :: run_result_t, extreme_t, run_simulation
+   public :: run_simulation, run_system
 
-   !> A running extreme and when it happened.
-   type :: extreme_t
-      real(wp) :: value = 0.0_wp
-      real(wp) :: t = 0.0_wp
-   end type extreme_t
-
-   !> What a run produced.
-   type :: run_result_t
-      integer :: end_reason = end_none
-      character(len=:), allocatable :: failure
-      real(wp) :: t_end = 0.0_wp
-      type(body_constants_t) :: bc
-      type(scene_t) :: scene
-      type(output_record_t), allocatable :: records(:)
-      integer :: n_records = 0
-      type(injury_event_t), allocatable :: events(:)
-      integer :: n_events = 0
-      type(step_stats_t) :: stats
-      type(force_counts_t) :: counts
-      integer(i8) :: evaluations = 0
-      type(extreme_t) :: head_max, chest_max, energy_error_max
-      type(extreme_t) :: joint_min(n_joint), joint_max(n_joint)
-      real(wp) :: e_total0 = 0.0_wp
-   end type run_result_t
+   !> A balance error below this fraction of the largest kinetic energy is rounding.
+   real(wp), parameter :: rounding = 1.0e-9_wp
 
 contains
 
    !> Run the model. A numerical failure ends the run with everything
-   !! computed so far kept in res, res%end_reason = end_failure and err set
-   !! (exit_numerical). sink, when present, receives records and events as
-   !! they are made; an error it reports stops the run.
-   subroutine run_simulation(m, res, err, sink)
+   !! computed so far kept, summary%end_reason = end_failure (or end_energy)
+   !! and err set (exit_numerical). sink, when present, receives the frames
+   !! and events as they are made; an error it reports stops the run.
+   subroutine run_simulation(m, summary, err, sink)
       type(model_t), intent(in) :: m
-      type(run_result_t), intent(out) :: res
+      type(run_summary_t), intent(out) :: summary
       type(error_t), intent(inout) :: err
       class(output_sink_t), intent(inout), optional :: sink
-      type(body_system_t) :: sys
+      type(crash_system_t) :: sys
+      call system_build(m, sys)
+      if (present(sink)) then
+         call run_system(m, sys, summary, err, sink)
+      else
+         call run_system(m, sys, summary, err)
+      end if
+   end subroutine run_simulation
+
+   !> Run an assembled system (its occupants may come from several models;
+   !! m gives the time controls, options and the vehicle).
+   subroutine run_system(m, sys, summary, err, sink)
+      type(model_t), intent(in) :: m
+      type(crash_system_t), intent(inout) :: sys
+      type(run_summary_t), intent(out) :: summary
+      type(error_t), intent(inout) :: err
+      class(output_sink_t), intent(inout), optional :: sink
+      type(error_t) :: out_err       ! what the sinks report: ends the run too
       class(stepper_t), allocatable :: stepper
-      type(vehicle_motion_t) :: vm
       type(end_state_t) :: end_state
-      real(wp), allocatable :: y(:)
-      real(wp) :: z0(n_dof), zdot0(n_dof), y_cg0(n_seg), t, t_limit
-      logical :: dislocated(n_joint), fixed_step, print_now
-      integer :: status, reason, i
+      type(output_registry_t) :: reg
+      type(output_frame_t) :: frame
+      real(wp), allocatable :: y(:), total0(:)
+      real(wp) :: t, t_limit, t_frame
+      logical :: fixed_step, print_now
+      integer :: status, reason, o, i, n_occ
       integer(i8) :: n, n_steps, print_every, next_print
-      type(point_state_t) :: p
+      type(body_state_t) :: st
 
-      ! C.2 preliminary calculations and the scene, once
-      res%bc = body_constants(m)
-      call initial_state(m, z0, zdot0)
-      call scene_assemble(m, z0, res%scene)
-      call body_system_init(sys, m, res%bc, res%scene)
-      call vehicle_motion_init(m, vm)
-      do i = 1, n_seg
-         p = segment_cg_state(m, z0, zdot0, [(0.0_wp, n=1, n_dof)], i)
-         y_cg0(i) = p%y
-      end do
-      allocate (y(state_size(res%scene)))
-      y = 0.0_wp
-      y(1:n_dof) = z0
-      y(n_dof + 1:2*n_dof) = zdot0
-      allocate (res%records(64), res%events(8))
-      dislocated = .false.
-      do i = 1, n_joint
-         res%joint_min(i) = extreme_t(z0(i) - z0(joint_partner(i)), 0.0_wp)
-         res%joint_max(i) = res%joint_min(i)
-      end do
-
-      select case (m%nint)
-      case (nint_adams)
-         allocate (am_stepper_t :: stepper)
-      case (nint_dopri)
-         allocate (dopri_stepper_t :: stepper)
-      case default
-         allocate (rk4_stepper_t :: stepper)
-      end select
-      select type (s => stepper)
-      type is (am_stepper_t)
-         s%h = m%dt
-         s%tol = m%corrector_tol
-         s%max_iter = m%corrector_max_iter
-      type is (rk4_stepper_t)
-         s%h = m%dt
-      type is (dopri_stepper_t)
-         s%h = m%dt
-         s%rtol = m%rtol
-         s%atol = m%atol
-      end select
-      fixed_step = m%nint == nint_adams .or. m%nint == nint_rk4
+      n_occ = size(sys%occupants)
+      allocate (summary%occ(n_occ), total0(n_occ))
+      call system_initial_y(sys, y)
+      call choose_stepper(m, stepper)
+      fixed_step = m%options%nint == nint_adams .or. m%options%nint == nint_rk4
 
       t = 0.0_wp
       call stepper%init(sys, t, y, status)
       if (status /= step_ok) then
-         call fail(stepper, t, status)
+         call fail(status)
          call finish()
          return
       end if
-      ! initial output: C.2's initial energies and accelerations
-      res%e_total0 = 0.0_wp
-      call make_record(t, .true.)
-      if (err%failed()) return
+      ! C.2's initial outputs: the energy totals the balance is measured from
+      do o = 1, n_occ
+         st = system_body_state(sys, o, t, y)
+         associate (eb => frame_energy(sys%occupants(o), st, y, 0.0_wp))
+            total0(o) = eb%total
+         end associate
+         summary%occ(o)%e_total0 = total0(o)
+         do i = 1, n_joint
+            summary%occ(o)%joint_min(i) = extreme_t(relative_angle(st%z, i), 0.0_wp)
+            summary%occ(o)%joint_max(i) = summary%occ(o)%joint_min(i)
+         end do
+      end do
+      call registry_build(sys, reg)
+      call make_frame(t)
+      if (present(sink)) call sink%begin(sys, reg, frame, out_err)
+      if (present(sink) .and. .not. out_err%failed()) call sink%record(frame, out_err)
+      reason = end_none
       call on_accepted(t, reason)
 
-      n_steps = nint(m%t_max/m%dt, i8)
-      print_every = max(1_i8, nint(m%dt_print/m%dt, i8))
+      n_steps = nint(m%time%t_max/m%time%dt, i8)
+      print_every = max(1_i8, nint(m%time%dt_print/m%time%dt, i8))
       next_print = 1
       n = 0
-      reason = end_none
-      do while (reason == end_none)
+      t_frame = 0.0_wp
+      do while (reason == end_none .and. .not. out_err%failed())
          if (fixed_step) then
             t_limit = huge(1.0_wp)
          else
-            t_limit = min(real(next_print, wp)*m%dt_print, m%t_max)
+            t_limit = min(real(next_print, wp)*m%time%dt_print, m%time%t_max)
          end if
          call stepper%advance(sys, t, y, t_limit, status)
          if (status /= step_ok) then
             ! keep the last accepted state in the output, then stop
-            if (res%records(res%n_records)%t < t) call make_record(t, .false.)
-            call fail(stepper, t, status)
+            if (t > t_frame) call output_frame(t)
+            call fail(status)
             exit
          end if
          n = n + 1
@@ -157,111 +129,175 @@ contains
          else
             print_now = t >= t_limit
             if (print_now) next_print = next_print + 1
-            if (t >= m%t_max .and. reason == end_none) reason = end_time
+            if (t >= m%time%t_max .and. reason == end_none) reason = end_time
          end if
-         if (print_now .or. reason /= end_none) call make_record(t, .false.)
-         if (err%failed()) exit
+         if (print_now .or. reason /= end_none) call output_frame(t)
+         if (summary%end_reason == end_energy) reason = end_energy
       end do
-      if (reason /= end_none) res%end_reason = reason
+      if (reason /= end_none .and. summary%end_reason == end_none) summary%end_reason = reason
       call finish()
+      if (out_err%failed() .and. .not. err%failed()) call error_set(err, out_err%code, out_err%message)
 
    contains
 
       subroutine finish()
-         res%t_end = t
-         res%stats = stepper%stats
-         res%counts = sys%counts
-         res%evaluations = sys%evaluations
+         summary%t_end = t
+         summary%stats = stepper%stats
+         summary%counts = sys%counts
+         allocate (summary%effect_names(size(sys%counts, 1), n_occ), summary%effect_titles(size(sys%counts, 1), n_occ))
+         summary%effect_names = ' '
+         summary%effect_titles = ' '
+         do o = 1, n_occ
+            do i = 1, size(sys%occupants(o)%effects)
+               summary%effect_names(i, o) = sys%occupants(o)%effects(i)%e%name
+               summary%effect_titles(i, o) = sys%occupants(o)%effects(i)%e%title
+            end do
+         end do
+         summary%evaluations = sys%evaluations
+         if (present(sink)) call sink%finish(summary, out_err)
       end subroutine finish
 
-      !> Memory updates after an accepted step (design.md, rule 1).
+      !> Memory updates after an accepted step (docs/architecture.md, rule 1):
+      !! the effects' accept, maxima, the end tests; a restart of the
+      !! stepper when an effect's memory made the right-hand side jump.
       subroutine on_accepted(t_now, reason_out)
          real(wp), intent(in) :: t_now
          integer, intent(out) :: reason_out
+         type(accept_result_t) :: ar
          real(wp) :: a_head, a_chest, delta
-         type(injury_event_t) :: new_events(n_joint)
-         integer :: n_new, k
-         logical :: at_rest
-         type(vehicle_state_t) :: vs
+         integer :: k, q, occ_i, xo, ao, restart_status
+         logical :: at_rest, injured, restart
 
-         associate (z => y(1:n_dof), zdot => y(n_dof + 1:2*n_dof), zdd => stepper%f(n_dof + 1:2*n_dof))
-            call head_chest_acceleration(m, z, zdot, zdd, a_head, a_chest)
-            call raise(res%head_max, a_head, t_now)
-            call raise(res%chest_max, a_chest, t_now)
-            do k = 1, n_joint
-               delta = z(k) - z(joint_partner(k))
-               if (delta < res%joint_min(k)%value) res%joint_min(k) = extreme_t(delta, t_now)
-               if (delta > res%joint_max(k)%value) res%joint_max(k) = extreme_t(delta, t_now)
-            end do
-            call dislocation_check(m, t_now, z, dislocated, new_events, n_new)
-            do k = 1, n_new
-               call add_event(new_events(k))
-            end do
-            at_rest = .false.
-            if (m%nend == nend_rest) then
-               vs = vehicle_state_at(vm, t_now)
-               at_rest = body_at_rest(m, z, zdot, vs)
+         restart = .false.
+         injured = .false.
+         at_rest = .true.
+         do occ_i = 1, n_occ
+            associate (occ => sys%occupants(occ_i), os => summary%occ(occ_i))
+               st = system_body_state(sys, occ_i, t_now, y)
+               do k = 1, size(occ%effects)
+                  ar%restart = .false.
+                  ar%n_events = 0
+                  xo = occ%extra_offset(k)
+                  ao = occ%aux_offset(k)
+                  associate (e => occ%effects(k)%e)
+                     call e%accept(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), ar)
+                  end associate
+                  restart = restart .or. ar%restart
+                  do q = 1, ar%n_events
+                     ar%events(q)%occupant = occ_i
+                     injured = injured .or. ar%events(q)%injury
+                     call summary_add_event(summary, ar%events(q))
+                     if (present(sink) .and. .not. out_err%failed()) call sink%event(ar%events(q), out_err)
+                  end do
+               end do
+               call head_chest_acceleration(occ%body, st%z, st%zdot, &
+                                            stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), a_head, a_chest)
+               call raise(os%head_max, a_head, t_now)
+               call raise(os%chest_max, a_chest, t_now)
+               do k = 1, n_joint
+                  delta = relative_angle(st%z, k)
+                  call lower(os%joint_min(k), delta, t_now)
+                  call raise(os%joint_max(k), delta, t_now)
+               end do
+               if (m%options%nend == nend_rest) at_rest = at_rest .and. body_at_rest(occ%body, m%end_tests, st%z, &
+                                                                                   st%zdot, st%vehicle)
+            end associate
+         end do
+         if (summary%n_events > 0) injured = injured .or. any(summary%events(1:summary%n_events)%injury)
+         call end_test_update(m%options%nend, m%end_tests, end_state, t_now, injured, &
+                              m%options%nend == nend_rest .and. at_rest, reason_out)
+         if (restart .and. reason_out == end_none) then
+            call stepper%restart(sys, t_now, y, restart_status)
+            if (restart_status /= step_ok) then
+               call fail(restart_status)
+               reason_out = end_failure
             end if
-         end associate
-         call end_test_update(m, end_state, t_now, res%n_events > 0, at_rest, reason_out)
+         end if
       end subroutine on_accepted
 
-      !> An output record at t (C.6), kept and passed to the sink.
-      subroutine make_record(t_now, first)
+      !> The frame at the current accepted point, with the energy balances.
+      subroutine make_frame(t_now)
          real(wp), intent(in) :: t_now
-         logical, intent(in) :: first
-         type(output_record_t) :: r
-         type(output_record_t), allocatable :: tmp(:)
-         call output_compute(m, res%scene, t_now, y, stepper%f(n_dof + 1:2*n_dof), vehicle_state_at(vm, t_now), &
-                             y_cg0, res%e_total0, r)
-         if (first) then
-            res%e_total0 = r%e_total
-            r%e_error = 0.0_wp
-         end if
-         if (abs(r%e_error) > abs(res%energy_error_max%value)) res%energy_error_max = extreme_t(r%e_error, t_now)
-         if (res%n_records == size(res%records)) then
-            allocate (tmp(2*size(res%records)))
-            tmp(1:res%n_records) = res%records(1:res%n_records)
-            call move_alloc(tmp, res%records)
-         end if
-         res%n_records = res%n_records + 1
-         res%records(res%n_records) = r
-         if (present(sink)) call sink%record(r, err)
-      end subroutine make_record
+         type(energy_balance_t) :: balance(n_occ)
+         call frame_fill(sys, m%vehicle, reg, t_now, y, stepper%f, total0, frame, balance)
+         do o = 1, n_occ
+            call check_energy(summary%occ(o), balance(o), t_now)
+         end do
+         summary%n_frames = summary%n_frames + 1
+         t_frame = t_now
+      end subroutine make_frame
 
-      subroutine add_event(e)
-         type(injury_event_t), intent(in) :: e
-         type(injury_event_t), allocatable :: tmp(:)
-         if (res%n_events == size(res%events)) then
-            allocate (tmp(2*size(res%events)))
-            tmp(1:res%n_events) = res%events(1:res%n_events)
-            call move_alloc(tmp, res%events)
-         end if
-         res%n_events = res%n_events + 1
-         res%events(res%n_events) = e
-         if (present(sink)) call sink%event(e, err)
-      end subroutine add_event
-
-      subroutine fail(st, t_now, code)
-         class(stepper_t), intent(in) :: st
+      !> A print record (C.6), to the sink.
+      subroutine output_frame(t_now)
          real(wp), intent(in) :: t_now
+         call make_frame(t_now)
+         if (present(sink) .and. .not. out_err%failed()) call sink%record(frame, out_err)
+      end subroutine output_frame
+
+      !> The energy balance of C.6 against its tolerance (*NUMERICS EBTOL):
+      !! a run whose balance fails is flagged and, unless the deck says to
+      !! continue, ends as a numerical failure.
+      subroutine check_energy(os, eb, t_now)
+         type(occupant_summary_t), intent(inout) :: os
+         type(energy_balance_t), intent(in) :: eb
+         real(wp), intent(in) :: t_now
+         os%ke_max = max(os%ke_max, eb%ke_body)
+         os%e_error_final = eb%error
+         if (abs(eb%error) > abs(os%energy_error_max%value)) os%energy_error_max = extreme_t(eb%error, t_now)
+         if (os%energy_flagged) return
+         if (abs(eb%error) > m%numerics%energy_tol*os%ke_max .and. abs(eb%error) > rounding*max(1.0_wp, os%ke_max)) then
+            os%energy_flagged = .true.
+            os%t_flagged = t_now
+            if (.not. m%numerics%energy_continue .and. summary%end_reason == end_none) then
+               summary%end_reason = end_energy
+               summary%failure = 'the energy balance error '//num(eb%error)//' in*lb at t = '//num(t_now) &
+                  //' s exceeds EBTOL = '//num(m%numerics%energy_tol)//' of the largest body kinetic energy (' &
+                  //num(os%ke_max)//' in*lb): the results are not trustworthy. A smaller DT (or NINT = 3 ' &
+                  //'with tighter RTOL) should help; *NUMERICS EBFAIL = CONTINUE runs on regardless'
+               call error_set(err, exit_numerical, summary%failure)
+            end if
+         end if
+      end subroutine check_energy
+
+      subroutine fail(code)
          integer, intent(in) :: code
          character(len=:), allocatable :: why
          why = step_status_text(code)
-         if (code == step_rhs_failed) why = why//': '//rhs_status_text(st%rhs_status)//' at t = ' &
-                                            //num(sys%last_t)//' s'
-         res%failure = 'integration stopped after t = '//num(t_now)//' s: '//why
-         res%end_reason = end_failure
-         call error_set(err, exit_numerical, res%failure)
+         if (code == step_rhs_failed) then
+            why = why//' at t = '//num(sys%last_t)//' s: '//rhs_status_text(stepper%rhs_status)
+            if (stepper%rhs_status == rhs_diverged .and. allocated(sys%failure_detail)) &
+               why = why//' ('//sys%failure_detail//')'
+         end if
+         summary%failure = 'integration stopped after t = '//num(t)//' s: '//why
+         summary%end_reason = end_failure
+         call error_set(err, exit_numerical, summary%failure)
       end subroutine fail
-   end subroutine run_simulation
+   end subroutine run_system
 
-   pure subroutine raise(e, value, t)
-      type(extreme_t), intent(inout) :: e
-      real(wp), intent(in) :: value, t
-      if (value > e%value) then
-         e%value = value
-         e%t = t
-      end if
-   end subroutine raise
+   !> The integrator of option NINT (C.3) with its settings.
+   subroutine choose_stepper(m, stepper)
+      type(model_t), intent(in) :: m
+      class(stepper_t), allocatable, intent(out) :: stepper
+      select case (m%options%nint)
+      case (nint_adams)
+         allocate (am_stepper_t :: stepper)
+      case (nint_dopri)
+         allocate (dopri_stepper_t :: stepper)
+      case default
+         allocate (rk4_stepper_t :: stepper)
+      end select
+      select type (s => stepper)
+      type is (am_stepper_t)
+         s%h = m%time%dt
+         s%tol = m%time%corrector_tol
+         s%max_iter = m%time%corrector_max_iter
+         s%start = merge(am_start_rk4, am_start_euler, m%numerics%am_start == astart_rk4)
+      type is (rk4_stepper_t)
+         s%h = m%time%dt
+      type is (dopri_stepper_t)
+         s%h = m%time%dt
+         s%rtol = m%time%rtol
+         s%atol = m%time%atol
+      end select
+   end subroutine choose_stepper
 end module simulation

@@ -97,8 +97,8 @@ contains
       real(wp), intent(in) :: q(10), qd(10)
       real(wp) :: vx(8), vy(8), l(8), r(8)
       real(wp) :: j2x, j2y, j3x, j3y, sx, sy, ex, ey, kx, ky
-      l = m%length
-      r = m%rho
+      l = m%body%length
+      r = m%body%rho
       ! joint velocities
       j2x = qd(9) - l(1)*qd(1)*sin(q(1))
       j2y = qd(10) + l(1)*qd(1)*cos(q(1))
@@ -126,6 +126,6 @@ contains
       vy(7) = qd(10) + r(7)*qd(7)*cos(q(7))
       vx(8) = kx - r(8)*qd(8)*sin(q(8))
       vy(8) = ky + r(8)*qd(8)*cos(q(8))
-      ke = 0.5_wp*sum(m%mass*(vx**2 + vy**2) + m%inertia*qd(1:8)**2)
+      ke = 0.5_wp*sum(m%body%mass*(vx**2 + vy**2) + m%body%inertia*qd(1:8)**2)
    end function kinetic_energy_section_b
 end module test_support

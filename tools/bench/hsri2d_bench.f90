@@ -13,14 +13,15 @@ program hsri2d_bench
    use deck_reader, only: deck_t, deck_init, deck_add_file, deck_finish
    use model_builder, only: build_model
    use model, only: model_t
-   use simulation, only: run_result_t, run_simulation
+   use simulation, only: run_simulation
+   use run_summary, only: run_summary_t
    implicit none
 
    integer :: repeat, i, k, n_args
    character(len=512) :: arg
    real(wp), allocatable :: times(:)
    type(model_t) :: m
-   type(run_result_t) :: res
+   type(run_summary_t) :: res
    type(error_t) :: err
    type(deck_t) :: deck
    integer(int64) :: t0, t1, rate

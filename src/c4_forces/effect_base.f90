@@ -1,0 +1,166 @@
+!> The effect layer of report C.4: every term of the generalized force
+!! vector b = C - G + J + S + B + Q is an effect - one module each, built
+!! from the model only when the deck calls for it (effect_factory).
+!!
+!! An effect
+!! - adds its generalized forces to b (`add_forces`). The effect is
+!!   intent(in) there: its memory (a dislocated joint, a loading cycle, a
+!!   broken windshield) is read-only during trial evaluations, so the
+!!   compiler enforces that predictor, corrector and Runge-Kutta stages
+!!   change nothing (docs/architecture.md, rule 1);
+!! - may integrate auxiliary quantities with the motion (work integrals:
+!!   n_aux of them) and carry extra degrees of freedom of its own (n_extra
+!!   coordinates q and their rates, uncoupled from the body matrix, as the
+!!   rigid-beam seat of C.4.d will be);
+!! - changes its memory only in `accept`, after a step is accepted, and then
+!!   says whether the right-hand side jumped (the stepper restarts) and
+!!   which events (injuries) happened;
+!! - reports its stored (conserved), dissipated and supplied energies;
+!! - declares its output series and fills them at print times.
+!! Evaluations are counted by the system, not by the effect (which is
+!! read-only while it is evaluated).
+module effect_base
+   use kinds, only: wp
+   use model, only: n_dof, n_seg
+   use vehicle_motion, only: vehicle_state_t
+   use output_series, only: output_series_t
+   implicit none
+   private
+
+   public :: effect_t, effect_slot_t, body_state_t, event_t, accept_result_t
+   public :: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
+   public :: event_dislocation_low, event_dislocation_high, event_kind_name, max_events_per_step
+
+   !> Kinds of energy an effect reports (C.6): stored in a conservative
+   !! force, dissipated by it, supplied to the body from outside.
+   integer, parameter :: energy_stored = 1, energy_dissipated = 2, energy_supplied = 3
+   integer, parameter :: n_energy_kinds = 3
+   character(len=10), parameter :: energy_kind_name(n_energy_kinds) = [character(len=10) :: &
+      'stored', 'dissipated', 'supplied']
+
+   !> Event kinds (injuries and other happenings on accepted steps).
+   integer, parameter :: event_dislocation_low = 1, event_dislocation_high = 2
+   character(len=28), parameter :: event_kind_name(2) = [character(len=28) :: &
+      'dislocation (below limit)', 'dislocation (above limit)']
+   !> Events one effect may report at one accepted step.
+   integer, parameter :: max_events_per_step = 16
+
+   !> What every effect sees at one evaluation: the time, the occupant's
+   !! generalized coordinates and rates, the sines and cosines of the
+   !! segment angles, and the vehicle's state (filled only when an effect of
+   !! the occupant needs it).
+   type :: body_state_t
+      real(wp) :: t = 0.0_wp
+      real(wp) :: z(n_dof) = 0.0_wp, zdot(n_dof) = 0.0_wp
+      real(wp) :: c(n_seg) = 0.0_wp, s(n_seg) = 0.0_wp
+      type(vehicle_state_t) :: vehicle
+   end type body_state_t
+
+   !> Something that happened at an accepted step.
+   type :: event_t
+      real(wp) :: t = 0.0_wp
+      integer :: kind = 0
+      integer :: index = 0          !< the joint, segment or surface it concerns
+      real(wp) :: value = 0.0_wp    !< the value found
+      real(wp) :: limit = 0.0_wp    !< the limit it passed
+      logical :: injury = .false.   !< counts for the injury end test (C.7)
+      integer :: occupant = 1
+   end type event_t
+
+   !> What `accept` reports.
+   type :: accept_result_t
+      logical :: restart = .false.  !< the right-hand side jumped: the stepper must restart
+      integer :: n_events = 0
+      type(event_t) :: events(max_events_per_step)
+   end type accept_result_t
+
+   type, abstract :: effect_t
+      character(len=24) :: name = ' '    !< HDF5 group /effects/<name>; lower case, no blanks
+      character(len=40) :: title = ' '   !< for the listing, with the report section
+      integer :: n_aux = 0               !< auxiliary integrated quantities
+      integer :: n_extra = 0             !< extra degrees of freedom (coordinates; rates follow)
+      logical :: needs_vehicle = .false. !< reads st%vehicle
+      logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)
+      logical :: has_energy(n_energy_kinds) = .false.
+   contains
+      procedure(add_forces_interface), deferred :: add_forces
+      procedure :: accept => effect_accept
+      procedure :: energy => effect_energy
+      procedure :: outputs => effect_outputs
+      procedure :: output_values => effect_output_values
+      procedure :: describe => effect_describe
+   end type effect_t
+
+   !> An effect in a list.
+   type :: effect_slot_t
+      class(effect_t), allocatable :: e
+   end type effect_slot_t
+
+   abstract interface
+      !> Add this effect's generalized forces to b; write the rates of its
+      !! auxiliary quantities and of its extra degrees of freedom. extra
+      !! holds (q, q') of the extra degrees of freedom; aux the auxiliary
+      !! quantities. Must not fail: bounded input gives bounded output.
+      pure subroutine add_forces_interface(this, st, extra, aux, b, extra_rate, aux_rate)
+         import :: effect_t, body_state_t, wp, n_dof
+         class(effect_t), intent(in) :: this
+         type(body_state_t), intent(in) :: st
+         real(wp), intent(in) :: extra(:), aux(:)
+         real(wp), intent(inout) :: b(n_dof)
+         real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      end subroutine add_forces_interface
+   end interface
+
+contains
+
+   !> After an accepted step: update memory, report events and jumps. The
+   !! default effect has no memory.
+   subroutine effect_accept(this, st, extra, aux, result)
+      class(effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(accept_result_t), intent(inout) :: result
+      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux), u4 => result%n_events)
+      end associate
+   end subroutine effect_accept
+
+   !> The effect's energies (in*lb): stored, dissipated, supplied. Zero by default.
+   pure subroutine effect_energy(this, st, extra, aux, e)
+      class(effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux))
+      end associate
+      e = 0.0_wp
+   end subroutine effect_energy
+
+   !> The effect's own output series (beyond its generalized force, which
+   !! the registry adds for every acting effect). None by default.
+   function effect_outputs(this) result(series)
+      class(effect_t), intent(in) :: this
+      type(output_series_t), allocatable :: series(:)
+      associate (unused => this%name)
+      end associate
+      allocate (series(0))
+   end function effect_outputs
+
+   !> The values of the effect's output series number item at this state.
+   pure subroutine effect_output_values(this, item, st, extra, aux, values)
+      class(effect_t), intent(in) :: this
+      integer, intent(in) :: item
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: values(:)
+      associate (unused => this%name, u1 => item, u2 => st%t, u3 => size(extra) + size(aux))
+      end associate
+      values = 0.0_wp
+   end subroutine effect_output_values
+
+   !> One line for the listing: what the effect acts on.
+   function effect_describe(this) result(text)
+      class(effect_t), intent(in) :: this
+      character(len=:), allocatable :: text
+      text = trim(this%title)
+   end function effect_describe
+end module effect_base

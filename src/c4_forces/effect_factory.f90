@@ -1,0 +1,55 @@
+!> The scene (report C.4): the effects an occupant's deck calls for, built
+!! once per run, in the order of the terms of b = C - G + J + S + B + Q.
+!! An effect the deck does not call for is not built, so it costs nothing
+!! (docs/architecture.md, rule 2). Adding an effect is one line here.
+module effect_factory
+   use kinds, only: wp
+   use model, only: model_t, n_joint, n_dof
+   use preliminary, only: body_constants_t
+   use effect_base, only: effect_t, effect_slot_t
+   use centrifugal, only: centrifugal_effect
+   use gravity, only: gravity_effect
+   use joint_elasticity, only: joint_elasticity_effect
+   use joint_friction, only: joint_friction_effect
+   use joint_stops, only: joint_stops_effect
+   use joint_dislocation, only: joint_dislocation_effect
+   use joint_restraints, only: restraint_is_active
+   implicit none
+   private
+
+   public :: build_effects
+
+contains
+
+   !> The effects of one occupant whose body constants are bc and whose
+   !! initial coordinates are z0.
+   subroutine build_effects(m, bc, z0, effects)
+      type(model_t), intent(in) :: m
+      type(body_constants_t), intent(in) :: bc
+      real(wp), intent(in) :: z0(n_dof)
+      type(effect_slot_t), allocatable, intent(out) :: effects(:)
+      integer :: i
+
+      allocate (effects(0))
+      call add(centrifugal_effect(bc))                                                  ! C.4.a
+      if (m%environment%gravity > 0.0_wp) call add(gravity_effect(bc, m%environment%gravity, z0)) ! C.4.b
+      if (any(m%joints%k_elastic > 0.0_wp)) call add(joint_elasticity_effect(m%joints%k_elastic, z0)) ! C.4.c
+      if (any(m%joints%c_friction > 0.0_wp)) &
+         call add(joint_friction_effect(m%joints%c_friction, m%joints%xi))              ! C.4.c
+      if (any([(restraint_is_active(m%joints%restraint(i)), i=1, n_joint)])) &
+         call add(joint_stops_effect(m%joints%restraint))                               ! C.4.c, fig. 9
+      call add(joint_dislocation_effect(m%joints%restraint))                            ! C.4.c, fig. 10
+   contains
+      subroutine add(e)
+         class(effect_t), intent(in) :: e
+         type(effect_slot_t), allocatable :: longer(:)
+         integer :: k
+         allocate (longer(size(effects) + 1))
+         do k = 1, size(effects)
+            call move_alloc(effects(k)%e, longer(k)%e)
+         end do
+         allocate (longer(size(longer))%e, source=e)
+         call move_alloc(longer, effects)
+      end subroutine add
+   end subroutine build_effects
+end module effect_factory

@@ -1,0 +1,78 @@
+!> Report C.4.c, figure 10: the joint-injury criterion - dislocation by an
+!! excessive relative angle. An effect without forces: its memory (which
+!! joints have dislocated) changes only when a step is accepted, and each
+!! first passage of a limit is an injury event.
+module joint_dislocation
+   use kinds, only: wp
+   use model, only: n_joint, n_dof, restraint_t
+   use effect_base, only: effect_t, body_state_t, accept_result_t, event_t, event_dislocation_low, &
+      event_dislocation_high, max_events_per_step
+   use joint_coupling, only: relative_angle
+   implicit none
+   private
+
+   public :: joint_dislocation_t, joint_dislocation_effect
+
+   type, extends(effect_t) :: joint_dislocation_t
+      real(wp) :: lower(n_joint) = 0.0_wp, upper(n_joint) = 0.0_wp  !< limits (rad)
+      logical :: dislocated(n_joint) = .false.                      !< memory
+   contains
+      procedure :: add_forces => dislocation_add_forces
+      procedure :: accept => dislocation_accept
+   end type joint_dislocation_t
+
+contains
+
+   function joint_dislocation_effect(restraint) result(e)
+      type(restraint_t), intent(in) :: restraint(n_joint)
+      type(joint_dislocation_t) :: e
+      e%name = 'joint_dislocation'
+      e%title = 'joint dislocation (C.4.c, figure 10)'
+      e%acts = .false.
+      e%lower = restraint%dislocation_lower
+      e%upper = restraint%dislocation_upper
+   end function joint_dislocation_effect
+
+   !> No generalized force: the report's dislocation is an injury criterion.
+   pure subroutine dislocation_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(joint_dislocation_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      associate (u1 => this%name, u2 => st%t, u3 => size(extra) + size(aux), u4 => size(b), &
+                 u5 => size(extra_rate) + size(aux_rate))
+      end associate
+   end subroutine dislocation_add_forces
+
+   !> A joint whose relative angle has passed a limit for the first time
+   !! dislocates: an injury event.
+   subroutine dislocation_accept(this, st, extra, aux, result)
+      class(joint_dislocation_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(accept_result_t), intent(inout) :: result
+      integer :: i, kind
+      real(wp) :: delta, limit
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      do i = 1, n_joint
+         if (this%dislocated(i)) cycle
+         delta = relative_angle(st%z, i)
+         if (delta < this%lower(i)) then
+            kind = event_dislocation_low
+            limit = this%lower(i)
+         else if (delta > this%upper(i)) then
+            kind = event_dislocation_high
+            limit = this%upper(i)
+         else
+            cycle
+         end if
+         this%dislocated(i) = .true.
+         if (result%n_events < max_events_per_step) then
+            result%n_events = result%n_events + 1
+            result%events(result%n_events) = event_t(st%t, kind, i, delta, limit, .true., 1)
+         end if
+      end do
+   end subroutine dislocation_accept
+end module joint_dislocation

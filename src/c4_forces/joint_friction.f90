@@ -1,0 +1,118 @@
+!> Report C.4.c, joint friction: the Coulomb torque J-hat = C'_i sgn(alpha-
+!! dot_m - alpha-dot_i) once the relative rate reaches xi_i, zero below it
+!! (the dead band; docs/errata.md D-4). The work each joint dissipates,
+!! C'_i |relative rate|, is integrated with the motion (an auxiliary
+!! quantity per joint; erratum E-64), so the energy balance of C.6 closes to
+!! the integration error.
+module joint_friction
+   use kinds, only: wp
+   use model, only: n_dof, n_joint
+   use effect_base, only: effect_t, body_state_t, energy_dissipated, n_energy_kinds
+   use output_series, only: output_series_t, series_new
+   use joint_coupling, only: relative_rate, apply_joint_torque, joint_columns, joint_list_text
+   implicit none
+   private
+
+   public :: joint_friction_t, joint_friction_effect, friction_torque
+
+   type, extends(effect_t) :: joint_friction_t
+      integer, allocatable :: joints(:)          !< joints with C' > 0
+      real(wp) :: c_friction(n_joint) = 0.0_wp
+      real(wp) :: xi(n_joint) = 0.0_wp
+   contains
+      procedure :: add_forces => friction_add_forces
+      procedure :: energy => friction_energy
+      procedure :: outputs => friction_outputs
+      procedure :: output_values => friction_output_values
+      procedure :: describe => friction_describe
+   end type joint_friction_t
+
+contains
+
+   function joint_friction_effect(c_friction, xi) result(e)
+      real(wp), intent(in) :: c_friction(n_joint), xi(n_joint)
+      type(joint_friction_t) :: e
+      integer :: i
+      e%name = 'joint_friction'
+      e%title = 'joint friction (C.4.c)'
+      e%c_friction = c_friction
+      e%xi = xi
+      e%joints = pack([(i, i=1, n_joint)], c_friction > 0.0_wp)
+      e%n_aux = size(e%joints)
+      e%has_energy(energy_dissipated) = .true.
+   end function joint_friction_effect
+
+   !> The torque on segment i at relative rate w: -C' sgn(w) when |w| >= xi,
+   !! else 0 - and 0 at w = 0 even when xi = 0 (Fortran's sign(C', 0) is +C',
+   !! which would be a torque without motion, outside the energy balance).
+   pure real(wp) function friction_torque(c_friction, xi, w) result(tau)
+      real(wp), intent(in) :: c_friction, xi, w
+      if (abs(w) >= xi .and. abs(w) > 0.0_wp) then
+         tau = -sign(c_friction, w)
+      else
+         tau = 0.0_wp
+      end if
+   end function friction_torque
+
+   pure subroutine friction_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(joint_friction_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      integer :: n, i
+      real(wp) :: w, tau
+      associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
+      end associate
+      do n = 1, size(this%joints)
+         i = this%joints(n)
+         w = relative_rate(st%zdot, i)
+         tau = friction_torque(this%c_friction(i), this%xi(i), w)
+         call apply_joint_torque(b, i, tau)
+         aux_rate(n) = -tau*w      ! power dissipated, >= 0
+      end do
+   end subroutine friction_add_forces
+
+   pure subroutine friction_energy(this, st, extra, aux, e)
+      class(joint_friction_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      associate (u1 => this%name, u2 => st%t, u3 => size(extra))
+      end associate
+      e = 0.0_wp
+      e(energy_dissipated) = sum(aux)
+   end subroutine friction_energy
+
+   function friction_outputs(this) result(series)
+      class(joint_friction_t), intent(in) :: this
+      type(output_series_t), allocatable :: series(:)
+      associate (unused => this%name)
+      end associate
+      allocate (series(1))
+      series(1) = series_new('work', 'JOINT FRICTION WORK DISSIPATED', &
+                             'work dissipated by each joint''s friction since t = 0 (C.6, erratum E-64)', 3)
+      series(1)%col = joint_columns('in*lb')
+   end function friction_outputs
+
+   pure subroutine friction_output_values(this, item, st, extra, aux, values)
+      class(joint_friction_t), intent(in) :: this
+      integer, intent(in) :: item
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: values(:)
+      integer :: n
+      associate (u1 => item, u2 => st%t, u3 => size(extra))
+      end associate
+      values = 0.0_wp
+      do n = 1, size(this%joints)
+         values(this%joints(n)) = aux(n)
+      end do
+   end subroutine friction_output_values
+
+   function friction_describe(this) result(text)
+      class(joint_friction_t), intent(in) :: this
+      character(len=:), allocatable :: text
+      text = trim(this%title)//': '//joint_list_text(this%joints)
+   end function friction_describe
+end module joint_friction

@@ -1,0 +1,162 @@
+!> An occupant: its body (Table 1), the body constants of C.2, the effects
+!! its deck calls for, and where its part of the state vector lives. The
+!! kernels of C.4-C.5 take an occupant, never a whole system, and nothing
+!! assumes that an occupant starts at offset 0: the report's phase-three
+!! directions (two occupants; Section D) have room here.
+module occupant
+   use kinds, only: wp, i8
+   use model, only: model_t, body_section_t, n_dof, n_seg
+   use preliminary, only: body_constants_t, body_constants, initial_state
+   use effect_base, only: effect_t, effect_slot_t, body_state_t
+   use effect_factory, only: build_effects
+   use state_layout, only: state_layout_t
+   use vehicle_motion, only: vehicle_state_t
+   use body_matrix, only: body_accelerations
+   implicit none
+   private
+
+   public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces
+   public :: occupant_initial_y, occupant_add_effect
+
+   type :: occupant_t
+      character(len=16) :: label = 'occupant'
+      type(body_section_t) :: body
+      type(body_constants_t) :: bc
+      type(effect_slot_t), allocatable :: effects(:)
+      !> the effects evaluated by the right-hand side (those adding forces or
+      !! integrating quantities of their own)
+      integer, allocatable :: evaluated(:)
+      integer :: solver = 0
+      logical :: needs_vehicle = .false.
+      !> offsets in y: z is y(z_offset+1 : z_offset+n_dof), z' likewise
+      integer :: z_offset = 0, zdot_offset = 0
+      !> per effect: its extra coordinates and rates, its auxiliary quantities
+      integer, allocatable :: extra_offset(:), aux_offset(:)
+      real(wp) :: z0(n_dof) = 0.0_wp, zdot0(n_dof) = 0.0_wp
+   end type occupant_t
+
+contains
+
+   !> Build an occupant from the model: constants, initial state, effects,
+   !! and its slots in the state layout.
+   subroutine occupant_build(m, label, layout, occ)
+      type(model_t), intent(in) :: m
+      character(len=*), intent(in) :: label
+      type(state_layout_t), intent(inout) :: layout
+      type(occupant_t), intent(out) :: occ
+      integer :: k, n_eff
+
+      occ%label = label
+      occ%body = m%body
+      occ%bc = body_constants(m%body)
+      occ%solver = m%numerics%solver
+      call initial_state(m%body, m%vehicle, occ%z0, occ%zdot0)
+      call build_effects(m, occ%bc, occ%z0, occ%effects)
+      n_eff = size(occ%effects)
+      call layout%reserve(label//': z', n_dof, occ%z_offset)
+      call layout%reserve(label//': z''', n_dof, occ%zdot_offset)
+      allocate (occ%extra_offset(n_eff), occ%aux_offset(n_eff), occ%evaluated(0))
+      do k = 1, n_eff
+         call place_effect(occ, k, layout)
+      end do
+   end subroutine occupant_build
+
+   !> Give effect k its slots in the layout and its place in the lists.
+   subroutine place_effect(occ, k, layout)
+      type(occupant_t), intent(inout) :: occ
+      integer, intent(in) :: k
+      type(state_layout_t), intent(inout) :: layout
+      integer :: j
+      associate (e => occ%effects(k)%e)
+         call layout%reserve(trim(occ%label)//': '//trim(e%name)//' q, q''', 2*e%n_extra, occ%extra_offset(k))
+         call layout%reserve(trim(occ%label)//': '//trim(e%name)//' work', e%n_aux, occ%aux_offset(k))
+         occ%needs_vehicle = occ%needs_vehicle .or. e%needs_vehicle
+         if (.not. allocated(occ%evaluated)) allocate (occ%evaluated(0))
+         if (e%acts .or. e%n_aux > 0 .or. e%n_extra > 0) occ%evaluated = [(occ%evaluated(j), j=1, size(occ%evaluated)), k]
+      end associate
+   end subroutine place_effect
+
+   !> One more effect for a built occupant (a test's toy effect, or a
+   !! caller's own): appended to its list, given its slots at the end of y.
+   subroutine occupant_add_effect(occ, e, layout)
+      type(occupant_t), intent(inout) :: occ
+      class(effect_t), intent(in) :: e
+      type(state_layout_t), intent(inout) :: layout
+      type(effect_slot_t), allocatable :: longer(:)
+      integer :: k, n
+      n = size(occ%effects) + 1
+      allocate (longer(n))
+      do k = 1, n - 1
+         call move_alloc(occ%effects(k)%e, longer(k)%e)
+      end do
+      allocate (longer(n)%e, source=e)
+      call move_alloc(longer, occ%effects)
+      occ%extra_offset = [occ%extra_offset, 0]
+      occ%aux_offset = [occ%aux_offset, 0]
+      call place_effect(occ, n, layout)
+   end subroutine occupant_add_effect
+
+   !> The occupant's initial part of y (auxiliary quantities start at 0).
+   pure subroutine occupant_initial_y(occ, y)
+      type(occupant_t), intent(in) :: occ
+      real(wp), intent(inout) :: y(:)
+      y(occ%z_offset + 1:occ%z_offset + n_dof) = occ%z0
+      y(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = occ%zdot0
+   end subroutine occupant_initial_y
+
+   !> What the effects see: the occupant's coordinates and rates in y, the
+   !! sines and cosines of the segment angles, the vehicle's state.
+   pure subroutine occupant_state(occ, t, y, vehicle, st)
+      type(occupant_t), intent(in) :: occ
+      real(wp), intent(in) :: t, y(:)
+      type(vehicle_state_t), intent(in) :: vehicle
+      type(body_state_t), intent(out) :: st
+      st%t = t
+      st%z = y(occ%z_offset + 1:occ%z_offset + n_dof)
+      st%zdot = y(occ%zdot_offset + 1:occ%zdot_offset + n_dof)
+      st%c = cos(st%z(1:n_seg))
+      st%s = sin(st%z(1:n_seg))
+      st%vehicle = vehicle
+   end subroutine occupant_state
+
+   !> b = C - G + J + S + B + Q (C.4): the sum of the evaluated effects'
+   !! generalized forces, and the rates of their own quantities into dydt.
+   !! counts(k) counts the evaluations of effect k.
+   pure subroutine occupant_forces(occ, st, y, b, dydt, counts)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: b(n_dof)
+      real(wp), intent(inout) :: dydt(:)
+      integer(i8), intent(inout) :: counts(:)
+      integer :: n, k, xo, ao
+      b = 0.0_wp
+      do n = 1, size(occ%evaluated)
+         k = occ%evaluated(n)
+         xo = occ%extra_offset(k)
+         ao = occ%aux_offset(k)
+         associate (e => occ%effects(k)%e)
+            call e%add_forces(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), b, &
+                              dydt(xo + 1:xo + 2*e%n_extra), dydt(ao + 1:ao + e%n_aux))
+         end associate
+         counts(k) = counts(k) + 1
+      end do
+   end subroutine occupant_forces
+
+   !> The occupant's part of f(t, y): z' and z'' from A z'' = b (C.5), and
+   !! the rates of its effects' quantities. info /= 0: A is not positive
+   !! definite.
+   pure subroutine occupant_rhs(occ, st, y, dydt, counts, info)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(inout) :: dydt(:)
+      integer(i8), intent(inout) :: counts(:)
+      integer, intent(out) :: info
+      real(wp) :: b(n_dof), zdd(n_dof)
+      call occupant_forces(occ, st, y, b, dydt, counts)
+      call body_accelerations(occ%bc, st%c, st%s, b, zdd, info)
+      dydt(occ%z_offset + 1:occ%z_offset + n_dof) = st%zdot
+      dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = zdd
+   end subroutine occupant_rhs
+end module occupant

@@ -1,0 +1,230 @@
+!> Who fills the output registry: for each occupant the C.6 calculations
+!! (output_calc), the energy summary, and each effect - its own series and
+!! its contribution to b (`effects/<name>/generalized_force`, so that b can
+!! be audited term by term against A z''). registry_build declares the
+!! series once per run; frame_fill computes them at a print time.
+module output_producers
+   use kinds, only: wp
+   use strings, only: itoa
+   use model, only: model_t, vehicle_section_t, n_dof, n_seg
+   use effect_base, only: body_state_t, energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, &
+      energy_kind_name
+   use occupant, only: occupant_t
+   use equations_of_motion, only: crash_system_t, system_body_state
+   use output_series, only: output_series_t, series_new, column
+   use output_registry, only: output_registry_t, output_frame_t
+   use output_calc, only: body_outputs_t, body_outputs_compute, body_series, body_series_values, &
+      body_kinetic_energy
+   implicit none
+   private
+
+   public :: registry_build, frame_fill, energy_balance_t, frame_energy
+   public :: producer_body, producer_energy
+
+   !> Producers other than effects (effect k of an occupant is producer k).
+   integer, parameter :: producer_body = 0, producer_energy = -1
+
+   !> The energy balance of one occupant at one time (C.6): body kinetic
+   !! energy plus every effect's stored and dissipated energy minus what was
+   !! supplied from outside is constant.
+   type :: energy_balance_t
+      real(wp) :: ke_body = 0.0_wp
+      real(wp) :: total = 0.0_wp
+      real(wp) :: error = 0.0_wp
+   end type energy_balance_t
+
+contains
+
+   !> Declare every series of the system's occupants.
+   subroutine registry_build(sys, reg)
+      type(crash_system_t), intent(in) :: sys
+      type(output_registry_t), intent(out) :: reg
+      type(output_series_t), allocatable :: own(:), fixed(:)
+      type(output_series_t) :: s
+      character(len=:), allocatable :: prefix
+      integer :: o, k, j, kind
+
+      allocate (reg%series(0))
+      do o = 1, size(sys%occupants)
+         associate (occ => sys%occupants(o))
+            prefix = ''
+            if (size(sys%occupants) > 1) prefix = 'occupant_'//itoa(o)//'/'
+            fixed = body_series()
+            do j = 1, size(fixed)
+               s = fixed(j)
+               call place(s, producer_body, j)
+               if (j == 3) call reg%add(energy_summary(occ))   ! after the vehicle: NOUT 1 tables first
+               call reg%add(s)
+            end do
+            do k = 1, size(occ%effects)
+               associate (e => occ%effects(k)%e)
+                  own = e%outputs()
+                  do j = 1, size(own)
+                     s = own(j)
+                     s%name = 'effects/'//trim(e%name)//'/'//s%name
+                     call place(s, k, j)
+                     call reg%add(s)
+                  end do
+                  if (e%acts) then
+                     s = series_new('effects/'//trim(e%name)//'/generalized_force', &
+                                    'GENERALIZED FORCES OF '//trim(e%title), &
+                                    'contribution of '//trim(e%title)//' to b = C - G + J + S + B + Q (C.4): ' &
+                                    //'on alpha_1..alpha_8 (in*lb) and x_h, y_h (lb)', 3)
+                     s%col = [(column('alpha'//itoa(j), 'in*lb'), j=1, n_seg), column('x_h', 'lb'), column('y_h', 'lb')]
+                     s%generalized_force = .true.
+                     call place(s, k, 0)
+                     call reg%add(s)
+                  end if
+               end associate
+            end do
+         end associate
+      end do
+   contains
+      subroutine place(series, producer, item)
+         type(output_series_t), intent(inout) :: series
+         integer, intent(in) :: producer, item
+         series%name = prefix//series%name
+         series%producer = producer
+         series%item = item
+         series%occupant = o
+      end subroutine place
+
+      !> ke_vehicle, ke_body, each effect's energies, the total and its error.
+      function energy_summary(occ) result(es)
+         type(occupant_t), intent(in) :: occ
+         type(output_series_t) :: es
+         es = series_new('energy/summary', 'ENERGIES', 'energies (C.6): vehicle and body kinetic, each effect''s ' &
+                         //'stored, dissipated and supplied energy; total_body = body kinetic + stored + ' &
+                         //'dissipated - supplied, constant up to the integration error (balance_err)', 1)
+         es%col = [column('ke_vehicle', 'in*lb'), column('ke_body', 'in*lb')]
+         do k = 1, size(occ%effects)
+            do kind = 1, n_energy_kinds
+               if (occ%effects(k)%e%has_energy(kind)) es%col = [es%col, &
+                  column(energy_column_name(occ%effects(k)%e%name, occ%effects(k)%e%has_energy, kind), 'in*lb')]
+            end do
+         end do
+         es%col = [es%col, column('total_body', 'in*lb'), column('balance_err', 'in*lb')]
+         call place(es, producer_energy, 0)
+      end function energy_summary
+   end subroutine registry_build
+
+   !> An effect's energy column: its name, with the kind when it has several.
+   pure function energy_column_name(name, has, kind) result(s)
+      character(len=*), intent(in) :: name
+      logical, intent(in) :: has(n_energy_kinds)
+      integer, intent(in) :: kind
+      character(len=:), allocatable :: s
+      if (count(has) > 1) then
+         s = name(1:min(len_trim(name), 9))//'_'//energy_kind_name(kind)(1:6)
+      else
+         s = trim(name)
+      end if
+   end function energy_column_name
+
+   !> Occupant o's energy balance at (t, y); total0 is the total at t = 0.
+   pure function frame_energy(occ, st, y, total0) result(eb)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: y(:), total0
+      type(energy_balance_t) :: eb
+      real(wp) :: e(n_energy_kinds), ke(n_seg)
+      integer :: k
+      ke = body_ke(occ, st)
+      eb%ke_body = sum(ke)
+      eb%total = eb%ke_body
+      do k = 1, size(occ%effects)
+         call effect_energy(occ, k, st, y, e)
+         eb%total = eb%total + e(energy_stored) + e(energy_dissipated) - e(energy_supplied)
+      end do
+      eb%error = eb%total - total0
+   end function frame_energy
+
+   pure function body_ke(occ, st) result(ke)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp) :: ke(n_seg)
+      ke = body_kinetic_energy(occ%body, st%z, st%zdot)
+   end function body_ke
+
+   pure subroutine effect_energy(occ, k, st, y, e)
+      type(occupant_t), intent(in) :: occ
+      integer, intent(in) :: k
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: y(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      integer :: xo, ao
+      xo = occ%extra_offset(k)
+      ao = occ%aux_offset(k)
+      associate (ef => occ%effects(k)%e)
+         call ef%energy(st, y(xo + 1:xo + 2*ef%n_extra), y(ao + 1:ao + ef%n_aux), e)
+      end associate
+   end subroutine effect_energy
+
+   !> Every series at the accepted point (t, y) where the derivative is f.
+   !! total0(o): occupant o's energy total at t = 0. Returns each
+   !! occupant's energy balance too.
+   subroutine frame_fill(sys, vehicle, reg, t, y, f, total0, frame, balance)
+      type(crash_system_t), intent(in) :: sys
+      type(vehicle_section_t), intent(in) :: vehicle
+      type(output_registry_t), intent(in) :: reg
+      real(wp), intent(in) :: t, y(:), f(:), total0(:)
+      type(output_frame_t), intent(inout) :: frame
+      type(energy_balance_t), intent(out) :: balance(:)
+      type(body_state_t), allocatable :: st(:)
+      type(body_outputs_t), allocatable :: bo(:)
+      real(wp) :: b(n_dof), e(n_energy_kinds)
+      real(wp), allocatable :: extra_rate(:), aux_rate(:)
+      integer :: o, k, k2, kind, n, i, xo, ao
+
+      allocate (st(size(sys%occupants)), bo(size(sys%occupants)), extra_rate(sys%layout%n), aux_rate(sys%layout%n))
+      do o = 1, size(sys%occupants)
+         associate (occ => sys%occupants(o))
+            st(o) = system_body_state(sys, o, t, y)
+            call body_outputs_compute(occ%body, vehicle, st(o), f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), bo(o))
+            balance(o) = frame_energy(occ, st(o), y, total0(o))
+         end associate
+      end do
+      if (.not. allocated(frame%v)) allocate (frame%v(reg%n_values))
+      frame%t = t
+      do k = 1, size(reg%series)
+         associate (s => reg%series(k), occ => sys%occupants(reg%series(k)%occupant))
+            o = s%occupant
+            n = size(s%col)
+            associate (v => frame%v(s%offset + 1:s%offset + n))
+               if (s%producer == producer_body) then
+                  call body_series_values(s%item, bo(o), v)
+               else if (s%producer == producer_energy) then
+                  v(1) = bo(o)%ke_vehicle
+                  v(2) = balance(o)%ke_body
+                  i = 2
+                  do k2 = 1, size(occ%effects)
+                     if (.not. any(occ%effects(k2)%e%has_energy)) cycle
+                     call effect_energy(occ, k2, st(o), y, e)
+                     do kind = 1, n_energy_kinds
+                        if (.not. occ%effects(k2)%e%has_energy(kind)) cycle
+                        i = i + 1
+                        v(i) = e(kind)
+                     end do
+                  end do
+                  v(n - 1) = balance(o)%total
+                  v(n) = balance(o)%error
+               else
+                  xo = occ%extra_offset(s%producer)
+                  ao = occ%aux_offset(s%producer)
+                  associate (ef => occ%effects(s%producer)%e)
+                     if (s%generalized_force) then
+                        b = 0.0_wp
+                        call ef%add_forces(st(o), y(xo + 1:xo + 2*ef%n_extra), y(ao + 1:ao + ef%n_aux), b, &
+                                           extra_rate(1:2*ef%n_extra), aux_rate(1:ef%n_aux))
+                        v = b
+                     else
+                        call ef%output_values(s%item, st(o), y(xo + 1:xo + 2*ef%n_extra), &
+                                              y(ao + 1:ao + ef%n_aux), v)
+                     end if
+                  end associate
+               end if
+            end associate
+         end associate
+      end do
+   end subroutine frame_fill
+end module output_producers

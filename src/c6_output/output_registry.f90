@@ -1,0 +1,64 @@
+!> The one table of output variables: every series a run writes, with its
+!! columns, units, listing scale, description, NOUT level and producer. It
+!! drives the listing's time-history tables, the HDF5 series and their
+!! attributes, and the HDF5 section of docs/usage.md (`hsri2d --outputs`),
+!! so they cannot disagree. A frame holds the values of every series at one
+!! print time, series after series.
+module output_registry
+   use kinds, only: wp
+   use output_series, only: output_series_t
+   implicit none
+   private
+
+   public :: output_registry_t, output_frame_t
+
+   type :: output_registry_t
+      type(output_series_t), allocatable :: series(:)
+      integer :: n_values = 0            !< length of a frame
+   contains
+      procedure :: add => registry_add
+      procedure :: find => registry_find
+      procedure :: count => registry_count
+   end type output_registry_t
+
+   !> The values of every series at one time.
+   type :: output_frame_t
+      real(wp) :: t = 0.0_wp
+      real(wp), allocatable :: v(:)
+   end type output_frame_t
+
+contains
+
+   !> Append a series; its values follow those already registered.
+   subroutine registry_add(this, s)
+      class(output_registry_t), intent(inout) :: this
+      type(output_series_t), intent(in) :: s
+      type(output_series_t), allocatable :: longer(:)
+      integer :: k
+      if (.not. allocated(this%series)) allocate (this%series(0))
+      allocate (longer(size(this%series) + 1))
+      do k = 1, size(this%series)
+         longer(k) = this%series(k)
+      end do
+      longer(size(longer)) = s
+      longer(size(longer))%offset = this%n_values
+      this%n_values = this%n_values + size(s%col)
+      call move_alloc(longer, this%series)
+   end subroutine registry_add
+
+   !> The index of the series called name, or 0.
+   pure integer function registry_find(this, name) result(k)
+      class(output_registry_t), intent(in) :: this
+      character(len=*), intent(in) :: name
+      do k = 1, size(this%series)
+         if (this%series(k)%name == name) return
+      end do
+      k = 0
+   end function registry_find
+
+   pure integer function registry_count(this)
+      class(output_registry_t), intent(in) :: this
+      registry_count = 0
+      if (allocated(this%series)) registry_count = size(this%series)
+   end function registry_count
+end module output_registry

@@ -1,0 +1,75 @@
+!> What a run leaves besides its time histories: why and when it ended,
+!! the maxima over all accepted steps and when they happened, the events,
+!! the energy balance and what the integration cost. Its size does not grow
+!! with the length of the run (except for events, which are few).
+module run_summary
+   use kinds, only: wp, i8
+   use model, only: n_joint
+   use ode_system, only: step_stats_t
+   use effect_base, only: event_t
+   implicit none
+   private
+
+   public :: extreme_t, occupant_summary_t, run_summary_t, raise, lower, summary_add_event
+
+   !> A running extreme and when it happened.
+   type :: extreme_t
+      real(wp) :: value = 0.0_wp
+      real(wp) :: t = 0.0_wp
+   end type extreme_t
+
+   !> One occupant's maxima (accepted steps) and energy balance (print times).
+   type :: occupant_summary_t
+      type(extreme_t) :: head_max, chest_max
+      type(extreme_t) :: joint_min(n_joint), joint_max(n_joint)
+      real(wp) :: e_total0 = 0.0_wp             !< energy total at t = 0
+      real(wp) :: e_error_final = 0.0_wp
+      type(extreme_t) :: energy_error_max       !< largest |balance error| (signed value)
+      real(wp) :: ke_max = 0.0_wp               !< largest body kinetic energy
+      logical :: energy_flagged = .false.       !< the balance exceeded its tolerance
+      real(wp) :: t_flagged = 0.0_wp
+   end type occupant_summary_t
+
+   type :: run_summary_t
+      integer :: end_reason = 0
+      character(len=:), allocatable :: failure
+      real(wp) :: t_end = 0.0_wp
+      type(occupant_summary_t), allocatable :: occ(:)
+      type(event_t), allocatable :: events(:)
+      integer :: n_events = 0
+      type(step_stats_t) :: stats
+      integer(i8), allocatable :: counts(:, :)   !< evaluations of each effect (effect, occupant)
+      character(len=24), allocatable :: effect_names(:, :)   !< the effects' names (effect, occupant)
+      character(len=40), allocatable :: effect_titles(:, :)  !< and their titles
+      integer(i8) :: evaluations = 0
+      integer :: n_frames = 0                    !< print records made
+   end type run_summary_t
+
+contains
+
+   pure subroutine raise(e, value, t)
+      type(extreme_t), intent(inout) :: e
+      real(wp), intent(in) :: value, t
+      if (value > e%value) e = extreme_t(value, t)
+   end subroutine raise
+
+   pure subroutine lower(e, value, t)
+      type(extreme_t), intent(inout) :: e
+      real(wp), intent(in) :: value, t
+      if (value < e%value) e = extreme_t(value, t)
+   end subroutine lower
+
+   pure subroutine summary_add_event(s, e)
+      type(run_summary_t), intent(inout) :: s
+      type(event_t), intent(in) :: e
+      type(event_t), allocatable :: longer(:)
+      if (.not. allocated(s%events)) allocate (s%events(8))
+      if (s%n_events == size(s%events)) then
+         allocate (longer(2*size(s%events)))
+         longer(1:s%n_events) = s%events(1:s%n_events)
+         call move_alloc(longer, s%events)
+      end if
+      s%n_events = s%n_events + 1
+      s%events(s%n_events) = e
+   end subroutine summary_add_event
+end module run_summary
