@@ -2,6 +2,7 @@
 !! the builders of the model sections never depend on a field's position
 !! on its card.
 module deck_fields
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: wp
    use deck_reader, only: deck_t, card_t
    implicit none
@@ -12,47 +13,60 @@ module deck_fields
 
 contains
 
-   !> The position of field `name` in group gid. A name the card table does
-   !! not hold is a defect of the program, never of a deck.
-   integer function field_number(deck, gid, name) result(k)
+   !> The position of field `name` in group gid, or 0. A name the card table
+   !! does not hold is a defect of the program, never of a deck: its value
+   !! is then NaN, which the tests (run with floating-point traps) catch.
+   pure integer function field_number(deck, gid, name) result(k)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: gid
       character(len=*), intent(in) :: name
       do k = 1, deck%spec(gid)%n_fields
          if (deck%spec(gid)%field(k)%name == name) return
       end do
-      error stop 'hsri2d internal error: a builder asks for a field the card table does not have'
+      k = 0
    end function field_number
 
    !> A field of a card, in internal units (a blank field holds its default).
-   real(wp) function card_value(deck, gid, c, name)
+   pure real(wp) function card_value(deck, gid, c, name)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: gid
       type(card_t), intent(in) :: c
       character(len=*), intent(in) :: name
-      card_value = c%value(field_number(deck, gid, name))
+      integer :: k
+      k = field_number(deck, gid, name)
+      if (k == 0) then
+         card_value = ieee_value(0.0_wp, ieee_quiet_nan)
+      else
+         card_value = c%value(k)
+      end if
    end function card_value
 
    !> An integer field of a card, or the number of a word field's word.
-   integer function card_int(deck, gid, c, name)
+   pure integer function card_int(deck, gid, c, name)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: gid
       type(card_t), intent(in) :: c
       character(len=*), intent(in) :: name
-      card_int = nint(card_value(deck, gid, c, name))
+      integer :: k
+      k = field_number(deck, gid, name)
+      card_int = -huge(1)
+      if (k > 0) card_int = nint(c%value(k))
    end function card_int
 
    !> True when the field was not blank on the card.
-   logical function card_given(deck, gid, c, name)
+   pure logical function card_given(deck, gid, c, name)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: gid
       type(card_t), intent(in) :: c
       character(len=*), intent(in) :: name
-      card_given = c%given(field_number(deck, gid, name))
+      integer :: k
+      k = field_number(deck, gid, name)
+      card_given = .false.
+      if (k > 0) card_given = c%given(k)
    end function card_given
 
    !> True when group gid is in the deck with its card.
-   logical function single_card(deck, gid)
+   pure logical function single_card(deck, gid)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: gid
       single_card = deck%group(gid)%present .and. deck%group(gid)%n >= 1
@@ -60,32 +74,42 @@ contains
 
    !> A field of a one-card group: the card's value, or the field's default
    !! when the deck leaves the group out.
-   real(wp) function group_value(deck, gid, name)
+   pure real(wp) function group_value(deck, gid, name)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: gid
       character(len=*), intent(in) :: name
       integer :: k
       k = field_number(deck, gid, name)
-      if (single_card(deck, gid)) then
+      if (k == 0) then
+         group_value = ieee_value(0.0_wp, ieee_quiet_nan)
+      else if (single_card(deck, gid)) then
          group_value = deck%group(gid)%card(1)%value(k)
       else
          group_value = deck%spec(gid)%field(k)%default*deck%spec(gid)%field(k)%scale
       end if
    end function group_value
 
-   integer function group_int(deck, gid, name)
+   pure integer function group_int(deck, gid, name)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: gid
       character(len=*), intent(in) :: name
-      group_int = nint(group_value(deck, gid, name))
+      integer :: k
+      k = field_number(deck, gid, name)
+      group_int = -huge(1)
+      if (k == 0) return
+      if (single_card(deck, gid)) then
+         group_int = nint(deck%group(gid)%card(1)%value(k))
+      else
+         group_int = nint(deck%spec(gid)%field(k)%default)
+      end if
    end function group_int
 
    !> True when a one-card group is present and the field was not blank.
-   logical function group_given(deck, gid, name)
+   pure logical function group_given(deck, gid, name)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: gid
       character(len=*), intent(in) :: name
       group_given = .false.
-      if (single_card(deck, gid)) group_given = deck%group(gid)%card(1)%given(field_number(deck, gid, name))
+      if (single_card(deck, gid)) group_given = card_given(deck, gid, deck%group(gid)%card(1), name)
    end function group_given
 end module deck_fields

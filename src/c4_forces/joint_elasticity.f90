@@ -32,7 +32,8 @@ contains
       e%name = 'joint_elasticity'
       e%title = 'joint elasticity (C.4.c)'
       e%k = k_elastic
-      e%joints = pack([(i, i=1, n_joint)], k_elastic > 0.0_wp)
+      allocate (e%joints(count(k_elastic > 0.0_wp)))
+      e%joints(:) = pack([(i, i=1, n_joint)], k_elastic > 0.0_wp)
       e%rel0 = [(relative_angle(z0, i), i=1, n_joint)]
       e%has_energy(energy_stored) = .true.
    end function joint_elasticity_effect

@@ -37,7 +37,8 @@ contains
       e%title = 'joint friction (C.4.c)'
       e%c_friction = c_friction
       e%xi = xi
-      e%joints = pack([(i, i=1, n_joint)], c_friction > 0.0_wp)
+      allocate (e%joints(count(c_friction > 0.0_wp)))
+      e%joints(:) = pack([(i, i=1, n_joint)], c_friction > 0.0_wp)
       e%n_aux = size(e%joints)
       e%has_energy(energy_dissipated) = .true.
    end function joint_friction_effect

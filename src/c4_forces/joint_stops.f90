@@ -34,7 +34,8 @@ contains
       e%name = 'joint_stops'
       e%title = 'joint stops (C.4.c, figure 9)'
       e%restraint = restraint
-      e%joints = pack([(i, i=1, n_joint)], [(restraint_is_active(restraint(i)), i=1, n_joint)])
+      allocate (e%joints(count([(restraint_is_active(restraint(i)), i=1, n_joint)])))
+      e%joints(:) = pack([(i, i=1, n_joint)], [(restraint_is_active(restraint(i)), i=1, n_joint)])
       e%has_energy(energy_stored) = .true.
    end function joint_stops_effect
 

@@ -134,7 +134,6 @@ contains
       this%evaluations = this%evaluations + 1
       this%last_t = t
       status = 0
-      dydt = 0.0_wp
       if (this%needs_vehicle) vs = vehicle_state_at(this%vm, t)
       do o = 1, size(this%occupants)
          associate (occ => this%occupants(o))
@@ -157,44 +156,52 @@ contains
    end subroutine system_rhs
 
    !> The occupant's coordinates and rates are finite and within the bounds
-   !! of any physical state; if not, say which one left them.
+   !! of any physical state (NaN fails every comparison); if not, say which
+   !! one left them.
    logical function in_range(sys, occ, y) result(ok)
       type(crash_system_t), intent(inout) :: sys
       type(occupant_t), intent(in) :: occ
       real(wp), intent(in) :: y(:)
+      associate (z => y(occ%z_offset + 1:occ%z_offset + n_dof), zd => y(occ%zdot_offset + 1:occ%zdot_offset + n_dof))
+         ok = all(abs(z(1:n_seg)) <= max_angle) .and. all(abs(z(n_seg + 1:)) <= max_position) .and. &
+              all(abs(zd(1:n_seg)) <= max_rate) .and. all(abs(zd(n_seg + 1:)) <= max_speed)
+         if (.not. ok) sys%failure_detail = out_of_range(occ%label, z, zd)
+      end associate
+   end function in_range
+
+   !> Which coordinate or rate left its range, for the failure message.
+   pure function out_of_range(label, z, zd) result(text)
+      character(len=*), intent(in) :: label
+      real(wp), intent(in) :: z(n_dof), zd(n_dof)
+      character(len=:), allocatable :: text
       character(len=6), parameter :: names(n_dof) = [character(len=6) :: 'alpha1', 'alpha2', 'alpha3', &
          'alpha4', 'alpha5', 'alpha6', 'alpha7', 'alpha8', 'x_h', 'y_h']
-      real(wp) :: bound(2*n_dof), v
-      character(len=8) :: unit(2*n_dof)
+      real(wp) :: bound
+      character(len=:), allocatable :: name, unit
       integer :: i
-      bound(1:n_seg) = max_angle
-      bound(n_seg + 1:n_dof) = max_position
-      bound(n_dof + 1:n_dof + n_seg) = max_rate
-      bound(n_dof + n_seg + 1:) = max_speed
-      unit(1:n_seg) = 'rad'
-      unit(n_seg + 1:n_dof) = 'in'
-      unit(n_dof + 1:n_dof + n_seg) = 'rad/s'
-      unit(n_dof + n_seg + 1:) = 'in/s'
-      ok = .true.
-      do i = 1, 2*n_dof
-         if (i <= n_dof) then
-            v = y(occ%z_offset + i)
-         else
-            v = y(occ%zdot_offset + i - n_dof)
+      text = trim(label)//': the state left its range'
+      do i = 1, n_dof
+         name = trim(names(i))
+         bound = merge(max_angle, max_position, i <= n_seg)
+         unit = trim(merge('rad', 'in ', i <= n_seg))
+         if (.not. ieee_is_finite(z(i))) then
+            text = trim(label)//': '//name//' is not finite'
+            return
+         else if (abs(z(i)) > bound) then
+            text = trim(label)//': |'//name//'| = '//num(abs(z(i)))//' '//unit//' > '//num(bound)//' '//unit
+            return
          end if
-         if (ieee_is_finite(v)) then
-            if (abs(v) <= bound(i)) cycle
-            sys%failure_detail = trim(occ%label)//': |'//trim(names(1 + mod(i - 1, n_dof))) &
-               //trim(merge('    ', ' dot', i <= n_dof))//'| = '//num(abs(v))//' '//trim(unit(i))//' > ' &
-               //num(bound(i))//' '//trim(unit(i))
-         else
-            sys%failure_detail = trim(occ%label)//': '//trim(names(1 + mod(i - 1, n_dof))) &
-               //trim(merge('    ', ' dot', i <= n_dof))//' is not finite'
+         bound = merge(max_rate, max_speed, i <= n_seg)
+         unit = unit//'/s'
+         if (.not. ieee_is_finite(zd(i))) then
+            text = trim(label)//': '//name//' dot is not finite'
+            return
+         else if (abs(zd(i)) > bound) then
+            text = trim(label)//': |'//name//' dot| = '//num(abs(zd(i)))//' '//unit//' > '//num(bound)//' '//unit
+            return
          end if
-         ok = .false.
-         return
       end do
-   end function in_range
+   end function out_of_range
 
    pure function rhs_status_text(status) result(text)
       integer, intent(in) :: status

@@ -110,7 +110,7 @@ contains
       type(occupant_t), intent(in) :: occ
       real(wp), intent(in) :: t, y(:)
       type(vehicle_state_t), intent(in) :: vehicle
-      type(body_state_t), intent(out) :: st
+      type(body_state_t), intent(inout) :: st     ! inout: no default initialization per call
       st%t = t
       st%z = y(occ%z_offset + 1:occ%z_offset + n_dof)
       st%zdot = y(occ%zdot_offset + 1:occ%zdot_offset + n_dof)

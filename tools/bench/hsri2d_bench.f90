@@ -1,78 +1,148 @@
-!> hsri2d_bench: how long runs take. For each deck named, reads it once,
-!! runs the simulation (without writing a listing) several times and prints
-!! the median wall time per run, per simulated second and per right-hand-side
-!! evaluation, with the evaluation and step counts. tools/bench builds it in
-!! Release and runs it on the shipped decks; docs/performance.md keeps the
-!! figures.
+!> hsri2d_bench: what runs cost, in CPU time of this process (not wall
+!! time: the machines are shared). For each deck named it measures, as
+!! medians over many repetitions interleaved across the decks:
+!!   read   - reading the deck and building the model (C.1);
+!!   run    - the simulation alone, no output (C.2-C.7);
+!!   +lst   - the simulation writing its listing (to /dev/null);
+!!   +h5    - the simulation writing its listing and its HDF5 file;
+!! and prints them with the cost per simulated second and per right-hand-side
+!! evaluation. tools/bench builds it in Release and runs it on the shipped
+!! decks; docs/performance.md keeps the figures.
 !!
 !!   hsri2d_bench [--repeat N] DECK [DECK ...]
 program hsri2d_bench
-   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use kinds, only: wp
    use error_handling, only: error_t
-   use deck_reader, only: deck_t, deck_init, deck_add_file, deck_finish
-   use model_builder, only: build_model
+   use text_io, only: string_t, append_string
+   use deck_reader, only: deck_t
    use model, only: model_t
    use simulation, only: run_simulation
    use run_summary, only: run_summary_t
+   use run_case_mod, only: run_request_t, run_case, read_case_deck
    implicit none
 
-   integer :: repeat, i, k, n_args
+   integer, parameter :: n_parts = 4, p_read = 1, p_run = 2, p_lst = 3, p_h5 = 4
+   integer :: repeat, i, k, d, n_decks, null_unit, ios
    character(len=512) :: arg
-   real(wp), allocatable :: times(:)
-   type(model_t) :: m
-   type(run_summary_t) :: res
-   type(error_t) :: err
-   type(deck_t) :: deck
-   integer(int64) :: t0, t1, rate
-   real(wp) :: median
+   type(string_t), allocatable :: decks(:)
+   real(wp), allocatable :: times(:, :, :)       ! (repetition, part, deck)
+   type(model_t), allocatable :: models(:)
+   type(run_summary_t), allocatable :: results(:)
+   logical, allocatable :: usable(:)
+   character(len=*), parameter :: h5_scratch = '/tmp/hsri2d_bench_scratch.h5'
 
    repeat = 21
-   n_args = command_argument_count()
-   write (output_unit, '(a)') '  deck                          runs   median run (ms)  per sim s (ms)  per eval (us)' &
-      //'   evaluations      steps'
+   allocate (decks(0))
    i = 0
-   do while (i < n_args)
+   do while (i < command_argument_count())
       i = i + 1
       call get_command_argument(i, arg)
       if (arg == '--repeat') then
          i = i + 1
          call get_command_argument(i, arg)
-         read (arg, *) repeat
+         read (arg, *, iostat=ios) repeat
+         if (ios /= 0 .or. repeat < 1) then
+            write (error_unit, '(a)') 'hsri2d_bench: --repeat needs a positive integer'
+            stop 1
+         end if
          cycle
       end if
-      err = error_t()
-      call deck_init(deck)
-      call deck_add_file(deck, trim(arg), err)
-      call deck_finish(deck, err)
-      if (.not. err%failed()) call build_model(deck, m, err)
-      if (err%failed()) then
-         write (error_unit, '(a)') err%message
-         cycle
-      end if
-      allocate (times(repeat))
-      do k = 1, repeat
-         call system_clock(t0, rate)
-         call run_simulation(m, res, err)
-         call system_clock(t1)
-         times(k) = real(t1 - t0, wp)/real(rate, wp)
-      end do
-      median = median_of(times)
-      if (err%failed()) then
-         write (error_unit, '(a)') trim(arg)//': the run failed: '//err%message
-         deallocate (times)
-         cycle
-      else if (res%evaluations == 0 .or. .not. res%t_end > 0.0_wp) then
-         write (error_unit, '(a)') trim(arg)//': the run took no step'
-         deallocate (times)
-         cycle
-      end if
-      write (output_unit, '(2x,a30,i6,f18.3,f16.3,f15.3,i14,i11)') basename(trim(arg)), repeat, 1.0e3_wp*median, &
-         1.0e3_wp*median/res%t_end, 1.0e6_wp*median/real(res%evaluations, wp), res%evaluations, res%stats%steps
-      deallocate (times)
+      call append_string(decks, trim(arg))
+   end do
+   n_decks = size(decks)
+   allocate (times(repeat, n_parts, n_decks), models(n_decks), results(n_decks), usable(n_decks))
+   open (newunit=null_unit, file='/dev/null', action='write')
+
+   ! the decks must read and run
+   do d = 1, n_decks
+      block
+         type(error_t) :: err
+         type(deck_t) :: deck
+         call read_case_deck(request(d, .false.), deck, models(d), err)
+         if (.not. err%failed()) call run_simulation(models(d), results(d), err)
+         usable(d) = .not. err%failed() .and. results(d)%evaluations > 0
+         if (.not. usable(d)) write (error_unit, '(a)') decks(d)%s//': skipped: '//err%message
+      end block
    end do
 
+   ! interleaved: every repetition runs every part of every deck once
+   do k = 1, repeat
+      do d = 1, n_decks
+         if (.not. usable(d)) cycle
+         times(k, p_read, d) = cpu_of_read(d)
+         times(k, p_run, d) = cpu_of_run(d)
+         times(k, p_lst, d) = cpu_of_case(d, .false.)
+         times(k, p_h5, d) = cpu_of_case(d, .true.)
+      end do
+   end do
+
+   write (output_unit, '(a,i0,a)') '  CPU time per run, median of ', repeat, ' interleaved repetitions'
+   write (output_unit, '(a)') '  deck                         read (ms)   run (ms)  +lst (ms)   +h5 (ms)  per sim s (ms)' &
+      //'  per eval (us)  evaluations    steps'
+   do d = 1, n_decks
+      if (.not. usable(d)) cycle
+      associate (r => results(d), run => median_of(times(:, p_run, d)))
+         write (output_unit, '(2x,a28,4f11.3,f16.3,f15.3,i13,i9)') basename(decks(d)%s), &
+            1.0e3_wp*median_of(times(:, p_read, d)), 1.0e3_wp*run, 1.0e3_wp*median_of(times(:, p_lst, d)), &
+            1.0e3_wp*median_of(times(:, p_h5, d)), 1.0e3_wp*run/r%t_end, 1.0e6_wp*run/real(r%evaluations, wp), &
+            r%evaluations, r%stats%steps
+      end associate
+   end do
+   close (null_unit)
+   open (newunit=k, file=h5_scratch, status='old', iostat=ios)
+   if (ios == 0) close (k, status='delete')
+
 contains
+
+   function request(d, with_h5) result(req)
+      integer, intent(in) :: d
+      logical, intent(in) :: with_h5
+      type(run_request_t) :: req
+      allocate (req%decks(1))
+      req%decks(1) = decks(d)
+      req%listing_file = ''
+      req%listing_unit = null_unit
+      req%h5_file = ''
+      if (with_h5) req%h5_file = h5_scratch
+   end function request
+
+   real(wp) function cpu_of_read(d) result(dt)
+      integer, intent(in) :: d
+      type(error_t) :: err
+      type(deck_t) :: deck
+      type(model_t) :: m
+      real(wp) :: t0, t1
+      call cpu_time(t0)
+      call read_case_deck(request(d, .false.), deck, m, err)
+      call cpu_time(t1)
+      dt = t1 - t0
+   end function cpu_of_read
+
+   real(wp) function cpu_of_run(d) result(dt)
+      integer, intent(in) :: d
+      type(error_t) :: err
+      type(run_summary_t) :: res
+      real(wp) :: t0, t1
+      call cpu_time(t0)
+      call run_simulation(models(d), res, err)
+      call cpu_time(t1)
+      dt = t1 - t0
+   end function cpu_of_run
+
+   !> The whole case through the library (deck reading included, which
+   !! the read column lets one subtract).
+   real(wp) function cpu_of_case(d, with_h5) result(dt)
+      integer, intent(in) :: d
+      logical, intent(in) :: with_h5
+      type(error_t) :: err
+      real(wp) :: t0, t1
+      call cpu_time(t0)
+      call run_case(request(d, with_h5), err)
+      call cpu_time(t1)
+      dt = t1 - t0
+      if (err%failed()) write (error_unit, '(a)') decks(d)%s//': '//err%message
+   end function cpu_of_case
 
    real(wp) function median_of(x)
       real(wp), intent(in) :: x(:)
