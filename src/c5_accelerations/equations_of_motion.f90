@@ -9,7 +9,7 @@ module equations_of_motion
    use model, only: model_t, n_dof, n_seg
    use preliminary, only: body_constants_t
    use generalized_forces, only: scene_t, force_counts_t, generalized_force_vector
-   use body_matrix, only: body_accelerations
+   use body_matrix, only: body_accelerations, body_structure_matches, solver_structured, solver_dense
    use ode_system, only: ode_system_t
    implicit none
    private
@@ -36,6 +36,9 @@ module equations_of_motion
       type(force_counts_t) :: counts
       integer(i8) :: evaluations = 0
       real(wp) :: last_t = 0.0_wp       !< time of the last evaluation (for messages)
+      !> how A z'' = b is solved (C.5): figure 27's structured Cholesky, or
+      !! LAPACK for bodies coupled otherwise (body_matrix)
+      integer :: solver = solver_structured
    contains
       procedure :: rhs => body_rhs
    end type body_system_t
@@ -50,6 +53,7 @@ contains
       sys%m = m
       sys%bc = bc
       sys%scene = scene
+      if (.not. body_structure_matches(bc)) sys%solver = solver_dense
    end subroutine body_system_init
 
    !> Length of y for a scene: z, z' and one work integral per friction joint.
@@ -78,7 +82,7 @@ contains
       s = sin(y(1:n_seg))
       call generalized_force_vector(this%scene, this%m, this%bc, c, s, y(1:n_dof), &
                                     y(n_dof + 1:2*n_dof), b, dydt(2*n_dof + 1:), this%counts)
-      call body_accelerations(this%bc, c, s, b, zdd, info)
+      call body_accelerations(this%bc, c, s, b, zdd, info, this%solver)
       dydt(1:n_dof) = y(n_dof + 1:2*n_dof)
       dydt(n_dof + 1:2*n_dof) = zdd
       if (info /= 0) then
@@ -105,7 +109,7 @@ contains
       character(len=:), allocatable :: text
       select case (status)
       case (rhs_not_positive_definite)
-         text = 'the body matrix A (figure 27) is not positive definite (LAPACK dpotf2)'
+         text = 'the body matrix A (figure 27) is not positive definite (a Cholesky pivot is not positive and finite)'
       case (rhs_not_finite)
          text = 'the accelerations are not finite'
       case (rhs_diverged)
