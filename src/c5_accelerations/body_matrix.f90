@@ -16,7 +16,11 @@
 !!   diagonal are, row by row, one unbroken run of columns (first_col), so
 !!   a profile ("skyline") Cholesky whose loops run over those runs reads
 !!   and writes only the 31 structurally nonzero entries: no zero is ever
-!!   touched, no BLAS, no allocation. Reciprocal pivots are stored.
+!!   touched, no BLAS, no allocation. Reciprocal pivots are stored. The
+!!   loops carry gfortran's `!GCC$ unroll` directive (a comment to other
+!!   compilers): unrolled completely, every bound is a constant and the
+!!   loop overhead, which outweighed the arithmetic, goes away (2,400 ->
+!!   1,000 instructions per solve at -O2, docs/performance.md).
 !! * solver_dense: LAPACK's unblocked dpotf2 and two BLAS dtrsv (what dpotrs
 !!   does), on the whole lower triangle. It is the reference the structured
 !!   solve is tested against, and the path for any scene whose coupled
@@ -185,12 +189,14 @@ contains
       real(wp), intent(in) :: c(n_seg), s(n_seg)
       real(wp), intent(out) :: u(n_dof, n_dof)
       integer :: k, i, j
+      !GCC$ unroll 8
       do k = 1, n_seg
          ! figure 27 diagonal a_10..a_17 and hip rows -a_k sin, a_k cos
          u(step_of(k), step_of(k)) = bc%a(9 + k)
          u(step_of(k), 9) = -bc%a(k)*s(k)
          u(step_of(k), 10) = bc%a(k)*c(k)
       end do
+      !GCC$ unroll 14
       do k = 1, n_pairs
          ! figure 27: coupling(i, j) cos(alpha_i - alpha_j); i is eliminated after j
          i = coupled_i(k)
@@ -216,10 +222,13 @@ contains
       real(wp) :: pivot, l_pq
       integer :: p, q, k
       info = 0
+      !GCC$ unroll 10
       do p = 1, n_dof
          pivot = u(p, p)
+         !GCC$ unroll 9
          do q = first_col(p), p - 1
             l_pq = u(q, p)
+            !GCC$ unroll 9
             do k = max(first_col(p), first_col(q)), q - 1
                l_pq = l_pq - u(k, p)*u(k, q)
             end do
@@ -242,15 +251,19 @@ contains
       real(wp), intent(out) :: x(n_dof)
       real(wp) :: y(n_dof), t
       integer :: p, k
+      !GCC$ unroll 10
       do p = 1, n_dof
          t = b(elimination_order(p))
+         !GCC$ unroll 9
          do k = first_col(p), p - 1
             t = t - u(k, p)*y(k)
          end do
          y(p) = t*rpiv(p)
       end do
+      !GCC$ unroll 10
       do p = n_dof, 1, -1
          t = y(p)*rpiv(p)
+         !GCC$ unroll 9
          do k = first_col(p), p - 1
             y(k) = y(k) - u(k, p)*t
          end do
