@@ -20,7 +20,7 @@
 !!   loops carry gfortran's `!GCC$ unroll` directive (a comment to other
 !!   compilers): unrolled completely, every bound is a constant and the
 !!   loop overhead, which outweighed the arithmetic, goes away (2,400 ->
-!!   1,000 instructions per solve at -O2, docs/performance.md).
+!!   880 instructions per solve at -O2, docs/performance.md).
 !! * solver_dense: LAPACK's unblocked dpotf2 and two BLAS dtrsv (what dpotrs
 !!   does), on the whole lower triangle. It is the reference the structured
 !!   solve is tested against, and the path for any scene whose coupled
@@ -50,9 +50,10 @@ module body_matrix
    !> Elimination order: the generalized coordinate eliminated at step p.
    !! Leaves first - the lower then the upper leg (8, 7), the head (4), the
    !! lower then the upper arm (6, 5) - then the chain 3, 2, 1 and the hip
-   !! x_h, y_h last. Each step couples only coordinates still to come that
-   !! are already coupled with each other, except that every segment
-   !! couples x_h with y_h: the one fill-in is L(y_h, x_h).
+   !! x_h, y_h last. Eliminating a coordinate couples the coordinates still
+   !! to come that it touches; in this order those are already coupled with
+   !! each other, except x_h with y_h (every segment touches both): the one
+   !! fill-in is L(y_h, x_h).
    integer, parameter :: elimination_order(n_dof) = [8, 7, 4, 6, 5, 3, 2, 1, 9, 10]
    !> The inverse: the step at which coordinate k is eliminated.
    integer, parameter :: step_of(n_dof) = [8, 7, 6, 3, 5, 4, 2, 1, 9, 10]
@@ -79,8 +80,9 @@ contains
 
    !> Figure 27 (with errata E-27a, E-27b), from cos and sin of the inertial
    !! segment angles: cos(Theta_i - Theta_j) = cos(alpha_i - alpha_j) and
-   !! Theta_i - Phi = alpha_i. Only the lower triangle is needed by the
-   !! solver, but the whole matrix is filled for tests and checks.
+   !! Theta_i - Phi = alpha_i. The solvers fill only what they read
+   !! (lower_triangle, structured_fill); the whole matrix is for tests and
+   !! checks.
    pure subroutine body_matrix_assemble(bc, c, s, a)
       type(body_constants_t), intent(in) :: bc
       real(wp), intent(in) :: c(n_seg), s(n_seg)
@@ -209,7 +211,7 @@ contains
       u(10, 10) = bc%a(9)
    end subroutine structured_fill
 
-   !> Profile Cholesky, row by row (L in u as structured_fill stores A):
+   !> C.5: profile Cholesky, row by row (L in u as structured_fill stores A):
    !! L(p,q) = (A(p,q) - sum_k L(p,k) L(q,k)) / L(q,q) for q in the profile
    !! of row p, then L(p,p) = sqrt(A(p,p) - sum_k L(p,k)**2). The sums run
    !! over the columns both rows hold, from max(first_col(p), first_col(q)).
@@ -244,8 +246,8 @@ contains
       end do
    end subroutine structured_factor
 
-   !> x = A**-1 b from the factor: L y = P b forward by rows, L**T w = y
-   !! backward by columns (both over the profile only), x = P**T w.
+   !> C.5: z'' = x = A**-1 b from the factor: L y = P b forward by rows,
+   !! L**T w = y backward by columns (both over the profile only), x = P**T w.
    pure subroutine structured_solve(u, rpiv, b, x)
       real(wp), intent(in) :: u(n_dof, n_dof), rpiv(n_dof), b(n_dof)
       real(wp), intent(out) :: x(n_dof)
