@@ -5,13 +5,14 @@
 !! directions (two occupants; Section D) have room here.
 module occupant
    use kinds, only: wp, i8
-   use model, only: model_t, body_section_t, n_dof, n_seg
+   use model, only: model_t, body_section_t, n_dof, n_seg, solver_dense
    use preliminary, only: body_constants_t, body_constants, initial_state
    use effect_base, only: effect_t, effect_slot_t, body_state_t
    use effect_factory, only: build_effects
    use state_layout, only: state_layout_t
    use vehicle_motion, only: vehicle_state_t
-   use body_matrix, only: body_accelerations
+   use body_matrix, only: body_accelerations, body_structure_matches, matrix_structured => solver_structured, &
+      matrix_dense => solver_dense
    implicit none
    private
 
@@ -26,7 +27,10 @@ module occupant
       !> the effects evaluated by the right-hand side (those adding forces or
       !! integrating quantities of their own)
       integer, allocatable :: evaluated(:)
-      integer :: solver = 0
+      !> how A z'' = b is solved (C.5): the Cholesky written for figure 27's
+      !! structure, or LAPACK's dense one (*NUMERICS SOLVER, and always for a
+      !! body coupled otherwise)
+      integer :: solver = matrix_structured
       logical :: needs_vehicle = .false.
       !> offsets in y: z is y(z_offset+1 : z_offset+n_dof), z' likewise
       integer :: z_offset = 0, zdot_offset = 0
@@ -49,7 +53,8 @@ contains
       occ%label = label
       occ%body = m%body
       occ%bc = body_constants(m%body)
-      occ%solver = m%numerics%solver
+      occ%solver = matrix_structured
+      if (m%numerics%solver == solver_dense .or. .not. body_structure_matches(occ%bc)) occ%solver = matrix_dense
       call initial_state(m%body, m%vehicle, occ%z0, occ%zdot0)
       call build_effects(m, occ%bc, occ%z0, occ%effects)
       n_eff = size(occ%effects)
@@ -155,7 +160,7 @@ contains
       integer, intent(out) :: info
       real(wp) :: b(n_dof), zdd(n_dof)
       call occupant_forces(occ, st, y, b, dydt, counts)
-      call body_accelerations(occ%bc, st%c, st%s, b, zdd, info)
+      call body_accelerations(occ%bc, st%c, st%s, b, zdd, info, occ%solver)
       dydt(occ%z_offset + 1:occ%z_offset + n_dof) = st%zdot
       dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = zdd
    end subroutine occupant_rhs
