@@ -34,7 +34,7 @@ module vehicle_motion
 
    !> Vehicle state at a time: x_c, y_c, Phi; their rates; their accelerations.
    type :: vehicle_state_t
-      real(wp) :: pos(3) = 0.0_wp, vel(3) = 0.0_wp, acc(3) = 0.0_wp
+      real(wp) :: pos(3), vel(3), acc(3)
    end type vehicle_state_t
 
 contains

@@ -48,11 +48,13 @@ module effect_base
    !> What every effect sees at one evaluation: the time, the occupant's
    !! generalized coordinates and rates, the sines and cosines of the
    !! segment angles, and the vehicle's state (filled only when an effect of
-   !! the occupant needs it).
+   !! the occupant needs it). No default values: it is filled at every
+   !! evaluation (occupant_state), and initializing it there would cost as
+   !! much as a force.
    type :: body_state_t
-      real(wp) :: t = 0.0_wp
-      real(wp) :: z(n_dof) = 0.0_wp, zdot(n_dof) = 0.0_wp
-      real(wp) :: c(n_seg) = 0.0_wp, s(n_seg) = 0.0_wp
+      real(wp) :: t
+      real(wp) :: z(n_dof), zdot(n_dof)
+      real(wp) :: c(n_seg), s(n_seg)
       type(vehicle_state_t) :: vehicle
    end type body_state_t
 
@@ -81,6 +83,7 @@ module effect_base
       integer :: n_extra = 0             !< extra degrees of freedom (coordinates; rates follow)
       logical :: needs_vehicle = .false. !< reads st%vehicle
       logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)
+      logical :: has_memory = .false.    !< its accept changes something (only such are called)
       logical :: has_energy(n_energy_kinds) = .false.
    contains
       procedure(add_forces_interface), deferred :: add_forces

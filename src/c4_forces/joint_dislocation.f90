@@ -29,6 +29,7 @@ contains
       e%name = 'joint_dislocation'
       e%title = 'joint dislocation (C.4.c, figure 10)'
       e%acts = .false.
+      e%has_memory = .true.
       e%lower = restraint%dislocation_lower
       e%upper = restraint%dislocation_upper
    end function joint_dislocation_effect

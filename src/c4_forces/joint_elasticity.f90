@@ -2,10 +2,10 @@
 !! (alpha_i0 - alpha_m0)], the spring at rest in the initial position.
 module joint_elasticity
    use kinds, only: wp
-   use model, only: n_dof, n_joint
+   use model, only: n_dof, n_joint, joint_partner
    use effect_base, only: effect_t, body_state_t, energy_stored, n_energy_kinds
    use output_series, only: output_series_t, series_new
-   use joint_coupling, only: relative_angle, apply_joint_torque, joint_columns, joint_list_text
+   use joint_coupling, only: relative_angle, joint_columns, joint_list_text
    implicit none
    private
 
@@ -44,12 +44,18 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: extra_rate(:), aux_rate(:)
-      integer :: n, i
+      integer :: n, i, m
+      real(wp) :: tau
       associate (u1 => size(extra) + size(aux), u2 => size(extra_rate) + size(aux_rate))
       end associate
+      ! written out (joint_coupling's rule, +tau on i and -tau on m) because
+      ! it runs at every evaluation
       do n = 1, size(this%joints)
          i = this%joints(n)
-         call apply_joint_torque(b, i, -this%k(i)*(relative_angle(st%z, i) - this%rel0(i)))
+         m = joint_partner(i)
+         tau = -this%k(i)*((st%z(i) - st%z(m)) - this%rel0(i))
+         b(i) = b(i) + tau
+         b(m) = b(m) - tau
       end do
    end subroutine elasticity_add_forces
 

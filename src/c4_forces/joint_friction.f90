@@ -6,10 +6,10 @@
 !! the integration error.
 module joint_friction
    use kinds, only: wp
-   use model, only: n_dof, n_joint
+   use model, only: n_dof, n_joint, joint_partner
    use effect_base, only: effect_t, body_state_t, energy_dissipated, n_energy_kinds
    use output_series, only: output_series_t, series_new
-   use joint_coupling, only: relative_rate, apply_joint_torque, joint_columns, joint_list_text
+   use joint_coupling, only: joint_columns, joint_list_text
    implicit none
    private
 
@@ -61,15 +61,17 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: extra_rate(:), aux_rate(:)
-      integer :: n, i
+      integer :: n, i, m
       real(wp) :: w, tau
       associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
       end associate
       do n = 1, size(this%joints)
          i = this%joints(n)
-         w = relative_rate(st%zdot, i)
+         m = joint_partner(i)
+         w = st%zdot(i) - st%zdot(m)
          tau = friction_torque(this%c_friction(i), this%xi(i), w)
-         call apply_joint_torque(b, i, tau)
+         b(i) = b(i) + tau
+         b(m) = b(m) - tau
          aux_rate(n) = -tau*w      ! power dissipated, >= 0
       end do
    end subroutine friction_add_forces

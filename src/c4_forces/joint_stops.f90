@@ -4,10 +4,10 @@
 !! only (docs/errata.md D-4): a joint resting on its stop still feels it.
 module joint_stops
    use kinds, only: wp
-   use model, only: n_dof, n_joint, restraint_t
+   use model, only: n_dof, n_joint, restraint_t, joint_partner
    use effect_base, only: effect_t, body_state_t, energy_stored, n_energy_kinds
    use output_series, only: output_series_t, series_new
-   use joint_coupling, only: relative_angle, apply_joint_torque, joint_columns, joint_list_text
+   use joint_coupling, only: relative_angle, joint_columns, joint_list_text
    use joint_restraints, only: restraint_torque, restraint_energy, restraint_is_active
    implicit none
    private
@@ -45,12 +45,16 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: extra_rate(:), aux_rate(:)
-      integer :: n, i
+      integer :: n, i, m
+      real(wp) :: tau
       associate (u1 => size(extra) + size(aux), u2 => size(extra_rate) + size(aux_rate))
       end associate
       do n = 1, size(this%joints)
          i = this%joints(n)
-         call apply_joint_torque(b, i, restraint_torque(this%restraint(i), relative_angle(st%z, i)))
+         m = joint_partner(i)
+         tau = restraint_torque(this%restraint(i), st%z(i) - st%z(m))
+         b(i) = b(i) + tau
+         b(m) = b(m) - tau
       end do
    end subroutine stops_add_forces
 

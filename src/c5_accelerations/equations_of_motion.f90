@@ -11,7 +11,7 @@ module equations_of_motion
    use model, only: model_t, n_dof, n_seg
    use ode_system, only: ode_system_t
    use state_layout, only: state_layout_t
-   use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init, vehicle_state_t, vehicle_state_at
+   use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init, vehicle_state_at
    use effect_base, only: body_state_t
    use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_initial_y, &
       occupant_add_effect
@@ -118,7 +118,8 @@ contains
       integer, intent(in) :: o
       real(wp), intent(in) :: t, y(:)
       type(body_state_t) :: st
-      call occupant_state(sys%occupants(o), t, y, vehicle_state_at(sys%vm, t), st)
+      call occupant_state(sys%occupants(o), t, y, st)
+      st%vehicle = vehicle_state_at(sys%vm, t)
    end function system_body_state
 
    subroutine system_rhs(this, t, y, dydt, status)
@@ -127,21 +128,20 @@ contains
       real(wp), intent(in) :: y(:)
       real(wp), intent(out) :: dydt(:)
       integer, intent(out) :: status
-      type(vehicle_state_t) :: vs
       type(body_state_t) :: st
       integer :: o, info
 
       this%evaluations = this%evaluations + 1
       this%last_t = t
       status = 0
-      if (this%needs_vehicle) vs = vehicle_state_at(this%vm, t)
       do o = 1, size(this%occupants)
          associate (occ => this%occupants(o))
             if (.not. in_range(this, occ, y)) then
                status = rhs_diverged
                return
             end if
-            call occupant_state(occ, t, y, vs, st)
+            call occupant_state(occ, t, y, st)
+            if (occ%needs_vehicle) st%vehicle = vehicle_state_at(this%vm, t)
             call occupant_rhs(occ, st, y, dydt, this%counts(:, o), info)
             if (info /= 0) then
                status = rhs_not_positive_definite

@@ -10,7 +10,6 @@ module occupant
    use effect_base, only: effect_t, effect_slot_t, body_state_t
    use effect_factory, only: build_effects
    use state_layout, only: state_layout_t
-   use vehicle_motion, only: vehicle_state_t
    use body_matrix, only: body_accelerations, body_structure_matches, matrix_structured => solver_structured, &
       matrix_dense => solver_dense
    implicit none
@@ -25,8 +24,9 @@ module occupant
       type(body_constants_t) :: bc
       type(effect_slot_t), allocatable :: effects(:)
       !> the effects evaluated by the right-hand side (those adding forces or
-      !! integrating quantities of their own)
-      integer, allocatable :: evaluated(:)
+      !! integrating quantities of their own), and those with memory (whose
+      !! accept is called after each accepted step)
+      integer, allocatable :: evaluated(:), remembering(:)
       !> how A z'' = b is solved (C.5): the Cholesky written for figure 27's
       !! structure, or LAPACK's dense one (*NUMERICS SOLVER, and always for a
       !! body coupled otherwise)
@@ -60,7 +60,7 @@ contains
       n_eff = size(occ%effects)
       call layout%reserve(label//': z', n_dof, occ%z_offset)
       call layout%reserve(label//': z''', n_dof, occ%zdot_offset)
-      allocate (occ%extra_offset(n_eff), occ%aux_offset(n_eff), occ%evaluated(0))
+      allocate (occ%extra_offset(n_eff), occ%aux_offset(n_eff), occ%evaluated(0), occ%remembering(0))
       do k = 1, n_eff
          call place_effect(occ, k, layout)
       end do
@@ -77,7 +77,9 @@ contains
          call layout%reserve(trim(occ%label)//': '//trim(e%name)//' work', e%n_aux, occ%aux_offset(k))
          occ%needs_vehicle = occ%needs_vehicle .or. e%needs_vehicle
          if (.not. allocated(occ%evaluated)) allocate (occ%evaluated(0))
+         if (.not. allocated(occ%remembering)) allocate (occ%remembering(0))
          if (e%acts .or. e%n_aux > 0 .or. e%n_extra > 0) occ%evaluated = [(occ%evaluated(j), j=1, size(occ%evaluated)), k]
+         if (e%has_memory) occ%remembering = [(occ%remembering(j), j=1, size(occ%remembering)), k]
       end associate
    end subroutine place_effect
 
@@ -110,18 +112,17 @@ contains
    end subroutine occupant_initial_y
 
    !> What the effects see: the occupant's coordinates and rates in y, the
-   !! sines and cosines of the segment angles, the vehicle's state.
-   pure subroutine occupant_state(occ, t, y, vehicle, st)
+   !! sines and cosines of the segment angles. The caller sets st%vehicle
+   !! when the occupant's effects need it (occ%needs_vehicle).
+   pure subroutine occupant_state(occ, t, y, st)
       type(occupant_t), intent(in) :: occ
       real(wp), intent(in) :: t, y(:)
-      type(vehicle_state_t), intent(in) :: vehicle
-      type(body_state_t), intent(inout) :: st     ! inout: no default initialization per call
+      type(body_state_t), intent(inout) :: st
       st%t = t
       st%z = y(occ%z_offset + 1:occ%z_offset + n_dof)
       st%zdot = y(occ%zdot_offset + 1:occ%zdot_offset + n_dof)
       st%c = cos(st%z(1:n_seg))
       st%s = sin(st%z(1:n_seg))
-      st%vehicle = vehicle
    end subroutine occupant_state
 
    !> b = C - G + J + S + B + Q (C.4): the sum of the evaluated effects'

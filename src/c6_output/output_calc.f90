@@ -42,13 +42,11 @@ contains
    !! (C.6; the kinematic acceleration, as the report defines it). Written
    !! out for the two chains (hip - L1 - L2 - upper torso - L3 - head) as it
    !! runs on every accepted step.
-   pure subroutine head_chest_acceleration(body, z, zdot, zdd, a_head, a_chest)
+   pure subroutine head_chest_acceleration(body, c, s, zdot, zdd, a_head, a_chest)
       type(body_section_t), intent(in) :: body
-      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
+      real(wp), intent(in) :: c(n_seg), s(n_seg), zdot(n_dof), zdd(n_dof)
       real(wp), intent(out) :: a_head, a_chest
-      real(wp) :: c(head), s(head), spine(2), chest_cg(2), head_cg(2)
-      c = cos(z(1:head))
-      s = sin(z(1:head))
+      real(wp) :: spine(2), chest_cg(2), head_cg(2)
       spine = [zdd(hip_x), zdd(hip_y)] + link(1, body%length(1)) + link(2, body%length(2))
       chest_cg = spine + link(chest, body%rho(chest))
       head_cg = spine + link(chest, body%length(3)) + link(head, body%rho(head))
@@ -96,7 +94,7 @@ contains
          r%veh_pos = vs%pos
          r%veh_vel = vs%vel
          r%veh_acc = vs%acc
-         call head_chest_acceleration(body, r%z, r%zdot, r%zdd, r%head_acc, r%chest_acc)
+         call head_chest_acceleration(body, st%c, st%s, r%zdot, r%zdd, r%head_acc, r%chest_acc)
          ! Theta_i = alpha_i + Phi (section B)
          r%theta = r%z(1:n_seg) + vs%pos(3)
          do i = 1, n_joint

@@ -8,9 +8,11 @@ module simulation
    use kinds, only: wp, i8
    use error_handling, only: error_t, error_set, exit_numerical
    use strings, only: num
-   use model, only: model_t, n_dof, n_joint, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
+   use model, only: model_t, n_dof, n_joint, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state, &
       rhs_status_text, rhs_diverged
+   use occupant, only: occupant_state
+   use vehicle_motion, only: vehicle_state_at
    use ode_system, only: stepper_t, step_ok, step_rhs_failed, step_status_text
    use runge_kutta4, only: rk4_stepper_t
    use adams_moulton, only: am_stepper_t, am_start_euler, am_start_rk4
@@ -21,7 +23,7 @@ module simulation
    use output_registry, only: output_registry_t, output_frame_t
    use output_producers, only: registry_build, frame_fill, frame_energy, energy_balance_t
    use output_sink, only: output_sink_t
-   use run_summary, only: run_summary_t, occupant_summary_t, extreme_t, raise, lower, summary_add_event
+   use run_summary, only: run_summary_t, occupant_summary_t, extreme_t, raise, summary_add_event
    use end_tests, only: end_state_t, end_none, end_time, end_failure, end_energy, end_test_update, body_at_rest
    implicit none
    private
@@ -165,7 +167,7 @@ contains
          integer, intent(out) :: reason_out
          type(accept_result_t) :: ar
          real(wp) :: a_head, a_chest, delta
-         integer :: k, q, occ_i, xo, ao, restart_status
+         integer :: k, q, j, occ_i, xo, ao, restart_status
          logical :: at_rest, injured, restart
 
          restart = .false.
@@ -173,8 +175,11 @@ contains
          at_rest = .true.
          do occ_i = 1, n_occ
             associate (occ => sys%occupants(occ_i), os => summary%occ(occ_i))
-               st = system_body_state(sys, occ_i, t_now, y)
-               do k = 1, size(occ%effects)
+               ! the vehicle's state only when something reads it
+               call occupant_state(occ, t_now, y, st)
+               if (sys%needs_vehicle .or. m%options%nend == nend_rest) st%vehicle = vehicle_state_at(sys%vm, t_now)
+               do q = 1, size(occ%remembering)
+                  k = occ%remembering(q)
                   ar%restart = .false.
                   ar%n_events = 0
                   xo = occ%extra_offset(k)
@@ -183,21 +188,21 @@ contains
                      call e%accept(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), ar)
                   end associate
                   restart = restart .or. ar%restart
-                  do q = 1, ar%n_events
-                     ar%events(q)%occupant = occ_i
-                     injured = injured .or. ar%events(q)%injury
-                     call summary_add_event(summary, ar%events(q))
-                     if (present(sink) .and. .not. out_err%failed()) call sink%event(ar%events(q), out_err)
+                  do j = 1, ar%n_events
+                     ar%events(j)%occupant = occ_i
+                     injured = injured .or. ar%events(j)%injury
+                     call summary_add_event(summary, ar%events(j))
+                     if (present(sink) .and. .not. out_err%failed()) call sink%event(ar%events(j), out_err)
                   end do
                end do
-               call head_chest_acceleration(occ%body, st%z, st%zdot, &
+               call head_chest_acceleration(occ%body, st%c, st%s, st%zdot, &
                                             stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), a_head, a_chest)
                call raise(os%head_max, a_head, t_now)
                call raise(os%chest_max, a_chest, t_now)
                do k = 1, n_joint
-                  delta = relative_angle(st%z, k)
-                  call lower(os%joint_min(k), delta, t_now)
-                  call raise(os%joint_max(k), delta, t_now)
+                  delta = st%z(k) - st%z(joint_partner(k))
+                  if (delta < os%joint_min(k)%value) os%joint_min(k) = extreme_t(delta, t_now)
+                  if (delta > os%joint_max(k)%value) os%joint_max(k) = extreme_t(delta, t_now)
                end do
                if (m%options%nend == nend_rest) at_rest = at_rest .and. body_at_rest(occ%body, m%end_tests, st%z, &
                                                                                    st%zdot, st%vehicle)
