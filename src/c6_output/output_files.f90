@@ -415,7 +415,7 @@ contains
          return
       end if
       if (errno /= errno_not_found) then
-         call error_set(err, exit_io, prefix//': '//posix_error_text(errno))
+         call error_set(err, exit_io, prefix//': '//posix_error_text(errno)//directory_note(errno, path))
          return
       end if
       if (len(last_name(path)) == 0) then
