@@ -92,7 +92,7 @@ contains
       integer :: mode, errno
 
       call reset(this, path, label)
-      allocate (character(len=buffer_bytes) :: this%buf)
+      if (.not. allocated(this%buf)) allocate (character(len=buffer_bytes) :: this%buf)
       if (len(path) == 0) then
          this%fd = stdout_fd
          this%active = .true.
@@ -108,7 +108,7 @@ contains
       end if
       if (errno /= 0) then
          call error_set(err, exit_io, 'cannot write the '//label//' to '//path//': '//posix_error_text(errno) &
-                        //directory_note(errno, this%dest))
+                        //directory_note(errno, path))
          return
       end if
       this%active = .true.
@@ -137,7 +137,7 @@ contains
       this%temp_used = this%temp
       if (errno /= 0) then
          call error_set(err, exit_io, 'cannot create '//label//' '//path//': '//posix_error_text(errno) &
-                        //directory_note(errno, this%dest))
+                        //directory_note(errno, path))
          return
       end if
       ignore = posix_close(fd)
@@ -192,7 +192,7 @@ contains
       class(output_file_t), intent(inout) :: this
       type(error_t), intent(inout) :: err
       type(error_t) :: local
-      integer :: errno, ignore
+      integer :: errno, close_errno, ignore
       character(len=:), allocatable :: step
 
       if (.not. this%active) return
@@ -202,15 +202,12 @@ contains
       if (.not. local%failed() .and. this%fd >= 0 .and. this%fd /= stdout_fd) then
          ! fsync first: after a system crash the target holds either the
          ! old contents or the whole new file, never an empty one.
-         if (len(this%temp) > 0) then
-            errno = posix_sync(this%fd)
-            step = 'cannot write the '//this%label//' to '//this%display_name()
-         end if
-         if (errno == 0) then
-            errno = posix_close(this%fd)
-            step = 'cannot write the '//this%label//' to '//this%display_name()
-         end if
+         if (len(this%temp) > 0) errno = posix_sync(this%fd)
+         ! Closed whatever the sync gave; the first failure is reported.
+         close_errno = posix_close(this%fd)
+         if (errno == 0) errno = close_errno
          this%fd = -1
+         step = 'cannot write the '//this%label//' to '//this%display_name()
       else if (.not. local%failed() .and. this%fd < 0 .and. len(this%temp) > 0) then
          errno = posix_sync_path(this%temp)
          step = 'cannot write '//this%label//' '//this%display_name()
