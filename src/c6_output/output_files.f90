@@ -301,8 +301,9 @@ contains
    !> Refuse (exit status 1) outputs that would overwrite an input: the
    !! listing (`listing_file`, '' = standard output) or the HDF5 file
    !! (`h5_file`, '' = none) being one of the decks or the pulse file
-   !! (`pulse_file`, '' = none), or both outputs naming the same file. Runs
-   !! before any output file is created.
+   !! (`pulse_file`, '' = none), or both outputs being the same file (also
+   !! standard output redirected to the HDF5 file). Runs before any output
+   !! file is created.
    subroutine check_output_paths(decks, pulse_file, listing_file, h5_file, err)
       type(string_t), intent(in) :: decks(:)
       character(len=*), intent(in) :: pulse_file, listing_file, h5_file
@@ -312,6 +313,13 @@ contains
       if (len(listing_file) > 0 .and. len(h5_file) > 0) then
          if (same_file(listing_file, h5_file)) then
             call error_set(err, exit_usage, '-o and --h5 name the same file: '//listing_file//' and '//h5_file)
+            return
+         end if
+      end if
+      if (len(listing_file) == 0 .and. len(h5_file) > 0) then
+         if (is_standard_output(h5_file)) then
+            call error_set(err, exit_usage, 'standard output is the HDF5 file '//h5_file// &
+                           '; write the listing elsewhere (-o)')
             return
          end if
       end if
@@ -340,8 +348,6 @@ contains
                               '; refusing to overwrite it')
                return
             end if
-            if (is_standard_output(h5_file)) &
-               call error_set(err, exit_usage, 'the HDF5 file '//h5_file//' is standard output')
          end if
       end subroutine refuse
    end subroutine check_output_paths
@@ -352,7 +358,10 @@ contains
    logical function same_file(a, b)
       character(len=*), intent(in) :: a, b
       type(file_info_t) :: ia, ib
-      if (posix_file_info(a, ia) == 0 .and. posix_file_info(b, ib) == 0) then
+      integer :: errno_a, errno_b
+      errno_a = posix_file_info(a, ia)
+      errno_b = posix_file_info(b, ib)
+      if (errno_a == 0 .and. errno_b == 0) then
          same_file = ia%dev == ib%dev .and. ia%ino == ib%ino
       else
          same_file = canonical_path(a) == canonical_path(b)

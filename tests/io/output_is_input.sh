@@ -2,8 +2,8 @@
 # An output that is one of the run's inputs is refused with status 1 before
 # anything is written: the listing or the HDF5 file naming an input deck or
 # the CSV pulse file (by inode, through a symbolic link, by another spelling
-# of the path), -o and --h5 naming one file, standard output appended to a
-# deck. The inputs stay as they were and no output file is created.
+# of the path), -o and --h5 naming one file, standard output redirected to
+# the HDF5 file or appended to a deck. The inputs stay as they were and no output file is created.
 #
 # Usage: output_is_input.sh HSRI2D WORK_DIRECTORY
 test_name=io_output_is_input
@@ -46,6 +46,13 @@ refused 'the listing file csv.deck is the input deck csv.deck' @default csv.deck
 refused '-o and --h5 name the same file' -o out.x --h5 out.x
 refused '-o and --h5 name the same file' -o sub/../out.x --h5 out.x
 [ ! -e out.x ] || fail "out.x was created"
+
+# Standard output redirected to the HDF5 file.
+"$exe" --h5 out.h5 >out.h5 2>err
+expect_status 1 $? "--h5 out.h5 >out.h5"
+expect_text err 'standard output is the HDF5 file out.h5' "--h5 out.h5 >out.h5"
+no_part_files .
+rm -f out.h5
 
 # Standard output appended to the deck it reads.
 "$exe" in.deck >>in.deck 2>err
