@@ -10,6 +10,8 @@ program hsri2d
    use deck_doc, only: write_deck_format
    use default_deck, only: default_deck_lines
    use run_case_mod, only: run_request_t, run_case
+   use output_files, only: output_file_t
+   use posix_files, only: posix_ignore_file_size_signal
    use version_info, only: hsri2d_version
    implicit none
 
@@ -25,16 +27,20 @@ program hsri2d
    type(run_request_t) :: req
    type(error_t) :: err
    type(string_t), allocatable :: builtin(:)
-   integer :: i
+   integer :: ignore
+
+   ! A file-size limit (ulimit -f) then makes writes fail with an error
+   ! that is reported (exit status 4) instead of killing the program.
+   ignore = posix_ignore_file_size_signal()
 
    call parse_command_line(opts, err)
    if (err%failed()) call quit(err)
    if (opts%help) then
-      write (output_unit, '(a)') usage_text()
+      call say([string_t(usage_text())])
       call finish(exit_ok)
    end if
    if (opts%version) then
-      write (output_unit, '(a)') 'hsri2d '//hsri2d_version
+      call say([string_t('hsri2d '//hsri2d_version)])
       call finish(exit_ok)
    end if
    if (opts%deck_format) then
@@ -43,9 +49,7 @@ program hsri2d
    end if
    builtin = default_deck_lines()
    if (opts%print_default_deck) then
-      do i = 1, size(builtin)
-         write (output_unit, '(a)') builtin(i)%s
-      end do
+      call say(builtin)
       call finish(exit_ok)
    end if
 
@@ -56,10 +60,25 @@ program hsri2d
    req%check_only = opts%check_only
    call run_case(req, err)
    if (err%failed()) call quit(err)
-   if (opts%check_only) write (output_unit, '(a)') 'hsri2d: the deck is valid'
+   if (opts%check_only) call say([string_t('hsri2d: the deck is valid')])
    call finish(exit_ok)
 
 contains
+
+   !> Lines on standard output, every write checked (Fortran's own writes
+   !! to standard output do not report a full disk or a closed pipe).
+   subroutine say(lines)
+      type(string_t), intent(in) :: lines(:)
+      type(output_file_t) :: out
+      type(error_t) :: e
+      integer :: k
+      call out%create_text('', 'output', e)
+      do k = 1, size(lines)
+         call out%put_line(lines(k)%s)
+      end do
+      call out%commit(e)
+      if (e%failed()) call quit(e)
+   end subroutine say
 
    !> Print an error report on standard error and exit with its status.
    subroutine quit(e)
@@ -75,8 +94,10 @@ contains
 
    subroutine finish(code)
       integer, intent(in) :: code
-      flush (output_unit)
-      flush (error_unit)
+      integer :: ios
+      ! iostat: a failure here must not become a runtime error message.
+      flush (output_unit, iostat=ios)
+      flush (error_unit, iostat=ios)
       call c_exit(int(code, c_int))
    end subroutine finish
 end program hsri2d

@@ -1,19 +1,23 @@
 !> The run's time histories in an HDF5 file, written as the run goes (C.6).
 !!
-!! Layout (h5py shapes; Fortran shapes are the reverse):
+!! Layout, format_version 2 (h5py shapes; Fortran shapes are the reverse):
 !!
-!! - root attributes `title`, `program` (= "hsri2d"), `units`;
+!! - root attributes `format_version` (integer, 2), `program` (= "hsri2d"),
+!!   `version` (the program's version), `title`, `units`;
 !! - `/input/deck`: the deck's card images, 1-D fixed-length strings;
-!! - one dataset per series, e.g. `/time`, `/body/z`: float64 of shape
-!!   (rows, ncols), growing along rows, chunked; every series is 2-D, even a
-!!   one-column one such as `/time` (shape (rows, 1)), so that readers need
-!!   no special case. Attributes `columns` and `units` (string arrays, one
-!!   per column) and `description`;
+!! - one dataset per series, e.g. `/time`, `/body/z`: float64 growing along
+!!   rows, chunked; 1-D, (rows), for a series of one column such as
+!!   `/time`, otherwise 2-D, (rows, ncols) (`add_series`'s `rank` can make
+!!   a one-column series 2-D);
 !! - `/events/time` (float64), `/events/kind` (int32), `/events/index`
 !!   (int32), `/events/text` (80-character strings): 1-D, one entry per
 !!   event, present (empty) even when no event happens.
 !!
-!! Strings are stored fixed-length, null-padded, ASCII.
+!! Every dataset, /input/deck and /events/* included, carries `columns` and
+!! `units` (one string per column; "-" for a dimensionless or text column)
+!! and `description`. Attribute strings are variable-length UTF-8 (h5py 3
+!! reads them as `str`); string datasets are fixed-length, null-padded
+!! ASCII (h5py: `.asstr()`).
 !!
 !! Rows are kept in memory per series and written in blocks of
 !! `block_rows` (also the chunk length), which amortizes HDF5's
@@ -33,14 +37,30 @@
 !! When the caller flushes at least every `block_rows` rows, only
 !! `add_event` touches the file between flushes.
 !!
+!! Write failures (a full disk, a file-size limit). Once a write or flush
+!! has failed the file is abandoned: every later call returns that failure
+!! without calling HDF5, and `close` releases nothing of the file. The
+!! reason: HDF5 1.10 (fixed in 1.14) frees a dataset or file whose close
+!! fails but leaves its identifier registered, so any later use of it, by
+!! us or by HDF5's own clean-up at exit, reads freed memory (a segmentation
+!! fault after "cannot close HDF5 file"). For the same reason HDF5's
+!! clean-up at exit is switched off (H5dont_atexit, before the library
+!! starts): every file this module opens is closed by `close`, so there is
+!! nothing for it to do but trip over an abandoned file. An abandoned file
+!! keeps its memory and descriptor until the process ends. Messages of
+!! write failures end with the system's reason (errno) when there is one.
+!!
 !! No times are stored in object headers (object time tracking is off for
 !! the root group, groups and datasets), so the same calls with the same
 !! HDF5 library give a byte-identical file.
 module history_h5
+   use, intrinsic :: iso_c_binding, only: c_char, c_ptr, c_loc, c_null_char
    use kinds, only: wp
    use error_handling, only: error_t, error_set, exit_io
+   use posix_files, only: posix_clear_errno, posix_errno, posix_error_text
+   use version_info, only: hsri2d_version
    use hdf5, only: hid_t, hsize_t, size_t, &
-                   h5open_f, h5eset_auto_f, h5iis_valid_f, &
+                   h5open_f, h5dont_atexit_f, h5eset_auto_f, h5iis_valid_f, &
                    h5fcreate_f, h5fclose_f, h5fflush_f, h5f_acc_trunc_f, h5f_scope_global_f, h5f_close_strong_f, &
                    h5pcreate_f, h5pclose_f, h5pset_obj_track_times_f, h5pset_fclose_degree_f, h5pset_chunk_f, &
                    h5p_file_create_f, h5p_file_access_f, h5p_group_create_f, h5p_dataset_create_f, &
@@ -49,12 +69,18 @@ module history_h5
                    h5s_scalar_f, h5s_unlimited_f, h5s_select_set_f, &
                    h5dcreate_f, h5dclose_f, h5dset_extent_f, h5dget_space_f, h5dwrite_f, &
                    h5acreate_f, h5aclose_f, h5awrite_f, &
-                   h5tcopy_f, h5tclose_f, h5tset_size_f, h5tset_strpad_f, h5t_str_nullpad_f, &
+                   h5tcopy_f, h5tclose_f, h5tset_size_f, h5tset_strpad_f, h5tset_cset_f, h5t_str_nullpad_f, &
+                   h5t_cset_utf8_f, h5t_c_s1, &
                    h5t_native_character, h5t_native_double, h5t_native_integer, h5t_ieee_f64le, h5t_std_i32le
    implicit none
    private
 
-   public :: history_file_t
+   public :: history_file_t, history_format_version
+
+   !> Version of the file layout, the root attribute `format_version`: 2
+   !! since /time became 1-D, the root got `version` and attribute strings
+   !! became variable-length UTF-8.
+   integer, parameter :: history_format_version = 2
 
    !> Rows kept in memory per series before they are written; also the
    !! chunk length along rows.
@@ -68,6 +94,9 @@ module history_h5
 
    !> Identifier value meaning "nothing open".
    integer(hid_t), parameter :: no_id = -1_hid_t
+   !> H5T_VARIABLE, C's (size_t)-1, which HDF5 1.10's Fortran interface
+   !! does not name; its h5tset_size_f hands the value on to C unchanged.
+   integer(size_t), parameter :: variable_length = -1_size_t
 
    character(len=*), parameter :: units_text = &
       'inch, pound force, second, radian unless an attribute says otherwise'
@@ -77,6 +106,8 @@ module history_h5
       character(len=:), allocatable :: name
       integer(hid_t) :: dset = no_id
       integer :: ncols = 0
+      !> 1: one value per row, a 1-D dataset; 2: (rows, ncols).
+      integer :: rank = 2
       !> Rows already in the file.
       integer(hsize_t) :: rows_written = 0
       !> Rows waiting in buf(:, 1:nbuf).
@@ -97,6 +128,8 @@ module history_h5
       type(series_t), allocatable :: series(:)
       integer(hid_t) :: ev_time = no_id, ev_kind = no_id, ev_index = no_id, ev_text = no_id
       integer(hsize_t) :: nevents = 0
+      !> The first write failure; once set, the file is abandoned (see above).
+      character(len=:), allocatable :: failure
    contains
       !> Create (truncate) the file: root attributes, /input/deck, /events.
       procedure :: open => history_file_open
@@ -135,6 +168,7 @@ contains
          return
       end if
       this%path = path
+      if (allocated(this%failure)) deallocate (this%failure)
 
       call init_hdf5(hdferr)
       if (hdferr < 0) then
@@ -153,17 +187,18 @@ contains
       ! The root group is created with the file: no times in its header.
       if (hdferr >= 0) call h5pset_obj_track_times_f(fcpl, .false., hdferr)
       if (hdferr >= 0) call h5pcreate_f(h5p_file_access_f, fapl, hdferr)
-      ! Closing the file then releases every object in it, even after an error.
+      ! Closing the file then releases every object in it.
       if (hdferr >= 0) call h5pset_fclose_degree_f(fapl, h5f_close_strong_f, hdferr)
       if (hdferr >= 0) call h5pcreate_f(h5p_group_create_f, this%gcpl, hdferr)
       if (hdferr >= 0) call h5pset_obj_track_times_f(this%gcpl, .false., hdferr)
       if (hdferr < 0) then
          call error_set(err, exit_io, 'cannot set up HDF5 properties to write '//path)
       else
+         call posix_clear_errno()
          call h5fcreate_f(path, h5f_acc_trunc_f, this%file, hdferr, creation_prp=fcpl, access_prp=fapl)
          if (hdferr < 0) then
             this%file = no_id
-            call error_set(err, exit_io, 'cannot create HDF5 file '//path)
+            call error_set(err, exit_io, 'cannot create HDF5 file '//path//system_reason())
          end if
       end if
       if (fcpl > 0) call h5pclose_f(fcpl, ignore)
@@ -179,9 +214,13 @@ contains
 
       ! `local`, not `err`, says whether a step failed: `err` may hold an
       ! earlier, unrelated error.
-      call write_string_attribute(this%file, this%path, '/', 'title', [title], .true., local)
+      call write_int_attribute(this%file, this%path, '/', 'format_version', history_format_version, local)
       if (.not. local%failed()) &
          call write_string_attribute(this%file, this%path, '/', 'program', ['hsri2d'], .true., local)
+      if (.not. local%failed()) &
+         call write_string_attribute(this%file, this%path, '/', 'version', [hsri2d_version], .true., local)
+      if (.not. local%failed()) &
+         call write_string_attribute(this%file, this%path, '/', 'title', [title], .true., local)
       if (.not. local%failed()) &
          call write_string_attribute(this%file, this%path, '/', 'units', [units_text], .true., local)
       if (.not. local%failed()) call write_deck(this%file, this%gcpl, this%path, deck_lines, local)
@@ -192,13 +231,24 @@ contains
       if (.not. local%failed()) &
          call create_growing(this%file, this%path, 'events/time', h5t_ieee_f64le, 0, event_chunk, this%ev_time, local)
       if (.not. local%failed()) &
+         call describe(this%ev_time, this%path, 'events/time', ['t'], ['s'], 'time of each injury event', local)
+      if (.not. local%failed()) &
          call create_growing(this%file, this%path, 'events/kind', h5t_std_i32le, 0, event_chunk, this%ev_kind, local)
       if (.not. local%failed()) &
+         call describe(this%ev_kind, this%path, 'events/kind', ['kind'], ['-'], &
+                       'kind of each event, a code (events/text says it in words)', local)
+      if (.not. local%failed()) &
          call create_growing(this%file, this%path, 'events/index', h5t_std_i32le, 0, event_chunk, this%ev_index, local)
+      if (.not. local%failed()) &
+         call describe(this%ev_index, this%path, 'events/index', ['index'], ['-'], &
+                       'the joint or segment each event concerns, numbered from 1', local)
       if (.not. local%failed()) call create_event_text(this%file, this%path, this%ev_text, local)
+      if (.not. local%failed()) &
+         call describe(this%ev_text, this%path, 'events/text', ['text'], ['-'], &
+                       'each event in words (up to 80 characters)', local)
       ! Flushed now so that even a run killed before its first flush leaves
       ! a readable file (with the deck).
-      if (.not. local%failed()) call flush_file(this%file, this%path, local)
+      if (.not. local%failed()) call flush_file(this, 'cannot create HDF5 file '//this%path, local)
       if (local%failed()) then
          call release(this)
          call error_set(err, local%code, local%message)
@@ -206,9 +256,12 @@ contains
    end subroutine history_file_open
 
    !> Add a series `name` (a path such as "body/z"; missing groups are
-   !! created) with one column per entry of `columns` and `units`. `id`
-   !! is what `append` takes; 0 when it fails.
-   subroutine history_file_add_series(this, name, columns, units, description, id, err)
+   !! created) with one column per entry of `columns` and `units`. `rank`
+   !! chooses the dataset's shape: 1, rows only, for a series of one
+   !! column (such as /time); 2, (rows, ncols). By default a one-column
+   !! series is 1-D and any other 2-D. `id` is what `append` takes; 0 when
+   !! it fails.
+   subroutine history_file_add_series(this, name, columns, units, description, id, err, rank)
       class(history_file_t), intent(inout) :: this
       character(len=*), intent(in) :: name
       character(len=*), intent(in) :: columns(:)
@@ -216,10 +269,11 @@ contains
       character(len=*), intent(in) :: description
       integer, intent(out) :: id
       type(error_t), intent(inout) :: err
+      integer, intent(in), optional :: rank
       type(series_t), allocatable :: bigger(:)
       type(error_t) :: local
       integer(hid_t) :: dset
-      integer :: i, ignore
+      integer :: i, ignore, shape_rank
 
       id = 0
       if (.not. this%is_open()) then
@@ -235,6 +289,17 @@ contains
                         ': it needs at least one column and one unit per column')
          return
       end if
+      shape_rank = merge(1, 2, size(columns) == 1)
+      if (present(rank)) shape_rank = rank
+      if (shape_rank /= 2 .and. (shape_rank /= 1 .or. size(columns) /= 1)) then
+         call error_set(err, exit_io, 'cannot add series '//trim(name)//' to '//this%path// &
+                        ': rank 1 takes one column, and the rank is 1 or 2')
+         return
+      end if
+      if (allocated(this%failure)) then
+         call error_set(err, exit_io, this%failure)
+         return
+      end if
 
       ! Groups on the way, e.g. "body" for "body/z".
       do i = 2, len_trim(name)
@@ -247,13 +312,9 @@ contains
          end if
       end do
 
-      call create_growing(this%file, this%path, trim(name), h5t_ieee_f64le, size(columns), block_rows, dset, local)
-      if (.not. local%failed()) &
-         call write_string_attribute(dset, this%path, trim(name), 'columns', columns, .false., local)
-      if (.not. local%failed()) &
-         call write_string_attribute(dset, this%path, trim(name), 'units', units, .false., local)
-      if (.not. local%failed()) &
-         call write_string_attribute(dset, this%path, trim(name), 'description', [description], .true., local)
+      call create_growing(this%file, this%path, trim(name), h5t_ieee_f64le, &
+                          merge(0, size(columns), shape_rank == 1), block_rows, dset, local)
+      if (.not. local%failed()) call describe(dset, this%path, trim(name), columns, units, description, local)
       if (local%failed()) then
          if (dset > 0) call h5dclose_f(dset, ignore)
          call error_set(err, local%code, local%message)
@@ -271,12 +332,14 @@ contains
          s%name = trim(name)
          s%dset = dset
          s%ncols = size(columns)
+         s%rank = shape_rank
          s%rows_written = 0
          s%nbuf = 0
          allocate (s%buf(s%ncols, block_rows))
       end associate
       ! The file's structure is then on disk even if no row ever is.
-      call flush_file(this%file, this%path, err)
+      call flush_file(this, 'cannot add series '//trim(name)//' to HDF5 file '//this%path, local)
+      if (local%failed()) call error_set(err, local%code, local%message)
    end subroutine history_file_add_series
 
    !> Append one row to series `id`; `values` holds one value per column.
@@ -307,14 +370,13 @@ contains
                            ' in '//this%path//': it has '//trim(want)//' columns')
             return
          end if
-         if (s%nbuf == block_rows) then
-            ! The block could not be written earlier: try again first.
-            call write_block(this%path, s, err)
-            if (s%nbuf == block_rows) return
+         if (allocated(this%failure)) then
+            call error_set(err, exit_io, this%failure)
+            return
          end if
          s%nbuf = s%nbuf + 1
          s%buf(:, s%nbuf) = values
-         if (s%nbuf == block_rows) call write_block(this%path, s, err)
+         if (s%nbuf == block_rows) call write_block(this, s, err)
       end associate
    end subroutine history_file_append
 
@@ -336,17 +398,22 @@ contains
          call error_set(err, exit_io, 'cannot add an event: no HDF5 file is open')
          return
       end if
+      if (allocated(this%failure)) then
+         call error_set(err, exit_io, this%failure)
+         return
+      end if
       start = this%nevents
       one = 1
       n_new = this%nevents + 1
       line(1) = text
 
+      call posix_clear_errno()
       call select_new_rows(this%ev_time, n_new, start, one, fspace, mspace, hdferr)
       if (hdferr >= 0) call h5dwrite_f(this%ev_time, h5t_native_double, [time], one, hdferr, &
                                        mem_space_id=mspace, file_space_id=fspace)
       call close_spaces(fspace, mspace)
       if (hdferr < 0) then
-         call error_set(err, exit_io, 'cannot write dataset events/time in '//this%path)
+         call write_failed(this, 'cannot write dataset events/time in '//this%path, err)
          return
       end if
 
@@ -355,7 +422,7 @@ contains
                                        mem_space_id=mspace, file_space_id=fspace)
       call close_spaces(fspace, mspace)
       if (hdferr < 0) then
-         call error_set(err, exit_io, 'cannot write dataset events/kind in '//this%path)
+         call write_failed(this, 'cannot write dataset events/kind in '//this%path, err)
          return
       end if
 
@@ -364,7 +431,7 @@ contains
                                        mem_space_id=mspace, file_space_id=fspace)
       call close_spaces(fspace, mspace)
       if (hdferr < 0) then
-         call error_set(err, exit_io, 'cannot write dataset events/index in '//this%path)
+         call write_failed(this, 'cannot write dataset events/index in '//this%path, err)
          return
       end if
 
@@ -376,7 +443,7 @@ contains
       if (memtype > 0) call h5tclose_f(memtype, ignore)
       call close_spaces(fspace, mspace)
       if (hdferr < 0) then
-         call error_set(err, exit_io, 'cannot write dataset events/text in '//this%path)
+         call write_failed(this, 'cannot write dataset events/text in '//this%path, err)
          return
       end if
       this%nevents = this%nevents + 1
@@ -389,34 +456,25 @@ contains
       class(history_file_t), intent(inout) :: this
       type(error_t), intent(inout) :: err
       type(error_t) :: local
-      integer :: k
 
       if (.not. this%is_open()) then
          call error_set(err, exit_io, 'cannot flush: no HDF5 file is open')
          return
       end if
-      do k = 1, this%nseries
-         call write_block(this%path, this%series(k), local)
-         if (local%failed()) exit
-      end do
-      if (.not. local%failed()) call flush_file(this%file, this%path, local)
+      call flush_file(this, 'cannot flush HDF5 file '//this%path, local)
       if (local%failed()) call error_set(err, local%code, local%message)
    end subroutine history_file_flush
 
    !> Write pending rows and close the file. Everything is released even
-   !! when a write fails; an error already in `err` is kept rather than
-   !! replaced. Does nothing when the file is not open.
+   !! when a write fails (an abandoned file: only our handles on it); an
+   !! error already in `err` is kept rather than replaced. Does nothing
+   !! when the file is not open.
    subroutine history_file_close(this, err)
       class(history_file_t), intent(inout) :: this
       type(error_t), intent(inout) :: err
       type(error_t) :: local
-      integer :: k
 
       if (.not. this%is_open()) return
-      do k = 1, this%nseries
-         if (local%failed()) exit
-         call write_block(this%path, this%series(k), local)
-      end do
       call release(this, local)
       if (local%failed() .and. .not. err%failed()) call error_set(err, local%code, local%message)
    end subroutine history_file_close
@@ -429,54 +487,102 @@ contains
 
    ! ---------------------------------------------------------------- helpers
 
+   !> Record a write failure: `message` and the system's reason, if any,
+   !! become the file's failure (it is abandoned from now on) and go to err.
+   subroutine write_failed(this, message, err)
+      class(history_file_t), intent(inout) :: this
+      character(len=*), intent(in) :: message
+      type(error_t), intent(inout) :: err
+      if (.not. allocated(this%failure)) this%failure = message//system_reason()
+      call error_set(err, exit_io, this%failure)
+   end subroutine write_failed
+
+   !> ": No space left on device" when errno says why an HDF5 call that
+   !! writes to the file failed (cleared just before the call), else ''.
+   function system_reason() result(reason)
+      character(len=:), allocatable :: reason
+      integer :: errno
+      errno = posix_errno()
+      reason = ''
+      if (errno /= 0) reason = ': '//posix_error_text(errno)
+   end function system_reason
+
    !> Close everything and return the object to its never-opened state.
-   !! A failure to close the file is reported through `err` when present.
+   !! Pending rows are written and the file flushed first, so closing has
+   !! nothing left to write. A file whose writes failed is abandoned
+   !! instead (see the module's notes). Failures go to `err` when present.
    subroutine release(this, err)
       class(history_file_t), intent(inout) :: this
       type(error_t), intent(inout), optional :: err
+      type(error_t) :: local
       integer :: k, ignore, hdferr
 
-      if (allocated(this%series)) then
+      if (this%file > 0 .and. .not. allocated(this%failure)) &
+         call flush_file(this, 'cannot close HDF5 file '//this%path, local)
+      if (allocated(this%failure)) then
+         if (present(err)) call error_set(err, exit_io, this%failure)
+      else
          do k = 1, this%nseries
             if (this%series(k)%dset > 0) call h5dclose_f(this%series(k)%dset, ignore)
          end do
-         deallocate (this%series)
+         call close_dataset(this%ev_time)
+         call close_dataset(this%ev_kind)
+         call close_dataset(this%ev_index)
+         call close_dataset(this%ev_text)
+         if (this%file > 0) then
+            call posix_clear_errno()
+            call h5fclose_f(this%file, hdferr)
+            if (hdferr < 0 .and. present(err)) &
+               call error_set(err, exit_io, 'cannot close HDF5 file '//this%path//system_reason())
+         end if
       end if
+      if (allocated(this%series)) deallocate (this%series)
       this%nseries = 0
-      call close_dataset(this%ev_time)
-      call close_dataset(this%ev_kind)
-      call close_dataset(this%ev_index)
-      call close_dataset(this%ev_text)
+      this%ev_time = no_id
+      this%ev_kind = no_id
+      this%ev_index = no_id
+      this%ev_text = no_id
       this%nevents = 0
+      this%file = no_id
+      ! A property list belongs to no file: always safe to close.
       if (this%gcpl > 0) call h5pclose_f(this%gcpl, ignore)
       this%gcpl = no_id
-      if (this%file > 0) then
-         call h5fclose_f(this%file, hdferr)
-         if (hdferr < 0 .and. present(err)) call error_set(err, exit_io, 'cannot close HDF5 file '//this%path)
-      end if
-      this%file = no_id
    end subroutine release
 
    !> Initialize HDF5's Fortran interface unless that is done already:
    !! h5open_f creates the predefined types anew at every call (some 30 kB
    !! that h5close_f alone frees), so it is called only when they are not
-   !! valid yet.
+   !! valid yet. HDF5's clean-up at exit is switched off first (see the
+   !! module's notes); that call fails, harmlessly, once the library has
+   !! started.
    subroutine init_hdf5(hdferr)
       integer, intent(out) :: hdferr
       logical :: ready
+      call h5dont_atexit_f(hdferr)
       call h5iis_valid_f(h5t_native_double, ready, hdferr)
       if (hdferr < 0 .or. .not. ready) call h5open_f(hdferr)
    end subroutine init_hdf5
 
-   !> Have HDF5 write everything it holds for the file (metadata, chunk
-   !! caches) to the operating system.
-   subroutine flush_file(file, path, err)
-      integer(hid_t), intent(in) :: file
-      character(len=*), intent(in) :: path
+   !> Write the pending rows of every series, then have HDF5 write
+   !! everything it holds for the file (metadata, chunk caches) to the
+   !! operating system. `failure` says what failed if that does.
+   subroutine flush_file(this, failure, err)
+      class(history_file_t), intent(inout) :: this
+      character(len=*), intent(in) :: failure
       type(error_t), intent(inout) :: err
-      integer :: hdferr
-      call h5fflush_f(file, h5f_scope_global_f, hdferr)
-      if (hdferr < 0) call error_set(err, exit_io, 'cannot flush HDF5 file '//path)
+      integer :: k, hdferr
+
+      if (allocated(this%failure)) then
+         call error_set(err, exit_io, this%failure)
+         return
+      end if
+      do k = 1, this%nseries
+         call write_block(this, this%series(k), err)
+         if (allocated(this%failure)) return
+      end do
+      call posix_clear_errno()
+      call h5fflush_f(this%file, h5f_scope_global_f, hdferr)
+      if (hdferr < 0) call write_failed(this, failure, err)
    end subroutine flush_file
 
    subroutine close_dataset(dset)
@@ -488,24 +594,37 @@ contains
 
    !> Write the pending rows of one series to its dataset (nothing to do
    !! when none are pending).
-   subroutine write_block(path, s, err)
-      character(len=*), intent(in) :: path
+   subroutine write_block(this, s, err)
+      class(history_file_t), intent(inout) :: this
       type(series_t), intent(inout) :: s
       type(error_t), intent(inout) :: err
-      integer(hsize_t) :: n_new(2), start(2), count(2)
+      integer(hsize_t), allocatable :: n_new(:), start(:), count(:)
       integer(hid_t) :: fspace, mspace
       integer :: hdferr
 
       if (s%nbuf == 0) return
-      n_new = [int(s%ncols, hsize_t), s%rows_written + s%nbuf]
-      start = [0_hsize_t, s%rows_written]
-      count = [int(s%ncols, hsize_t), int(s%nbuf, hsize_t)]
+      if (allocated(this%failure)) then
+         call error_set(err, exit_io, this%failure)
+         return
+      end if
+      if (s%rank == 1) then
+         n_new = [s%rows_written + s%nbuf]
+         start = [s%rows_written]
+         count = [int(s%nbuf, hsize_t)]
+      else
+         n_new = [int(s%ncols, hsize_t), s%rows_written + s%nbuf]
+         start = [0_hsize_t, s%rows_written]
+         count = [int(s%ncols, hsize_t), int(s%nbuf, hsize_t)]
+      end if
+      call posix_clear_errno()
       call select_new_rows(s%dset, n_new, start, count, fspace, mspace, hdferr)
-      if (hdferr >= 0) call h5dwrite_f(s%dset, h5t_native_double, s%buf(:, 1:s%nbuf), count, hdferr, &
+      ! A 1-D series' buffer (1, nbuf) is the same memory as its nbuf values.
+      if (hdferr >= 0) call h5dwrite_f(s%dset, h5t_native_double, s%buf(:, 1:s%nbuf), &
+                                       [int(s%ncols, hsize_t), int(s%nbuf, hsize_t)], hdferr, &
                                        mem_space_id=mspace, file_space_id=fspace)
       call close_spaces(fspace, mspace)
       if (hdferr < 0) then
-         call error_set(err, exit_io, 'cannot write dataset '//s%name//' in '//path)
+         call write_failed(this, 'cannot write dataset '//s%name//' in '//this%path, err)
          return
       end if
       s%rows_written = s%rows_written + s%nbuf
@@ -576,6 +695,21 @@ contains
       if (space > 0) call h5sclose_f(space, ignore)
    end subroutine create_growing
 
+   !> The attributes every dataset carries: `columns` and `units` (one
+   !! string per column) and `description`.
+   subroutine describe(dset, path, name, columns, units, description, err)
+      integer(hid_t), intent(in) :: dset
+      character(len=*), intent(in) :: path, name
+      character(len=*), intent(in) :: columns(:), units(:), description
+      type(error_t), intent(inout) :: err
+      type(error_t) :: local
+      call write_string_attribute(dset, path, name, 'columns', columns, .false., local)
+      if (.not. local%failed()) call write_string_attribute(dset, path, name, 'units', units, .false., local)
+      if (.not. local%failed()) &
+         call write_string_attribute(dset, path, name, 'description', [description], .true., local)
+      if (local%failed()) call error_set(err, local%code, local%message)
+   end subroutine describe
+
    !> The 80-character event text dataset (its type is not a predefined one).
    subroutine create_event_text(file, path, dset, err)
       integer(hid_t), intent(in) :: file
@@ -618,7 +752,8 @@ contains
 
    !> Attach a string attribute to object `obj` (named `obj_name` in
    !! messages): a scalar when `scalar` (values has one element), else a
-   !! 1-D array. Stored as wide as the longest value with blanks trimmed.
+   !! 1-D array. Variable-length UTF-8 strings (h5py 3 reads them as str),
+   !! trailing blanks trimmed.
    subroutine write_string_attribute(obj, path, obj_name, name, values, scalar, err)
       integer(hid_t), intent(in) :: obj
       character(len=*), intent(in) :: path
@@ -626,42 +761,67 @@ contains
       character(len=*), intent(in) :: values(:)
       logical, intent(in) :: scalar
       type(error_t), intent(inout) :: err
-      character(len=1) :: blanks(size(values))
+      character(kind=c_char), allocatable, target :: chars(:)
+      type(c_ptr), allocatable, target :: starts(:)
       integer(hsize_t) :: dims(1)
-      integer(hid_t) :: space, ftype, mtype, attr
-      integer :: hdferr, ignore
+      integer(hid_t) :: space, vtype, attr
+      integer :: hdferr, ignore, k, i, at, n
+
+      ! The C strings, one after the other, and a pointer to each.
+      allocate (chars(sum(len_trim(values)) + size(values)), starts(max(1, size(values))))
+      at = 1
+      do k = 1, size(values)
+         n = len_trim(values(k))
+         starts(k) = c_loc(chars(at))
+         do i = 1, n
+            chars(at + i - 1) = values(k)(i:i)
+         end do
+         chars(at + n) = c_null_char
+         at = at + n + 1
+      end do
 
       dims = size(values, kind=hsize_t)
       space = no_id
-      ftype = no_id
-      mtype = no_id
+      vtype = no_id
       attr = no_id
       if (scalar) then
          call h5screate_f(h5s_scalar_f, space, hdferr)
       else
          call h5screate_simple_f(1, dims, space, hdferr)
       end if
-      if (hdferr >= 0) call string_type(stored_width(values), .true., ftype, hdferr)
-      if (hdferr >= 0) call string_type(max(1, len(values)), .false., mtype, hdferr)
-      if (hdferr >= 0) call h5acreate_f(obj, name, ftype, space, attr, hdferr)
-      if (hdferr >= 0) then
-         ! Zero-length strings: HDF5 string types have at least one character.
-         if (len(values) == 0) then
-            blanks = ' '
-            call h5awrite_f(attr, mtype, blanks, dims, hdferr)
-         else if (scalar) then
-            call h5awrite_f(attr, mtype, values(1), dims, hdferr)
-         else
-            call h5awrite_f(attr, mtype, values, dims, hdferr)
-         end if
-      end if
+      if (hdferr >= 0) call h5tcopy_f(h5t_c_s1, vtype, hdferr)
+      if (hdferr >= 0) call h5tset_size_f(vtype, variable_length, hdferr)
+      if (hdferr >= 0) call h5tset_cset_f(vtype, h5t_cset_utf8_f, hdferr)
+      if (hdferr >= 0) call h5acreate_f(obj, name, vtype, space, attr, hdferr)
+      if (hdferr >= 0 .and. size(values) > 0) call h5awrite_f(attr, vtype, c_loc(starts(1)), hdferr)
       if (hdferr < 0) call error_set(err, exit_io, 'cannot write attribute '//name//' of '//obj_name// &
                                      ' in '//path)
       if (attr > 0) call h5aclose_f(attr, ignore)
-      if (mtype > 0) call h5tclose_f(mtype, ignore)
-      if (ftype > 0) call h5tclose_f(ftype, ignore)
+      if (vtype > 0) call h5tclose_f(vtype, ignore)
       if (space > 0) call h5sclose_f(space, ignore)
    end subroutine write_string_attribute
+
+   !> Attach a scalar 32-bit integer attribute to object `obj`.
+   subroutine write_int_attribute(obj, path, obj_name, name, value, err)
+      integer(hid_t), intent(in) :: obj
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: obj_name, name
+      integer, intent(in) :: value
+      type(error_t), intent(inout) :: err
+      integer(hsize_t) :: dims(1)
+      integer(hid_t) :: space, attr
+      integer :: hdferr, ignore
+      dims = 1
+      space = no_id
+      attr = no_id
+      call h5screate_f(h5s_scalar_f, space, hdferr)
+      if (hdferr >= 0) call h5acreate_f(obj, name, h5t_std_i32le, space, attr, hdferr)
+      if (hdferr >= 0) call h5awrite_f(attr, h5t_native_integer, value, dims, hdferr)
+      if (hdferr < 0) call error_set(err, exit_io, 'cannot write attribute '//name//' of '//obj_name// &
+                                     ' in '//path)
+      if (attr > 0) call h5aclose_f(attr, ignore)
+      if (space > 0) call h5sclose_f(space, ignore)
+   end subroutine write_int_attribute
 
    !> Width of strings stored for `values`: the longest with trailing
    !! blanks trimmed, at least 1. HDF5 trims the rest when it converts the
@@ -703,6 +863,8 @@ contains
       if (hdferr >= 0 .and. size(deck_lines) > 0 .and. len(deck_lines) > 0) &
          call h5dwrite_f(dset, mtype, deck_lines, dims, hdferr)
       if (hdferr < 0) call error_set(err, exit_io, 'cannot write dataset input/deck in '//path)
+      if (hdferr >= 0) call describe(dset, path, 'input/deck', ['card'], ['-'], &
+                                     'the card images of the deck, in the order read', err)
       if (dset > 0) call h5dclose_f(dset, ignore)
       if (dcpl > 0) call h5pclose_f(dcpl, ignore)
       if (mtype > 0) call h5tclose_f(mtype, ignore)

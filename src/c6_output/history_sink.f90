@@ -53,7 +53,7 @@ contains
       type(output_registry_t), intent(in) :: reg
       type(output_frame_t), intent(in) :: first
       type(error_t), intent(inout) :: err
-      integer :: k
+      integer :: k, c
       associate (u1 => size(sys%occupants), u2 => first%t)
       end associate
       this%reg = reg
@@ -65,9 +65,16 @@ contains
       do k = 1, size(reg%series)
          if (err%failed()) return
          associate (s => reg%series(k))
-            call this%file%add_series(s%name, s%col%name, s%col%unit, s%description, this%id(k), err)
+            call add_one(s%name, [(s%col(c)%name, c=1, size(s%col))], [(s%col(c)%unit, c=1, size(s%col))], &
+                         s%description, this%id(k))
          end associate
       end do
+   contains
+      subroutine add_one(name, columns, units, description, id)
+         character(len=*), intent(in) :: name, columns(:), units(:), description
+         integer, intent(out) :: id
+         call this%file%add_series(name, columns, units, description, id, err)
+      end subroutine add_one
    end subroutine sink_begin
 
    subroutine sink_record(this, frame, err)
@@ -132,7 +139,7 @@ contains
                                                        'when each maximum happened', id_t, err)
       if (.not. err%failed()) call this%file%append(id_v, values, err)
       if (.not. err%failed()) call this%file%append(id_t, times, err)
-      if (.not. err%failed()) call this%file%flush(err)
+      ! written at close
    contains
       subroutine put(name, unit, value, t)
          character(len=*), intent(in) :: name, unit

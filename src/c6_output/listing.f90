@@ -2,8 +2,14 @@
 !! each page headed by the program, the run title, the section and the
 !! page number. A form feed starts every page after the first. Nothing in
 !! it depends on the clock, so the same run gives the same bytes.
+!!
+!! A listing is an output file (output_files): create it with
+!! `create_text(path, 'listing', err)` ('' = standard output), `start` it,
+!! write it, and end it with `commit` (or `deliver_outputs`) or `discard`.
+!! Every write is checked; `flush` and `commit` report a failure.
 module listing
    use strings, only: itoa
+   use output_files, only: output_file_t
    implicit none
    private
 
@@ -11,15 +17,13 @@ module listing
 
    integer, parameter :: listing_width = 132
 
-   type :: listing_t
-      integer :: unit = -1
+   type, extends(output_file_t) :: listing_t
       integer :: page = 0
       integer :: line = 0
       integer :: lines_per_page = 60
       character(len=72) :: title = ' '
       character(len=60) :: section = ' '
       character(len=24) :: program = ' '
-      integer :: io_status = 0           !< first write error (0: none)
    contains
       procedure :: start => listing_start
       procedure :: new_page => listing_new_page
@@ -31,11 +35,10 @@ module listing
 
 contains
 
-   subroutine listing_start(this, unit, program, title)
+   !> Begin the first page (the file is created already, by create_text).
+   subroutine listing_start(this, program, title)
       class(listing_t), intent(inout) :: this
-      integer, intent(in) :: unit
       character(len=*), intent(in) :: program, title
-      this%unit = unit
       this%program = program
       this%title = title
       this%page = 0
@@ -67,12 +70,14 @@ contains
       this%line = 3
    end subroutine page_header
 
-   !> One line (cut at 132 columns), opening a new page when the page is full.
+   !> One line, opening a new page when the page is full. Lines are never
+   !! cut: the writers keep them within 132 columns (a test checks every
+   !! shipped deck's listing).
    subroutine listing_put(this, text)
       class(listing_t), intent(inout) :: this
       character(len=*), intent(in) :: text
       if (this%line >= this%lines_per_page) call page_header(this)
-      call emit(this, trim(text(1:min(len(text), listing_width))))
+      call emit(this, trim(text))
       this%line = this%line + 1
    end subroutine listing_put
 
@@ -102,8 +107,6 @@ contains
    subroutine emit(this, text)
       class(listing_t), intent(inout) :: this
       character(len=*), intent(in) :: text
-      integer :: ios
-      write (this%unit, '(a)', iostat=ios) text
-      if (ios /= 0 .and. this%io_status == 0) this%io_status = ios
+      call this%put_line(text)
    end subroutine emit
 end module listing

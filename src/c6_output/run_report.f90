@@ -53,17 +53,17 @@ module run_report
 
 contains
 
-   !> Prepare the listing on unit (already open) for the deck and model.
-   subroutine listing_sink_start(this, unit, deck, m, version)
-      type(listing_sink_t), intent(out) :: this
-      integer, intent(in) :: unit
+   !> Prepare the listing (this%lst, created already: output_files) for
+   !! the deck and model.
+   subroutine listing_sink_start(this, deck, m, version)
+      type(listing_sink_t), intent(inout) :: this
       type(deck_t), intent(in) :: deck
       type(model_t), intent(in) :: m
       character(len=*), intent(in) :: version
       this%deck = deck
       this%m = m
       this%version = version
-      call this%lst%start(unit, 'HSRI-2D '//version, m%title)
+      call this%lst%start('HSRI-2D '//version, m%title)
    end subroutine listing_sink_start
 
    subroutine sink_begin(this, sys, reg, first, err)

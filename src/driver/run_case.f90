@@ -3,11 +3,10 @@
 !! tests call. The program (src/app/hsri2d.f90) only parses its command
 !! line, calls run_case and turns the error into an exit status.
 module run_case_mod
-   use, intrinsic :: iso_fortran_env, only: output_unit
    use error_handling, only: error_t, error_set, exit_io
-   use strings, only: itoa
-   use text_io, only: string_t
+   use text_io, only: string_t, append_string
    use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
+   use deck_cards, only: g_pulsefile
    use default_deck, only: default_deck_lines
    use model_builder, only: build_model
    use model, only: model_t
@@ -19,6 +18,7 @@ module run_case_mod
    use effect_base, only: event_t
    use run_report, only: listing_sink_t, listing_sink_start
    use history_sink, only: history_sink_t, history_sink_open
+   use output_files, only: output_file_t, check_output_paths, deliver_outputs
    use version_info, only: hsri2d_version
    implicit none
    private
@@ -43,8 +43,7 @@ module run_case_mod
    !> What to run and where the results go.
    type :: run_request_t
       type(string_t), allocatable :: decks(:)        !< in order; builtin_deck_name = the built-in deck
-      character(len=:), allocatable :: listing_file  !< '' = the listing goes to listing_unit
-      integer :: listing_unit = output_unit          !< used when listing_file is ''
+      character(len=:), allocatable :: listing_file  !< '' = the listing goes to standard output
       character(len=:), allocatable :: h5_file       !< '' = no HDF5 file
       logical :: check_only = .false.                !< read and check the decks, run nothing
    end type run_request_t
@@ -89,37 +88,49 @@ contains
       type(run_summary_t) :: res
       type(error_t) :: run_err, io_err
       type(case_sink_t) :: sink
-      integer :: unit, ios
-      character(len=256) :: msg
+      type(output_file_t) :: h5_file
 
       call read_case_deck(req, deck, m, err)
       if (present(warnings) .and. allocated(m%warnings)) warnings = m%warnings
       if (err%failed() .or. req%check_only) return
 
-      unit = req%listing_unit
-      if (len(req%listing_file) > 0) then
-         open (newunit=unit, file=req%listing_file, status='replace', action='write', iostat=ios, iomsg=msg)
-         if (ios /= 0) then
-            call error_set(err, exit_io, req%listing_file//': cannot write the listing: '//trim(msg))
+      ! outputs are written under temporary names and put in place of their
+      ! targets at the end (output_files); nothing is created before the
+      ! paths are known not to be inputs
+      call check_output_paths(deck_files(req), pulse_file(deck, m), req%listing_file, req%h5_file, err)
+      if (err%failed()) return
+      call sink%listing%lst%create_text(req%listing_file, 'listing', err)
+      if (err%failed()) return
+      sink%with_h5 = len(req%h5_file) > 0
+      if (sink%with_h5) then
+         call h5_file%reserve(req%h5_file, 'HDF5 file', io_err)
+         if (.not. io_err%failed()) &
+            call history_sink_open(sink%h5, h5_file%writing_path(), m%title, deck_text(deck), io_err)
+         if (io_err%failed()) then
+            call deliver_outputs(io_err, sink%listing%lst, h5_file)
+            call error_set(err, io_err%code, io_err%message)
             return
          end if
       end if
-      sink%with_h5 = len(req%h5_file) > 0
-      if (sink%with_h5) then
-         call history_sink_open(sink%h5, req%h5_file, m%title, deck_text(deck), err)
-         if (err%failed()) return
-      end if
-      call listing_sink_start(sink%listing, unit, deck, m, hsri2d_version)
+      call listing_sink_start(sink%listing, deck, m, hsri2d_version)
       call run_simulation(m, res, run_err, sink)
       if (sink%with_h5) call sink%h5%close(io_err)
-      if (sink%listing%lst%io_status /= 0) call error_set(io_err, exit_io, 'cannot write the listing (error ' &
-                                                          //itoa(sink%listing%lst%io_status)//')')
-      if (unit /= req%listing_unit) close (unit)
-      if (run_err%failed()) then
-         call error_set(err, run_err%code, run_err%message)
-      else if (io_err%failed()) then
-         call error_set(err, io_err%code, io_err%message)
+      call sink%listing%lst%flush(io_err)
+      ! An input/output error outweighs a numerical failure: the outputs
+      ! that would show the run up to the failure are incomplete.
+      if (run_err%code == exit_io) then
+         io_err = run_err
+      else if (run_err%failed() .and. io_err%failed()) then
+         io_err%message = io_err%message//new_line('a')//'(the run had failed too: '//run_err%message//')'
+      else if (run_err%failed()) then
+         io_err = run_err
       end if
+      if (sink%with_h5) then
+         call deliver_outputs(io_err, sink%listing%lst, h5_file)
+      else
+         call deliver_outputs(io_err, sink%listing%lst)
+      end if
+      if (io_err%failed()) call error_set(err, io_err%code, io_err%message)
       if (present(summary)) summary = res
    end subroutine run_case
 
@@ -159,6 +170,27 @@ contains
       if (this%with_h5) call this%h5%finish(summary, err)
       if (listing_err%failed() .and. .not. err%failed()) err = listing_err
    end subroutine case_finish
+
+   !> The deck files named in the request (not the built-in deck).
+   function deck_files(req) result(files)
+      type(run_request_t), intent(in) :: req
+      type(string_t), allocatable :: files(:)
+      integer :: k
+      allocate (files(0))
+      do k = 1, size(req%decks)
+         if (req%decks(k)%s /= builtin_deck_name) call append_string(files, req%decks(k)%s)
+      end do
+   end function deck_files
+
+   !> The CSV file named on a *PULSEFILE card ('' when the pulse is not
+   !! read from a file).
+   function pulse_file(d, m) result(path)
+      type(deck_t), intent(in) :: d
+      type(model_t), intent(in) :: m
+      character(len=:), allocatable :: path
+      path = ''
+      if (d%group(g_pulsefile)%present .and. d%group(g_pulsefile)%n > 0) path = m%vehicle%pulse_source
+   end function pulse_file
 
    !> The deck's card images, for the HDF5 file.
    function deck_text(d) result(lines)

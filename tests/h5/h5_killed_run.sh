@@ -54,7 +54,7 @@ echo "h5_killed_run: demo killed after $n_flushed flushed and $n_unflushed unflu
 
 h5dump -H "$file" >/dev/null 2>&1 || fail "h5dump cannot open $file"
 
-# Rows in a 2-D series, as h5dump shows its shape: ( rows, ncols ).
+# Rows in a series, as h5dump shows its shape: ( rows ) or ( rows, ncols ).
 rows_of() {
     h5dump -H -d "$1" "$file" 2>/dev/null |
         sed -n 's/.*DATASPACE *SIMPLE { ( *\([0-9]*\).*/\1/p' | head -n 1
@@ -67,10 +67,12 @@ for name in /time /body/z; do
     echo "h5_killed_run: $name has $rows rows in the killed file"
 done
 
-# Every flushed value: /time row i is i; /body/z row i column j is 1000*i + j.
+# Every flushed value: /time (1-D) row i is i; /body/z row i column j is
+# 1000*i + j.
 check_values() { # name ncols
     rm -f "$dump"
-    h5dump -y -w 0 -m %.17g -d "$1" -s "0,0" -c "$n_flushed,$2" -o "$dump" "$file" >/dev/null 2>&1 ||
+    if [ "$2" -eq 1 ]; then start=0 count=$n_flushed; else start="0,0" count="$n_flushed,$2"; fi
+    h5dump -y -w 0 -m %.17g -d "$1" -s "$start" -c "$count" -o "$dump" "$file" >/dev/null 2>&1 ||
         fail "h5dump cannot read the first $n_flushed rows of $1"
     tr ', ' '\n\n' <"$dump" | awk -v n=$n_flushed -v nc="$2" -v name="$1" '
         NF { k++; i = int((k - 1) / nc) + 1; j = (k - 1) % nc + 1

@@ -23,7 +23,7 @@ program hsri2d_bench
    implicit none
 
    integer, parameter :: n_parts = 4, p_read = 1, p_run = 2, p_lst = 3, p_h5 = 4
-   integer :: repeat, i, k, d, n_decks, null_unit, ios
+   integer :: repeat, i, k, d, n_decks, ios
    character(len=512) :: arg
    type(string_t), allocatable :: decks(:)
    real(wp), allocatable :: times(:, :, :)       ! (repetition, part, deck)
@@ -52,7 +52,6 @@ program hsri2d_bench
    end do
    n_decks = size(decks)
    allocate (times(repeat, n_parts, n_decks), models(n_decks), results(n_decks), usable(n_decks))
-   open (newunit=null_unit, file='/dev/null', action='write')
 
    ! the decks must read and run
    do d = 1, n_decks
@@ -89,7 +88,6 @@ program hsri2d_bench
             r%evaluations, r%stats%steps
       end associate
    end do
-   close (null_unit)
    open (newunit=k, file=h5_scratch, status='old', iostat=ios)
    if (ios == 0) close (k, status='delete')
 
@@ -101,8 +99,7 @@ contains
       type(run_request_t) :: req
       allocate (req%decks(1))
       req%decks(1) = decks(d)
-      req%listing_file = ''
-      req%listing_unit = null_unit
+      req%listing_file = '/dev/null'   ! written in place (output_files)
       req%h5_file = ''
       if (with_h5) req%h5_file = h5_scratch
    end function request

@@ -1,0 +1,36 @@
+# HSRI2D_H5PY_PYTHON: a Python interpreter that can import h5py, for the
+# tests that read HDF5 files with it (labelled python). The interpreter
+# find_package(Python3) found may lack h5py (a pyenv, for instance) while
+# the system's has it (Debian: python3-h5py); empty when none has it.
+include_guard(GLOBAL)
+set(HSRI2D_H5PY_PYTHON "" CACHE FILEPATH "Python interpreter with h5py (found when empty)")
+if(NOT HSRI2D_H5PY_PYTHON)
+  foreach(candidate IN ITEMS "${Python3_EXECUTABLE}" /usr/bin/python3)
+    if(candidate AND EXISTS "${candidate}")
+      execute_process(COMMAND "${candidate}" -c "import h5py"
+                      RESULT_VARIABLE no_h5py OUTPUT_QUIET ERROR_QUIET)
+      if(no_h5py EQUAL 0)
+        set(HSRI2D_H5PY_PYTHON "${candidate}" CACHE FILEPATH "Python interpreter with h5py (found when empty)" FORCE)
+        break()
+      endif()
+    endif()
+  endforeach()
+endif()
+if(HSRI2D_H5PY_PYTHON)
+  message(STATUS "Tests: h5py found with ${HSRI2D_H5PY_PYTHON}")
+else()
+  message(STATUS "Tests: no Python with h5py (Debian: python3-h5py); the h5py tests are skipped")
+endif()
+
+# hsri2d_add_h5py_test(NAME name SCRIPT file ARGS ...): the test, or, without
+# h5py, a test that reports itself skipped (status 77).
+function(hsri2d_add_h5py_test)
+  cmake_parse_arguments(PARSE_ARGV 0 arg "" "NAME;SCRIPT" "ARGS;LABELS")
+  if(HSRI2D_H5PY_PYTHON)
+    add_test(NAME ${arg_NAME} COMMAND "${HSRI2D_H5PY_PYTHON}" "${arg_SCRIPT}" ${arg_ARGS})
+  else()
+    add_test(NAME ${arg_NAME} COMMAND ${CMAKE_COMMAND} -E echo "h5py not found (Debian: python3-h5py): skipped")
+    set_tests_properties(${arg_NAME} PROPERTIES DISABLED TRUE)
+  endif()
+  set_tests_properties(${arg_NAME} PROPERTIES LABELS "python;${arg_LABELS}" TIMEOUT 120)
+endfunction()

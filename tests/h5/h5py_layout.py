@@ -1,0 +1,103 @@
+"""The HDF5 file as h5py 3 reads it (format_version 2, docs/usage.md):
+root attributes, every dataset's columns/units/description as Python str,
+/time 1-D, string datasets readable with .asstr().
+
+Usage: h5py_layout.py HSRI2D WORK_DIRECTORY
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+
+NAME = "h5py_layout"
+
+
+def fail(message):
+    print(f"{NAME}: FAIL: {message}", file=sys.stderr)
+    sys.exit(1)
+
+
+def is_str_list(value):
+    return isinstance(value, np.ndarray) and value.ndim == 1 and all(isinstance(v, str) for v in value)
+
+
+def main():
+    exe, work = sys.argv[1:3]
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    os.chdir(work)
+    p = subprocess.run([exe, "-o", "run.lst", "--h5", "run.h5"], capture_output=True, text=True, timeout=120)
+    if p.returncode != 0:
+        fail(f"the run failed: {p.stderr}")
+    version = subprocess.run([exe, "--version"], capture_output=True, text=True).stdout.split()[-1]
+
+    with h5py.File("run.h5", "r") as f:
+        a = f.attrs
+        if int(a["format_version"]) != 2:
+            fail(f"format_version is {a['format_version']!r}, expected 2")
+        for key, want in (("program", "hsri2d"), ("version", version)):
+            if not isinstance(a[key], str) or a[key] != want:
+                fail(f"root attribute {key} is {a[key]!r}, expected the str {want!r}")
+        for key in ("title", "units"):
+            if not isinstance(a[key], str) or not a[key]:
+                fail(f"root attribute {key} is {a[key]!r}, expected a non-empty str")
+
+        rows = f["time"].shape
+        if len(rows) != 1:
+            fail(f"/time has shape {rows}, expected 1-D")
+        n = rows[0]
+        t = f["time"][()]
+        if n < 2 or t[0] != 0.0 or not np.all(np.diff(t) > 0):
+            fail("/time does not start at 0 and increase")
+
+        datasets = []
+        f.visititems(lambda name, obj: datasets.append(name) if isinstance(obj, h5py.Dataset) else None)
+        for name in ("time", "body/z", "events/time", "events/kind", "events/index", "events/text", "input/deck"):
+            if name not in datasets:
+                fail(f"/{name} is missing")
+        for name in datasets:
+            d = f[name]
+            ncols = 1 if d.ndim == 1 else d.shape[1]
+            for key in ("columns", "units"):
+                value = d.attrs.get(key)
+                if not is_str_list(value) or len(value) != ncols:
+                    fail(f"/{name} attribute {key} is {value!r}, expected {ncols} str")
+            description = d.attrs.get("description")
+            if not isinstance(description, str) or not description:
+                fail(f"/{name} attribute description is {description!r}, expected a non-empty str")
+            if d.ndim == 2 and not name.startswith("summary/") and d.shape[0] != n:
+                fail(f"/{name} has {d.shape[0]} rows, /time {n}")
+
+        # every effect's contribution to b, and the summary's maxima with their times
+        forces = [name for name in datasets if name.startswith("effects/") and name.endswith("/generalized_force")]
+        if not forces:
+            fail("no /effects/<name>/generalized_force series")
+        for name in forces:
+            if f[name].shape != (n, 10):
+                fail(f"/{name} has shape {f[name].shape}, expected ({n}, 10)")
+        maxima = f["summary/maxima"]
+        columns = list(maxima.attrs["columns"])
+        if maxima.shape[0] != 1 or "head_acceleration" not in columns:
+            fail(f"/summary/maxima is {maxima.shape} with columns {columns}")
+        if f["summary/maxima_time"].shape != maxima.shape:
+            fail("/summary/maxima_time does not match /summary/maxima")
+        head = maxima[0, columns.index("head_acceleration")]
+        if not head >= f["acceleration"][:, 0].max():
+            fail("the summary's head acceleration is below the largest printed one")
+
+        deck = f["input/deck"].asstr()[()]
+        if len(deck) == 0 or not all(isinstance(line, str) for line in deck):
+            fail("/input/deck does not read as str with .asstr()")
+        if not any(line.startswith("*TIME") for line in deck):
+            fail("/input/deck does not hold the deck")
+        text = f["events/text"].asstr()[()]
+        if text.shape != f["events/time"].shape:
+            fail("/events/text does not read with .asstr()")
+    print(f"{NAME}: PASS ({len(datasets)} datasets, {n} rows)")
+
+
+if __name__ == "__main__":
+    main()
