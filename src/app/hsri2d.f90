@@ -7,7 +7,7 @@ program hsri2d
    use error_handling, only: error_t, exit_ok, exit_deck, exit_numerical, error_category_name
    use text_io, only: string_t
    use command_line, only: options_t, parse_command_line, usage_text
-   use deck_doc, only: write_deck_format
+   use deck_doc, only: deck_format_lines
    use default_deck, only: default_deck_lines
    use run_case_mod, only: run_request_t, run_case
    use output_files, only: output_file_t
@@ -26,8 +26,8 @@ program hsri2d
    type(options_t) :: opts
    type(run_request_t) :: req
    type(error_t) :: err
-   type(string_t), allocatable :: builtin(:)
-   integer :: ignore
+   type(string_t), allocatable :: builtin(:), warnings(:)
+   integer :: ignore, i, ios
 
    ! A file-size limit (ulimit -f) then makes writes fail with an error
    ! that is reported (exit status 4) instead of killing the program.
@@ -44,7 +44,7 @@ program hsri2d
       call finish(exit_ok)
    end if
    if (opts%deck_format) then
-      call write_deck_format(output_unit)
+      call say(deck_format_lines())
       call finish(exit_ok)
    end if
    builtin = default_deck_lines()
@@ -58,7 +58,10 @@ program hsri2d
    req%listing_file = opts%listing_file
    req%h5_file = opts%h5_file
    req%check_only = opts%check_only
-   call run_case(req, err)
+   call run_case(req, err, warnings=warnings)
+   do i = 1, size(warnings)
+      write (error_unit, '(a)', iostat=ios) 'hsri2d: warning: '//warnings(i)%s
+   end do
    if (err%failed()) call quit(err)
    if (opts%check_only) call say([string_t('hsri2d: the deck is valid')])
    call finish(exit_ok)

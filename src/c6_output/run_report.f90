@@ -526,8 +526,8 @@ contains
                ' of the largest body kinetic energy'
             call lst%put(line)
             if (os%energy_flagged) then
-               call lst%put('  *** THE ENERGY BALANCE FAILED at t ='//fixed(os%t_flagged, 10, 5)//' s: the results are ' &
-                            //'not trustworthy ***')
+               call lst%put('  THE ENERGY BALANCE FAILED at t ='//fixed(os%t_flagged, 10, 5)//' s: the results are ' &
+                            //'not trustworthy')
             else
                call lst%put('  within tolerance')
             end if

@@ -91,7 +91,13 @@ contains
       type(output_file_t) :: h5_file
 
       call read_case_deck(req, deck, m, err)
-      if (present(warnings) .and. allocated(m%warnings)) warnings = m%warnings
+      if (present(warnings)) then
+         if (allocated(m%warnings)) then
+            warnings = m%warnings
+         else
+            allocate (warnings(0))
+         end if
+      end if
       if (err%failed() .or. req%check_only) return
 
       ! outputs are written under temporary names and put in place of their
