@@ -16,6 +16,7 @@ module command_line
       character(len=:), allocatable :: h5_file        !< '' = none
       logical :: help = .false., version = .false.
       logical :: deck_format = .false., print_default_deck = .false., check_only = .false.
+      logical :: outputs = .false.
    end type options_t
 
 contains
@@ -55,6 +56,8 @@ contains
             opts%print_default_deck = .true.
          case ('--check')
             opts%check_only = .true.
+         case ('--outputs')
+            opts%outputs = .true.
          case ('-o', '--output')
             if (.not. value_of(opts%listing_file)) return
          case ('--h5')
@@ -104,6 +107,8 @@ contains
           '  -o, --output FILE   write the listing to FILE (default: standard output)'//nl// &
           '  --h5 FILE           write the time histories to the HDF5 file FILE'//nl// &
           '  --check             read and check the decks, run nothing'//nl// &
+          '  --outputs           print the output series the decks would write (HDF5 datasets, '//nl// &
+          '                      listing tables) and exit'//nl// &
           '  --deck-format       print the card reference (docs/deck-format.md) and exit'//nl// &
           '  --default-deck      print the built-in default deck and exit'//nl// &
           '  -V, --version       print the version and exit'//nl// &

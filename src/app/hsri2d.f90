@@ -9,7 +9,7 @@ program hsri2d
    use command_line, only: options_t, parse_command_line, usage_text
    use deck_doc, only: deck_format_lines
    use default_deck, only: default_deck_lines
-   use run_case_mod, only: run_request_t, run_case
+   use run_case_mod, only: run_request_t, run_case, describe_outputs
    use output_files, only: output_file_t
    use posix_files, only: posix_ignore_file_size_signal
    use version_info, only: hsri2d_version
@@ -58,6 +58,12 @@ program hsri2d
    req%listing_file = opts%listing_file
    req%h5_file = opts%h5_file
    req%check_only = opts%check_only
+   if (opts%outputs) then
+      call describe_outputs(req, builtin, err)
+      if (err%failed()) call quit(err)
+      call say(builtin)
+      call finish(exit_ok)
+   end if
    call run_case(req, err, warnings=warnings)
    do i = 1, size(warnings)
       write (error_unit, '(a)', iostat=ios) 'hsri2d: warning: '//warnings(i)%s

@@ -19,11 +19,14 @@ module run_case_mod
    use run_report, only: listing_sink_t, listing_sink_start
    use history_sink, only: history_sink_t, history_sink_open
    use output_files, only: output_file_t, check_output_paths, deliver_outputs
+   use equations_of_motion, only: system_build
+   use output_producers, only: registry_build
+   use output_doc, only: output_table_lines
    use version_info, only: hsri2d_version
    implicit none
    private
 
-   public :: run_request_t, run_case, read_case_deck, builtin_deck_name
+   public :: run_request_t, run_case, read_case_deck, builtin_deck_name, describe_outputs
 
    !> The outputs of a case: the listing, and the HDF5 file when asked for.
    type, extends(output_sink_t) :: case_sink_t
@@ -176,6 +179,24 @@ contains
       if (this%with_h5) call this%h5%finish(summary, err)
       if (listing_err%failed() .and. .not. err%failed()) err = listing_err
    end subroutine case_finish
+
+   !> The series a run of the request's decks writes (docs/usage.md), as
+   !! Markdown lines; nothing is run.
+   subroutine describe_outputs(req, lines, err)
+      type(run_request_t), intent(in) :: req
+      type(string_t), allocatable, intent(out) :: lines(:)
+      type(error_t), intent(inout) :: err
+      type(deck_t) :: deck
+      type(model_t) :: m
+      type(crash_system_t) :: sys
+      type(output_registry_t) :: reg
+      allocate (lines(0))
+      call read_case_deck(req, deck, m, err)
+      if (err%failed()) return
+      call system_build(m, sys)
+      call registry_build(sys, reg)
+      lines = output_table_lines(reg)
+   end subroutine describe_outputs
 
    !> The deck files named in the request (not the built-in deck).
    function deck_files(req) result(files)

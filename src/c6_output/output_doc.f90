@@ -1,0 +1,67 @@
+!> The table of output series a run writes, in Markdown, from the output
+!! registry: `hsri2d --outputs` prints it, and the HDF5 section of
+!! docs/usage.md holds it for the default deck (a test compares), so the
+!! documentation and the files cannot disagree.
+module output_doc
+   use strings, only: itoa
+   use text_io, only: string_t, append_string
+   use output_registry, only: output_registry_t
+   implicit none
+   private
+
+   public :: output_table_lines
+
+contains
+
+   !> One row per series: HDF5 dataset, shape, columns and units, the NOUT
+   !! level from which the listing prints it, and its description.
+   function output_table_lines(reg) result(lines)
+      type(output_registry_t), intent(in) :: reg
+      type(string_t), allocatable :: lines(:)
+      character(len=:), allocatable :: cols, shape
+      integer :: k, c
+      allocate (lines(0))
+      call append_string(lines, '| dataset | shape | columns (units) | listing from NOUT | content |')
+      call append_string(lines, '|---|---|---|---|---|')
+      call append_string(lines, '| `/time` | (n) | t (s) | every table | print times (C.6) |')
+      do k = 1, size(reg%series)
+         associate (s => reg%series(k))
+            cols = ''
+            do c = 1, size(s%col)
+               if (c > 1) cols = cols//', '
+               cols = cols//trim(s%col(c)%name)//' ('//trim(s%col(c)%unit)//')'
+            end do
+            if (size(s%col) == 1) then
+               shape = '(n)'
+            else
+               shape = '(n, '//itoa(size(s%col))//')'
+            end if
+            call append_string(lines, '| `/'//s%name//'` | '//shape//' | '//escaped(cols)//' | '//itoa(s%nout)//' | ' &
+                               //escaped(s%description)//' |')
+         end associate
+      end do
+      call append_string(lines, '| `/summary/maxima`, `/summary/maxima_time` | (1, m) | head_acceleration, ' &
+                         //'chest_acceleration (in/s^2), joint_i_min, joint_i_max (rad); the times (s) | summary | ' &
+                         //'the maxima over all accepted steps and when they happened, as the listing''s summary ' &
+                         //'gives them |')
+      call append_string(lines, '| `/events/time`, `/events/kind`, `/events/index`, `/events/text` | (k) | - | summary | ' &
+                         //'the events (injuries) as they happened |')
+      call append_string(lines, '| `/input/deck` | (cards) | - | deck echo | the deck''s card images |')
+   end function output_table_lines
+
+   !> Markdown text: | would end a cell and * start emphasis.
+   pure function escaped(text) result(s)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: s
+      integer :: i
+      s = ''
+      do i = 1, len(text)
+         select case (text(i:i))
+         case ('|', '*')
+            s = s//'\'//text(i:i)
+         case default
+            s = s//text(i:i)
+         end select
+      end do
+   end function escaped
+end module output_doc

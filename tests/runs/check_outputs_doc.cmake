@@ -1,0 +1,17 @@
+# The HDF5 table of docs/usage.md (between its "outputs" markers) must be
+# exactly what `hsri2d --outputs` prints for the default deck.
+execute_process(COMMAND ${EXE} --outputs RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+file(READ ${DOC} doc)
+string(FIND "${doc}" "<!-- outputs: generated" begin)
+string(FIND "${doc}" "<!-- outputs: end -->" end)
+if(begin LESS 0 OR end LESS 0)
+  message(FATAL_ERROR "docs/usage.md has no outputs markers")
+endif()
+string(SUBSTRING "${doc}" ${begin} -1 rest)
+string(FIND "${rest}" "\n" eol)
+math(EXPR first "${eol} + 1")
+math(EXPR length "${end} - ${begin} - ${first}")
+string(SUBSTRING "${rest}" ${first} ${length} table)
+if(NOT rc EQUAL 0 OR NOT out STREQUAL table)
+  message(FATAL_ERROR "the output table of docs/usage.md differs from `hsri2d --outputs`; regenerate it")
+endif()
