@@ -64,6 +64,7 @@ module history_h5
                    h5fcreate_f, h5fclose_f, h5fflush_f, h5f_acc_trunc_f, h5f_scope_global_f, h5f_close_strong_f, &
                    h5pcreate_f, h5pclose_f, h5pset_obj_track_times_f, h5pset_fclose_degree_f, h5pset_chunk_f, &
                    h5p_file_create_f, h5p_file_access_f, h5p_group_create_f, h5p_dataset_create_f, &
+                   h5p_dataset_access_f, h5pset_chunk_cache_f, &
                    h5gcreate_f, h5gclose_f, h5lexists_f, &
                    h5screate_f, h5screate_simple_f, h5sclose_f, h5sselect_hyperslab_f, &
                    h5s_scalar_f, h5s_unlimited_f, h5s_select_set_f, &
@@ -667,7 +668,7 @@ contains
       integer(hid_t), intent(out) :: dset
       type(error_t), intent(inout) :: err
       integer(hsize_t), allocatable :: dims(:), maxdims(:), chunk(:)
-      integer(hid_t) :: space, dcpl
+      integer(hid_t) :: space, dcpl, dapl
       integer :: hdferr, ignore
 
       if (ncols == 0) then
@@ -682,16 +683,23 @@ contains
       dset = no_id
       space = no_id
       dcpl = no_id
+      dapl = no_id
       call h5screate_simple_f(size(dims), dims, space, hdferr, maxdims)
       if (hdferr >= 0) call h5pcreate_f(h5p_dataset_create_f, dcpl, hdferr)
       if (hdferr >= 0) call h5pset_chunk_f(dcpl, size(chunk), chunk, hdferr)
       if (hdferr >= 0) call h5pset_obj_track_times_f(dcpl, .false., hdferr)
-      if (hdferr >= 0) call h5dcreate_f(file, name, file_type, space, dset, hdferr, dcpl_id=dcpl)
+      ! No chunk cache: every chunk is written whole, once, and never read
+      ! back; HDF5's default cache (1 MiB per dataset) would keep about that
+      ! much of every series in memory and make a long run's memory grow.
+      if (hdferr >= 0) call h5pcreate_f(h5p_dataset_access_f, dapl, hdferr)
+      if (hdferr >= 0) call h5pset_chunk_cache_f(dapl, 0_size_t, 0_size_t, 0.75, hdferr)
+      if (hdferr >= 0) call h5dcreate_f(file, name, file_type, space, dset, hdferr, dcpl_id=dcpl, dapl_id=dapl)
       if (hdferr < 0) then
          dset = no_id
          call error_set(err, exit_io, 'cannot create dataset '//name//' in '//path)
       end if
       if (dcpl > 0) call h5pclose_f(dcpl, ignore)
+      if (dapl > 0) call h5pclose_f(dapl, ignore)
       if (space > 0) call h5sclose_f(space, ignore)
    end subroutine create_growing
 
