@@ -77,10 +77,17 @@ stdin_pipe)
   same_files "$work/file.lst" "$work/stream.lst"
   ;;
 stdin_slow_pipe)
-  # the writer stops mid-card: a momentary end of the pipe's data is not its end
+  # the writer pauses twice mid-card, the second time after a few bytes: a
+  # momentary end of the pipe's data is not its end, and a read of several
+  # bytes may find fewer than it asked for
   file_listing
-  (cd "$work/stream" && { head -c 1000 "$deck"; sleep 0.3; tail -c +1001 "$deck"; } |
-    run stream 0 "$exe" - -o "$work/stream.lst")
+  (cd "$work/stream" && {
+    head -c 1000 "$deck"
+    sleep 0.2
+    tail -c +1001 "$deck" | head -c 7
+    sleep 0.2
+    tail -c +1008 "$deck"
+  } | run stream 0 "$exe" - -o "$work/stream.lst")
   same_files "$work/file.lst" "$work/stream.lst"
   ;;
 process_substitution)
