@@ -56,7 +56,7 @@ module deck_reader
       integer :: source = 0, line = 0
       integer :: kind = echo_blank
       integer :: group = 0                       !< the group it belongs to (0: none)
-      character(len=:), allocatable :: text
+      character(len=:), allocatable :: text      !< at most card_width bytes (see echo_text)
    end type echo_line_t
 
    !> The tables of a deck, built from one or more sources.
@@ -133,7 +133,7 @@ contains
          if (len_trim(text) == 0) then
             call add_echo(deck, src, i, echo_blank, 0, '')
          else if (text(1:1) == '$') then
-            call add_echo(deck, src, i, echo_comment, 0, text)
+            call add_echo(deck, src, i, echo_comment, 0, echo_text(text))
          else if (text(1:1) == '*') then
             word = upper(first_word(text(2:)))
             gid = group_by_name(deck, word)
@@ -706,6 +706,28 @@ contains
       b = index(w, ' ')
       if (b > 0) w = w(1:b - 1)
    end function first_word
+
+   !> The echo of a comment card: as written when it fits in card_width
+   !! bytes, which the listing and the HDF5 file allow a card image; a UTF-8
+   !! comment of up to 80 characters may take more, and is then cut at a
+   !! character boundary and marked '...'.
+   pure function echo_text(s) result(e)
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: e
+      character(len=*), parameter :: mark = '...'
+      integer :: cut
+      if (len_trim(s) <= card_width) then
+         e = trim(s)
+         return
+      end if
+      cut = card_width - len(mark)
+      ! back to the start of a character: a UTF-8 continuation byte is 128-191
+      do while (cut > 0)
+         if (iachar(s(cut + 1:cut + 1)) < 128 .or. iachar(s(cut + 1:cut + 1)) >= 192) exit
+         cut = cut - 1
+      end do
+      e = s(1:cut)//mark
+   end function echo_text
 
    !> Show a bad line safely: non-printable bytes become '?'.
    pure function printable(s) result(p)

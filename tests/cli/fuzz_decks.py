@@ -82,6 +82,8 @@ def cases(base_lines, rnd):
     yield "crlf", base.replace("\n", "\r\n").encode()
     yield "utf8_title", base.replace("DEFAULT", "DÉFAUT").encode("utf-8")
     yield "utf8_comments", base.replace("$ ", "$ ÉÀ—€𝄞 ").encode("utf-8")
+    yield "utf8_same_width", base.replace("$ ", "$é").encode("utf-8")
+    yield "utf8_80_characters", (base + "$" + "é" * 40 + "€" * 39 + "\n").encode("utf-8")
     yield "utf8_bom", b"\xef\xbb\xbf" + base.encode()
     yield "latin1_comment", base.replace("$ ", "$ é ").encode("latin-1")
     yield "nan_inf", base.replace("0.2 ", "NaN ").replace("386.", "Inf ").encode()
