@@ -112,8 +112,8 @@ contains
           'Runs the HSRI phase-two two-dimensional crash-victim simulation on card decks.'//nl// &
           'With no DECK, runs the built-in default deck. Several decks are read in order;'//nl// &
           'a later card group replaces the earlier group of its kind. The name '//builtin_deck_name//nl// &
-          'stands for the built-in default deck (e.g. hsri2d '//builtin_deck_name//' pulse.deck); '// &
-          standard_input_path//' reads a'//nl//'deck from standard input.'//nl//nl// &
+          'stands for the built-in default deck (e.g. hsri2d '//builtin_deck_name//' pulse.deck),'//nl// &
+          'and '//standard_input_path//' for standard input (e.g. make-deck | hsri2d '//standard_input_path//').'//nl//nl// &
           'options:'//nl// &
           '  -o, --output FILE   write the listing to FILE (default: standard output)'//nl// &
           '  --h5 FILE           write the time histories to the HDF5 file FILE'//nl// &

@@ -813,14 +813,13 @@ contains
          if (deck%spec(j)%kind == deck%spec(gid)%kind) then
             deck%group(j)%present = .false.
             deck%group(j)%n = 0
+            deck%group(j)%n_written = 0
+            deck%group(j)%n_rejected = 0
          end if
       end do
       deck%group(gid)%present = .true.
       deck%group(gid)%source = src
       deck%group(gid)%line = line
-      deck%group(gid)%n = 0
-      deck%group(gid)%n_written = 0
-      deck%group(gid)%n_rejected = 0
       if (.not. allocated(deck%group(gid)%card)) allocate (deck%group(gid)%card(8))
       if (.not. allocated(deck%group(gid)%rejected_line)) &
          allocate (deck%group(gid)%rejected_line(8), deck%group(gid)%rejected_index(8))

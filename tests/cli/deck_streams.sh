@@ -4,7 +4,7 @@
 #
 # usage: deck_streams.sh CASE HSRI2D DECK WORKDIR
 #   CASE  stdin_pipe | stdin_slow_pipe | process_substitution | fifo |
-#         stdin_empty | stdin_errors | stdin_pulse_file
+#         stdin_empty | stdin_too_large | stdin_errors | stdin_pulse_file
 #
 # Where the two runs can name their deck alike, the listings are compared
 # byte for byte: the file is called "(standard input)" (the name the
@@ -113,6 +113,11 @@ stdin_empty)
     grep -qx '(standard input): the deck is empty' "$work/$r.err" || fail "$r: no \"the deck is empty\""
     if grep -q 'card group' "$work/$r.err"; then fail "$r: a cascade of missing groups"; fi
   done
+  ;;
+stdin_too_large)
+  # the 64 MiB limit holds for a stream too (one byte more: about 4 s, Debug)
+  head -c $((64 * 1024 * 1024 + 1)) /dev/zero | run large 4 "$exe" --check -
+  grep -q '^(standard input): cannot read: more than 64 MiB' "$work/large.err" || fail "no size limit"
   ;;
 stdin_errors)
   # problems are located in "(standard input)"; a second "-" is refused
