@@ -42,13 +42,16 @@ FORBIDDEN = ("Fortran runtime", "Backtrace", "Error termination", "ERROR STOP",
 # search by hand; the test uses these)
 TEXT_MUTATIONS_PER_DECK = int(os.environ.get("FUZZ_MUTATIONS", 150))
 VALUE_MUTATIONS_PER_DECK = int(os.environ.get("FUZZ_MUTATIONS", 150))
-SEED = int(os.environ.get("FUZZ_SEED", 20261122))
+DEFAULT_SEED = 20261122
+SEED = int(os.environ.get("FUZZ_SEED", DEFAULT_SEED))
 CHECK_TIMEOUT = 20.0   # s; a --check reads a deck and builds the model, nothing more
 RUN_TIMEOUT = 3.0      # s; a capped run takes under 0.1 s (Debug build)
 
 # Failures found by this test in code the deck reader's owners do not own,
 # reported (issue 5, section 5) and left visible: each is printed as a known
 # failure on every run instead of failing the test. Remove an entry once fixed.
+# (Other seeds find more decks of the same kind: a joint friction limit XI of 0,
+# or a segment started with a rate, in the free-fall deck integrated by NINT = 3.)
 KNOWN_FAILURES = {
     "free_fall_value_15":
         "segment 6 starts at -1000 deg/s in the free-fall deck (NINT = 3): Dormand-Prince grinds "
@@ -281,7 +284,7 @@ def main():
     for f in known:
         name = f.split(":")[0]
         print(f"KNOWN FAILURE {f}\n    reported: {KNOWN_FAILURES[name]}")
-    for name in KNOWN_FAILURES:
+    for name in KNOWN_FAILURES if SEED == DEFAULT_SEED else ():   # the names belong to the default seed
         if not any(f.startswith(name + ":") for f in known):
             print(f"NOTE: known failure {name} did not fail: remove it from KNOWN_FAILURES")
     if fuzz.check_status.get(2, 0) < 50:
