@@ -1,14 +1,13 @@
 !> The command line of hsri2d (docs/usage.md).
 module command_line
    use error_handling, only: error_t, error_set, exit_usage
-   use text_io, only: string_t, append_string
+   use run_case_mod, only: builtin_deck_name
+   use text_io, only: string_t, append_string, standard_input_path
    implicit none
    private
 
-   public :: options_t, parse_command_line, usage_text, builtin_deck_name
+   public :: options_t, parse_command_line, usage_text
 
-   !> The name that stands for the built-in default deck on the command line.
-   character(len=*), parameter :: builtin_deck_name = '@default'
 
    type :: options_t
       type(string_t), allocatable :: decks(:)
@@ -26,17 +25,30 @@ contains
       type(error_t), intent(inout) :: err
       integer :: i, n
       character(len=:), allocatable :: arg
-      logical :: options_done
+      logical :: options_done, stdin_named
 
       allocate (opts%decks(0))
       opts%listing_file = ''
       opts%h5_file = ''
       options_done = .false.
+      stdin_named = .false.
       n = command_argument_count()
       i = 0
       do while (i < n)
          i = i + 1
          arg = argument(i)
+         if (arg == standard_input_path .and. len(arg) == len(standard_input_path)) then
+            ! a lone '-' is standard input, after '--' too (a file named '-' is ./-);
+            ! it can be read once only
+            if (stdin_named) then
+               call error_set(err, exit_usage, 'standard input ('//standard_input_path &
+                  //') may be named only once')
+               return
+            end if
+            stdin_named = .true.
+            call append_string(opts%decks, arg)
+            cycle
+         end if
          if (options_done .or. len(arg) == 0) then
             call append_string(opts%decks, arg)
             cycle
@@ -102,7 +114,8 @@ contains
           'Runs the HSRI phase-two two-dimensional crash-victim simulation on card decks.'//nl// &
           'With no DECK, runs the built-in default deck. Several decks are read in order;'//nl// &
           'a later card group replaces the earlier group of its kind. The name '//builtin_deck_name//nl// &
-          'stands for the built-in default deck (e.g. hsri2d '//builtin_deck_name//' pulse.deck).'//nl//nl// &
+          'stands for the built-in default deck (e.g. hsri2d '//builtin_deck_name//' pulse.deck),'//nl// &
+          'and '//standard_input_path//' for standard input (e.g. make-deck | hsri2d '//standard_input_path//').'//nl//nl// &
           'options:'//nl// &
           '  -o, --output FILE   write the listing to FILE (default: standard output)'//nl// &
           '  --h5 FILE           write the time histories to the HDF5 file FILE'//nl// &

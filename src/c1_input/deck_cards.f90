@@ -193,6 +193,7 @@ contains
 
       t(g_title)%name = 'TITLE'
       t(g_title)%title = 'Run title, printed at the head of every page'
+      t(g_title)%note = 'A header with no data card, or a blank one, gives an empty title.'
       call set_fields(t(g_title), [text_field('TITLE', blank_default, 'title text (columns 1-72)')])
 
       t(g_options)%name = 'OPTIONS'

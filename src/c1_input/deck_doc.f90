@@ -28,14 +28,15 @@ contains
          'so that any one section can be changed by simply substituting new data cards").', '', &
          '* A card with `*` in column 1 opens a card group; the group name follows (one word, any case);', &
          '  the rest of the header card is a free comment.', &
-         '* A card with `$` in column 1 is a comment. Blank cards are ignored.', &
+         '* A card with `$` in column 1 is a comment; comments may hold UTF-8 (80 characters). Other', &
+         '  cards are ASCII. A byte-order mark at the start of a file is dropped. Blank cards are ignored.', &
          '* Data cards have up to seven fields of ten columns in columns 3-72: field *k* occupies columns', &
          '  10*k*-7 to 10*k*+2 (3-12, 13-22, 23-32, 33-42, 43-52, 53-62, 63-72). Columns 1-2 hold the row', &
          '  index of an indexed group and must be blank otherwise. Columns 73-80 are free for card', &
          '  identification and are ignored.', &
          '* Numbers may be written anywhere in their field: `1.5`, `-474.7`, `2.0E-4`, `2.0D-4`, `5`.', &
          '  NaN, Inf and text are rejected. A blank field takes the default listed below; a field marked', &
-         '  *required* may not be blank.', &
+         '  *required* may not be blank. A value that runs from one field into the next is an error.', &
          '* Angles are in degrees and angular rates in degrees per second; stiffnesses are per radian.', &
          '  Other units are the report''s: inch, pound force, second; mass in lb*s^2/in.', &
          '* Several decks may be named on the command line. A later card group replaces the earlier group', &

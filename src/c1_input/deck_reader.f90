@@ -8,7 +8,8 @@ module deck_reader
    use kinds, only: wp
    use strings, only: itoa, num, upper, read_real, read_int
    use error_handling, only: error_t, error_append, exit_deck
-   use text_io, only: string_t, read_text_file, append_string
+   use text_io, only: string_t, read_text_file, read_standard_input, append_string, &
+      standard_input_path, standard_input_name
    use deck_cards, only: group_spec_t, field_spec_t, card_table, max_fields, card_width, &
       index_first_col, index_last_col, data_last_col, field_first_col, field_last_col, &
       kind_real, kind_int, kind_word, kind_text, blank_default, blank_required, blank_absent, &
@@ -33,12 +34,19 @@ module deck_reader
       character(len=:), allocatable :: text      !< the text field, if the group has one
    end type card_t
 
-   !> One card group as read.
+   !> One card group as read. card(1:n) holds the cards that were read
+   !! without error; cards with errors are reported and only remembered for
+   !! the checks of the whole group (so that they do not also count as
+   !! missing, and card numbers count them).
    type :: group_t
       logical :: present = .false.
       integer :: source = 0, line = 0            !< where its header card is
       integer :: n = 0
       type(card_t), allocatable :: card(:)
+      integer :: n_written = 0                   !< data cards as written, bad ones included
+      integer :: n_rejected = 0                  !< data cards with errors
+      integer, allocatable :: rejected_line(:)   !< their lines
+      integer, allocatable :: rejected_index(:)  !< their row index (0: not readable)
    end type group_t
 
    integer, parameter :: echo_blank = 0, echo_comment = 1, echo_header = 2, echo_data = 3, echo_bad = 4
@@ -48,7 +56,7 @@ module deck_reader
       integer :: source = 0, line = 0
       integer :: kind = echo_blank
       integer :: group = 0                       !< the group it belongs to (0: none)
-      character(len=:), allocatable :: text
+      character(len=:), allocatable :: text      !< at most card_width bytes (see echo_text)
    end type echo_line_t
 
    !> The tables of a deck, built from one or more sources.
@@ -71,20 +79,33 @@ contains
       allocate (deck%source_name(0), deck%source_dir(0), deck%echo(64))
    end subroutine deck_init
 
-   !> Read and parse one deck file. An unreadable file is an I/O error;
-   !! problems in its cards are deck errors (all of them are appended).
+   !> Read and parse one deck file; the path standard_input_path ('-') reads
+   !! standard input, named standard_input_name in messages, whose files named
+   !! on cards are relative to the current directory. An unreadable file is
+   !! an I/O error; problems in its cards are deck errors (all of them are
+   !! appended).
    subroutine deck_add_file(deck, path, err)
       type(deck_t), intent(inout) :: deck
       character(len=*), intent(in) :: path
       type(error_t), intent(inout) :: err
       type(string_t), allocatable :: lines(:)
       type(error_t) :: io_err
-      call read_text_file(path, lines, io_err)
+      logical :: from_stdin
+      from_stdin = path == standard_input_path .and. len(path) == len(standard_input_path)
+      if (from_stdin) then
+         call read_standard_input(lines, io_err)
+      else
+         call read_text_file(path, lines, io_err)
+      end if
       if (io_err%failed()) then
          call error_append(err, io_err%code, io_err%message)
          return
       end if
-      call deck_add_lines(deck, path, directory_of(path), lines, err)
+      if (from_stdin) then
+         call deck_add_lines(deck, standard_input_name, '', lines, err)
+      else
+         call deck_add_lines(deck, path, directory_of(path), lines, err)
+      end if
    end subroutine deck_add_file
 
    !> Parse one source already split into lines (a file, or the built-in deck).
@@ -112,7 +133,7 @@ contains
          if (len_trim(text) == 0) then
             call add_echo(deck, src, i, echo_blank, 0, '')
          else if (text(1:1) == '$') then
-            call add_echo(deck, src, i, echo_comment, 0, text)
+            call add_echo(deck, src, i, echo_comment, 0, echo_text(text))
          else if (text(1:1) == '*') then
             word = upper(first_word(text(2:)))
             gid = group_by_name(deck, word)
@@ -151,41 +172,27 @@ contains
    subroutine deck_finish(deck, err)
       type(deck_t), intent(inout) :: deck
       type(error_t), intent(inout) :: err
-      integer :: gid, k, idx
-      logical, allocatable :: seen(:)
+      integer :: gid, k
 
       do gid = 1, n_groups
          associate (g => deck%group(gid), s => deck%spec(gid))
             if (.not. g%present) then
-               if (s%required .and. .not. kind_present(deck, gid)) &
+               ! (when no source held a line, "the deck is empty" says it all)
+               if (s%required .and. .not. kind_present(deck, gid) .and. deck%n_echo > 0) &
                   call report(deck, err, 0, 0, 'the deck has no *'//trim(s%name)//' card group (' &
                   //trim(s%title)//'); it is required')
                cycle
             end if
-            if (g%n < s%min_cards) then
+            if (g%n_written == 0 .and. blank_card_allowed(s)) then
+               ! blank cards are skipped, so a header alone is the blank card
+               ! ("blank means empty" for *TITLE)
+               call append_card(g, blank_card(s, g%source, g%line))
+            else if (g%n_written < s%min_cards) then
+               ! bad cards count as written: their own errors say what is wrong
                call report(deck, err, g%source, g%line, '*'//trim(s%name)//' needs at least ' &
-                  //itoa(s%min_cards)//' data card(s); found '//itoa(g%n))
+                  //itoa(s%min_cards)//' data card(s); found '//itoa(g%n_written))
             end if
-            if (s%layout == layout_indexed) then
-               allocate (seen(s%max_index), source=.false.)
-               do k = 1, g%n
-                  idx = g%card(k)%index
-                  if (idx < 1) cycle
-                  if (seen(idx)) then
-                     call report(deck, err, g%card(k)%source, g%card(k)%line, '*'//trim(s%name) &
-                        //': a second card for '//trim(s%index_name)//' = '//itoa(idx))
-                  end if
-                  seen(idx) = .true.
-               end do
-               if (s%all_rows) then
-                  do idx = 1, s%max_index
-                     if (.not. seen(idx)) call report(deck, err, g%source, g%line, '*'//trim(s%name) &
-                        //': no card for '//trim(s%index_name)//' = '//itoa(idx)//' (one card for each of ' &
-                        //'1 to '//itoa(s%max_index)//' is required)')
-                  end do
-               end if
-               deallocate (seen)
-            end if
+            if (s%layout == layout_indexed) call check_rows(deck, err, g, s)
          end associate
       end do
       if (deck%n_errors > max_reported_errors) then
@@ -206,36 +213,197 @@ contains
       end do
    end subroutine deck_finish
 
+   !> An indexed group: no row twice, and every row where all are required.
+   !! A card rejected for another field still holds its row. A card whose
+   !! index could not be read may be any missing row, so missing rows are
+   !! reported only when there are more of them than such cards (otherwise
+   !! the index errors already say all there is).
+   subroutine check_rows(deck, err, g, s)
+      type(deck_t), intent(inout) :: deck
+      type(error_t), intent(inout) :: err
+      type(group_t), intent(in) :: g
+      type(group_spec_t), intent(in) :: s
+      logical :: seen(s%max_index), take_good
+      integer :: good, bad, idx, line, n_unreadable
+
+      seen = .false.
+      good = 1
+      bad = 1
+      ! good and rejected cards merged in the order of their lines
+      do while (good <= g%n .or. bad <= g%n_rejected)
+         if (bad > g%n_rejected) then
+            take_good = .true.
+         else if (good > g%n) then
+            take_good = .false.
+         else
+            take_good = g%card(good)%line < g%rejected_line(bad)
+         end if
+         if (take_good) then
+            idx = g%card(good)%index
+            line = g%card(good)%line
+            good = good + 1
+         else
+            idx = g%rejected_index(bad)
+            line = g%rejected_line(bad)
+            bad = bad + 1
+         end if
+         if (idx < 1 .or. idx > s%max_index) cycle
+         if (seen(idx)) call report(deck, err, g%source, line, '*'//trim(s%name) &
+            //': a second card for '//trim(s%index_name)//' = '//itoa(idx))
+         seen(idx) = .true.
+      end do
+      if (.not. s%all_rows) return
+      n_unreadable = count(g%rejected_index(1:g%n_rejected) < 1)
+      if (count(.not. seen) <= n_unreadable) return
+      do idx = 1, s%max_index
+         if (.not. seen(idx)) call report(deck, err, g%source, g%line, '*'//trim(s%name) &
+            //': no card for '//trim(s%index_name)//' = '//itoa(idx)//' (one card for each of ' &
+            //'1 to '//itoa(s%max_index)//' is required)')
+      end do
+   end subroutine check_rows
+
+   !> A single card holding only a text field that may be blank (*TITLE):
+   !! its blank card cannot be told from the blank cards that are skipped.
+   pure logical function blank_card_allowed(s)
+      type(group_spec_t), intent(in) :: s
+      blank_card_allowed = s%layout == layout_single .and. s%n_fields == 1
+      if (blank_card_allowed) blank_card_allowed = s%field(1)%kind == kind_text &
+         .and. s%field(1)%blank == blank_default
+   end function blank_card_allowed
+
+   !> The card a blank card image gives: every field its blank value.
+   pure function blank_card(s, src, line) result(card)
+      type(group_spec_t), intent(in) :: s
+      integer, intent(in) :: src, line
+      type(card_t) :: card
+      integer :: k
+      card%source = src
+      card%line = line
+      do k = 1, s%n_fields
+         if (s%field(k)%blank == blank_default) card%value(k) = s%field(k)%default*s%field(k)%scale
+         if (s%field(k)%kind == kind_text) card%text = ''
+      end do
+   end function blank_card
+
    ! --- card checks -----------------------------------------------------------
 
-   !> A card must be printable ASCII without tabs and fit in 80 columns.
+   !> A card holds printable ASCII without tabs in at most 80 columns. A
+   !! comment card ($ in column 1) may also hold UTF-8 text; its columns are
+   !! counted in characters.
    logical function card_is_clean(deck, err, src, line, text) result(ok)
       type(deck_t), intent(inout) :: deck
       type(error_t), intent(inout) :: err
       integer, intent(in) :: src, line
       character(len=*), intent(in) :: text
-      integer :: i, c
-      ok = .true.
-      do i = 1, len(text)
+      integer :: i, c, column, n_bytes, code_point, width
+      logical :: comment
+
+      ok = .false.
+      comment = .false.
+      if (len(text) > 0) comment = text(1:1) == '$'
+      i = 1
+      column = 0
+      do while (i <= len(text))
+         column = column + 1
          c = iachar(text(i:i))
+         n_bytes = 1
          if (c == 9) then
-            call report(deck, err, src, line, 'tab character in column '//itoa(i) &
+            call report(deck, err, src, line, 'tab character in column '//itoa(column) &
                //'; cards have fixed columns, use spaces')
-            ok = .false.
             return
-         else if (c < 32 .or. c > 126) then
-            call report(deck, err, src, line, 'character that is not printable ASCII (code ' &
-               //itoa(c)//') in column '//itoa(i)//'; is this a text deck?')
-            ok = .false.
+         else if (c < 32 .or. c == 127) then
+            call report(deck, err, src, line, 'control character (code '//itoa(c)//') in column ' &
+               //itoa(column)//'; is this a text deck?')
+            return
+         else if (c > 127) then
+            call utf8_character(text(i:), n_bytes, code_point)
+            if (n_bytes == 0) then
+               call report(deck, err, src, line, 'byte '//itoa(c)//' in column '//itoa(column) &
+                  //' is not part of a UTF-8 character (nor printable ASCII); is this a text deck?')
+               return
+            else if (.not. comment) then
+               call report(deck, err, src, line, 'non-ASCII character "'//text(i:i + n_bytes - 1) &
+                  //'" in column '//itoa(column)//'; only comment cards ($ in column 1) may hold ' &
+                  //'non-ASCII text, data and header cards are ASCII')
+               return
+            else if (code_point < 160) then
+               call report(deck, err, src, line, 'control character (U+00'//hex_byte(code_point) &
+                  //') in column '//itoa(column)//'; is this a text deck?')
+               return
+            end if
+         end if
+         i = i + n_bytes
+      end do
+      ! every byte but the continuation bytes of UTF-8 starts a character
+      width = 0
+      do i = 1, len_trim(text)
+         c = iachar(text(i:i))
+         if (c < 128 .or. c >= 192) width = width + 1
+      end do
+      if (width > card_width) then
+         call report(deck, err, src, line, 'card image of '//itoa(width) &
+            //' columns; a card has at most '//itoa(card_width))
+         return
+      end if
+      ok = .true.
+   end function card_is_clean
+
+   !> The UTF-8 character starting s (whose first byte is not ASCII): its
+   !! length in bytes and its code point; n_bytes = 0 when s does not start
+   !! with a well-formed UTF-8 character (RFC 3629: no overlong forms, no
+   !! surrogates, nothing beyond U+10FFFF).
+   pure subroutine utf8_character(s, n_bytes, code_point)
+      character(len=*), intent(in) :: s
+      integer, intent(out) :: n_bytes, code_point
+      integer :: lead, low, high, k, b
+
+      n_bytes = 0
+      code_point = 0
+      lead = iachar(s(1:1))
+      low = 128
+      high = 191
+      select case (lead)
+      case (194:223)
+         n_bytes = 2
+         code_point = lead - 192
+      case (224:239)
+         n_bytes = 3
+         code_point = lead - 224
+         if (lead == 224) low = 160    ! no overlong forms
+         if (lead == 237) high = 159   ! no surrogates
+      case (240:244)
+         n_bytes = 4
+         code_point = lead - 240
+         if (lead == 240) low = 144    ! no overlong forms
+         if (lead == 244) high = 143   ! nothing beyond U+10FFFF
+      case default
+         return
+      end select
+      if (len(s) < n_bytes) then
+         n_bytes = 0
+         return
+      end if
+      do k = 2, n_bytes
+         b = iachar(s(k:k))
+         if (k > 2) then
+            low = 128
+            high = 191
+         end if
+         if (b < low .or. b > high) then
+            n_bytes = 0
             return
          end if
+         code_point = 64*code_point + (b - 128)
       end do
-      if (len_trim(text) > card_width) then
-         call report(deck, err, src, line, 'card image of '//itoa(len_trim(text)) &
-            //' columns; a card has at most '//itoa(card_width))
-         ok = .false.
-      end if
-   end function card_is_clean
+   end subroutine utf8_character
+
+   !> Two hexadecimal digits of a byte value, for U+00XX.
+   pure function hex_byte(value) result(h)
+      integer, intent(in) :: value
+      character(len=2) :: h
+      character(len=*), parameter :: digits = '0123456789ABCDEF'
+      h = digits(value/16 + 1:value/16 + 1)//digits(mod(value, 16) + 1:mod(value, 16) + 1)
+   end function hex_byte
 
    !> Parse one data card of group gid into the group's table.
    subroutine parse_data_card(deck, err, gid, src, line, text)
@@ -246,15 +414,17 @@ contains
       character(len=card_width) :: c
       type(card_t) :: card
       integer :: k, last_used
-      logical :: ok
+      logical :: ok, in_run(max_fields), tail_in_run
       character(len=:), allocatable :: where
 
       c = text
       card%source = src
       card%line = line
       associate (s => deck%spec(gid), g => deck%group(gid))
-         where = '*'//trim(s%name)//' card '//itoa(g%n + 1)
-         if (g%n >= s%max_cards) then
+         ! cards are numbered as written, bad ones included
+         g%n_written = g%n_written + 1
+         where = '*'//trim(s%name)//' card '//itoa(g%n_written)
+         if (g%n_written > s%max_cards) then
             call report(deck, err, src, line, where//': too many cards; *'//trim(s%name) &
                //' takes at most '//itoa(s%max_cards))
             return
@@ -271,10 +441,14 @@ contains
          end if
          last_used = 0
          do k = 1, s%n_fields
-            call parse_field(deck, err, s%field(k), where, src, line, c, card, k, ok)
             last_used = max(last_used, s%field(k)%last_col)
          end do
-         if (last_used < data_last_col) then
+         call check_runs_across(deck, err, s, where, src, line, c, last_used, in_run, tail_in_run, ok)
+         do k = 1, s%n_fields
+            if (in_run(k)) cycle   ! reported as a whole
+            call parse_field(deck, err, s%field(k), where, src, line, c, card, k, ok)
+         end do
+         if (last_used < data_last_col .and. .not. tail_in_run) then
             if (len_trim(c(last_used + 1:data_last_col)) > 0) then
                call report(deck, err, src, line, where//', columns '//itoa(last_used + 1)//'-' &
                   //itoa(data_last_col)//': found "'//trim(adjustl(c(last_used + 1:data_last_col))) &
@@ -283,9 +457,98 @@ contains
             end if
          end if
          ! a bad card is not stored; its errors are reported and the run stops
-         if (ok) call append_card(g, card)
+         if (ok) then
+            call append_card(g, card)
+         else
+            call note_rejected(g, line, card%index)
+         end if
       end associate
    end subroutine parse_data_card
+
+   !> Values must stay inside their fields: text that runs from the last
+   !! column of one field into the first column of the next would otherwise
+   !! be read as two values, both wrong. Each such run is one problem naming
+   !! the fields it touches (and the columns after the last field, where a
+   !! group has no field); in_run marks the fields not to be read on their own.
+   subroutine check_runs_across(deck, err, s, where, src, line, c, last_used, in_run, tail_in_run, ok)
+      type(deck_t), intent(inout) :: deck
+      type(error_t), intent(inout) :: err
+      type(group_spec_t), intent(in) :: s
+      character(len=*), intent(in) :: where, c
+      integer, intent(in) :: src, line, last_used
+      logical, intent(out) :: in_run(max_fields), tail_in_run
+      logical, intent(inout) :: ok
+      integer :: k, j, edge, first, last, n_named, n_edges
+      character(len=:), allocatable :: names, edges
+
+      in_run = .false.
+      tail_in_run = .false.
+      last = 0
+      do k = 1, s%n_fields
+         if (s%field(k)%kind == kind_text) cycle
+         edge = s%field(k)%last_col
+         if (edge <= last .or. edge >= data_last_col) cycle   ! inside a run already reported
+         if (c(edge:edge) == ' ' .or. c(edge + 1:edge + 1) == ' ') cycle
+         ! the run: back to its first column (never into the index, columns 1-2), on to its last
+         first = edge
+         do while (first > index_last_col + 1)
+            if (c(first - 1:first - 1) == ' ') exit
+            first = first - 1
+         end do
+         last = edge + 1
+         do while (last < data_last_col)
+            if (c(last + 1:last + 1) == ' ') exit
+            last = last + 1
+         end do
+         names = ''
+         edges = ''
+         n_named = 0
+         n_edges = 0
+         do j = 1, s%n_fields
+            if (s%field(j)%kind == kind_text) cycle
+            if (s%field(j)%last_col < first .or. s%field(j)%first_col > last) cycle
+            in_run(j) = .true.
+            call add_to_list(names, n_named, trim(s%field(j)%name)//' (columns ' &
+               //itoa(s%field(j)%first_col)//'-'//itoa(s%field(j)%last_col)//')')
+            if (s%field(j)%last_col < last) call add_to_list(edges, n_edges, itoa(s%field(j)%last_col))
+         end do
+         if (n_named == 1) then
+            names = 'field '//names
+         else
+            names = 'fields '//names
+         end if
+         if (last > last_used) then
+            tail_in_run = .true.
+            names = names//' and columns '//itoa(last_used + 1)//'-'//itoa(data_last_col) &
+               //', where *'//trim(s%name)//' has no field'
+         end if
+         if (n_edges == 1) then
+            edges = 'boundary after column '//edges
+         else
+            edges = 'boundaries after columns '//edges
+         end if
+         call report(deck, err, src, line, where//', '//names//': found "'//c(first:last) &
+            //'" in columns '//itoa(first)//'-'//itoa(last)//', across the field '//edges &
+            //'; expected each value inside its own field')
+         ok = .false.
+      end do
+   end subroutine check_runs_across
+
+   !> Append an item to an English list: "a", "a and b", "a, b and c".
+   pure subroutine add_to_list(list, n, item)
+      character(len=:), allocatable, intent(inout) :: list
+      integer, intent(inout) :: n
+      character(len=*), intent(in) :: item
+      integer :: last_and
+      if (n == 0) then
+         list = item
+      else
+         last_and = index(list, ' and ', back=.true.)
+         if (n >= 2 .and. last_and > 0) list = list(1:last_and - 1)//', '//list(last_and + 5:)
+         list = list//' and '//item
+      end if
+      n = n + 1
+   end subroutine add_to_list
 
    subroutine parse_index(deck, err, s, where, src, line, c, idx, ok)
       type(deck_t), intent(inout) :: deck
@@ -444,6 +707,28 @@ contains
       if (b > 0) w = w(1:b - 1)
    end function first_word
 
+   !> The echo of a comment card: as written when it fits in card_width
+   !! bytes, which the listing and the HDF5 file allow a card image; a UTF-8
+   !! comment of up to 80 characters may take more, and is then cut at a
+   !! character boundary and marked '...'.
+   pure function echo_text(s) result(e)
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: e
+      character(len=*), parameter :: mark = '...'
+      integer :: cut
+      if (len_trim(s) <= card_width) then
+         e = trim(s)
+         return
+      end if
+      cut = card_width - len(mark)
+      ! back to the start of a character: a UTF-8 continuation byte is 128-191
+      do while (cut > 0)
+         if (iachar(s(cut + 1:cut + 1)) < 128 .or. iachar(s(cut + 1:cut + 1)) >= 192) exit
+         cut = cut - 1
+      end do
+      e = s(1:cut)//mark
+   end function echo_text
+
    !> Show a bad line safely: non-printable bytes become '?'.
    pure function printable(s) result(p)
       character(len=*), intent(in) :: s
@@ -528,14 +813,35 @@ contains
          if (deck%spec(j)%kind == deck%spec(gid)%kind) then
             deck%group(j)%present = .false.
             deck%group(j)%n = 0
+            deck%group(j)%n_written = 0
+            deck%group(j)%n_rejected = 0
          end if
       end do
       deck%group(gid)%present = .true.
       deck%group(gid)%source = src
       deck%group(gid)%line = line
-      deck%group(gid)%n = 0
       if (.not. allocated(deck%group(gid)%card)) allocate (deck%group(gid)%card(8))
+      if (.not. allocated(deck%group(gid)%rejected_line)) &
+         allocate (deck%group(gid)%rejected_line(8), deck%group(gid)%rejected_index(8))
    end subroutine start_group
+
+   !> Remember a card that had errors: its line and its row index (0 if unreadable).
+   subroutine note_rejected(g, line, row)
+      type(group_t), intent(inout) :: g
+      integer, intent(in) :: line, row
+      integer, allocatable :: tmp(:)
+      if (g%n_rejected == size(g%rejected_line)) then
+         allocate (tmp(2*size(g%rejected_line)))
+         tmp(1:g%n_rejected) = g%rejected_line(1:g%n_rejected)
+         call move_alloc(tmp, g%rejected_line)
+         allocate (tmp(2*size(g%rejected_index)))
+         tmp(1:g%n_rejected) = g%rejected_index(1:g%n_rejected)
+         call move_alloc(tmp, g%rejected_index)
+      end if
+      g%n_rejected = g%n_rejected + 1
+      g%rejected_line(g%n_rejected) = line
+      g%rejected_index(g%n_rejected) = row
+   end subroutine note_rejected
 
    subroutine append_card(g, card)
       type(group_t), intent(inout) :: g

@@ -333,7 +333,8 @@ contains
          c = deck%group(g_pulsefile)%card(1)
          path = trim(adjustl(c%text))
          if (path(1:1) /= '/') path = deck%source_dir(c%source)%s//path
-         call read_pulse_csv(path, deck%spec(g_pulse), v%pulse_acc, err)
+         call read_pulse_csv(path, deck%source_name(c%source)%s//':'//itoa(c%line), deck%spec(g_pulse), &
+                             v%pulse_acc, err)
          v%pulse_source = path
          v%pulse_from_file = .true.
       else if (deck%group(g_pulse)%present) then

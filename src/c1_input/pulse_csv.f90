@@ -23,9 +23,10 @@ module pulse_csv
 
 contains
 
-   !> Read the table at path; spec is the *PULSE group of the card table.
-   subroutine read_pulse_csv(path, spec, table, err)
-      character(len=*), intent(in) :: path
+   !> Read the table at path; spec is the *PULSE group of the card table;
+   !! named_at locates the card that names the file ("deck:line").
+   subroutine read_pulse_csv(path, named_at, spec, table, err)
+      character(len=*), intent(in) :: path, named_at
       type(group_spec_t), intent(in) :: spec
       type(pulse_table_t), intent(out) :: table
       type(error_t), intent(inout) :: err
@@ -39,7 +40,7 @@ contains
 
       call read_text_file(path, lines, io_err)
       if (io_err%failed()) then
-         call error_append(err, exit_io, 'pulse file (*PULSEFILE): '//io_err%message)
+         call error_append(err, exit_io, named_at//': *PULSEFILE: pulse file: '//io_err%message)
          return
       end if
       allocate (t(size(lines)), v(size(lines), 3))

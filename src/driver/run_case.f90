@@ -66,7 +66,7 @@ contains
          call deck_add_lines(deck, builtin_deck_name, '', default_deck_lines(), err)
       end if
       do i = 1, size(req%decks)
-         if (req%decks(i)%s == builtin_deck_name) then
+         if (is_builtin(req%decks(i)%s)) then
             call deck_add_lines(deck, builtin_deck_name, '', default_deck_lines(), err)
          else
             call deck_add_file(deck, req%decks(i)%s, err)
@@ -198,6 +198,14 @@ contains
       lines = output_table_lines(reg)
    end subroutine describe_outputs
 
+   !> The name of the built-in deck exactly ("@default " is a file name:
+   !! Fortran's == would ignore the trailing blank).
+   pure logical function is_builtin(name)
+      character(len=*), intent(in) :: name
+      is_builtin = len(name) == len(builtin_deck_name)
+      if (is_builtin) is_builtin = name == builtin_deck_name
+   end function is_builtin
+
    !> The deck files named in the request (not the built-in deck).
    function deck_files(req) result(files)
       type(run_request_t), intent(in) :: req
@@ -205,7 +213,7 @@ contains
       integer :: k
       allocate (files(0))
       do k = 1, size(req%decks)
-         if (req%decks(k)%s /= builtin_deck_name) call append_string(files, req%decks(k)%s)
+         if (.not. is_builtin(req%decks(k)%s)) call append_string(files, req%decks(k)%s)
       end do
    end function deck_files
 
