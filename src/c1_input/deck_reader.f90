@@ -10,6 +10,7 @@ module deck_reader
    use error_handling, only: error_t, error_append, exit_deck
    use text_io, only: string_t, read_text_file, read_standard_input, append_string, &
       standard_input_path, standard_input_name
+   use field_values, only: field_expectation, word_position
    use deck_cards, only: group_spec_t, field_spec_t, card_table, max_fields, card_width, &
       index_first_col, index_last_col, data_last_col, field_first_col, field_last_col, &
       kind_real, kind_int, kind_word, kind_text, blank_default, blank_required, blank_absent, &
@@ -594,7 +595,7 @@ contains
       if (len(raw) == 0) then
          select case (f%blank)
          case (blank_required)
-            call report(deck, err, src, line, head//': blank; expected '//expectation(f))
+            call report(deck, err, src, line, head//': blank; expected '//field_expectation(f))
             ok = .false.
          case (blank_default)
             card%value(k) = f%default*f%scale
@@ -609,9 +610,9 @@ contains
       case (kind_text)
          card%text = trim(c(f%first_col:f%last_col))
       case (kind_word)
-         w = word_number(f%words, upper(raw))
+         w = word_position(f%words, upper(raw))
          if (w == 0) then
-            call report(deck, err, src, line, head//': found "'//raw//'"; expected '//expectation(f))
+            call report(deck, err, src, line, head//': found "'//raw//'"; expected '//field_expectation(f))
             ok = .false.
          else
             card%value(k) = real(w, wp)
@@ -619,10 +620,10 @@ contains
       case (kind_int)
          call read_int(raw, n, good)
          if (.not. good) then
-            call report(deck, err, src, line, head//': found "'//raw//'"; expected '//expectation(f))
+            call report(deck, err, src, line, head//': found "'//raw//'"; expected '//field_expectation(f))
             ok = .false.
          else if (real(n, wp) < f%low .or. real(n, wp) > f%high) then
-            call report(deck, err, src, line, head//': found '//raw//'; expected '//expectation(f))
+            call report(deck, err, src, line, head//': found '//raw//'; expected '//field_expectation(f))
             ok = .false.
          else
             card%value(k) = real(n, wp)
@@ -630,10 +631,10 @@ contains
       case (kind_real)
          call read_real(raw, x, good)
          if (.not. good) then
-            call report(deck, err, src, line, head//': found "'//raw//'"; expected '//expectation(f))
+            call report(deck, err, src, line, head//': found "'//raw//'"; expected '//field_expectation(f))
             ok = .false.
          else if (x < f%low .or. x > f%high .or. (f%low_open .and. .not. x > f%low)) then
-            call report(deck, err, src, line, head//': found '//raw//'; expected '//expectation(f))
+            call report(deck, err, src, line, head//': found '//raw//'; expected '//field_expectation(f))
             ok = .false.
          else
             card%value(k) = x*f%scale
@@ -641,62 +642,8 @@ contains
       end select
    end subroutine parse_field
 
-   !> What a field accepts, in words, for error messages.
-   function expectation(f) result(s)
-      type(field_spec_t), intent(in) :: f
-      character(len=:), allocatable :: s
-      character(len=:), allocatable :: unit
-      unit = ''
-      if (f%unit /= '-' .and. f%unit /= ' ') unit = ' ('//trim(f%unit)//')'
-      select case (f%kind)
-      case (kind_text)
-         s = 'text'
-      case (kind_word)
-         s = 'one of '//trim(f%words)
-      case (kind_int)
-         s = 'an integer from '//itoa(nint(f%low))//' to '//itoa(nint(f%high))
-      case default
-         if (f%low > -huge(1.0_wp) .and. f%high < huge(1.0_wp)) then
-            if (f%low_open) then
-               s = 'a number > '//num(f%low)//' and <= '//num(f%high)//unit
-            else
-               s = 'a number from '//num(f%low)//' to '//num(f%high)//unit
-            end if
-         else if (f%low > -huge(1.0_wp)) then
-            if (f%low_open) then
-               s = 'a number > '//num(f%low)//unit
-            else
-               s = 'a number >= '//num(f%low)//unit
-            end if
-         else
-            s = 'a number'//unit
-         end if
-      end select
-   end function expectation
-
    ! --- lexical helpers ---------------------------------------------------
 
-   !> Position of word w in the '|'-separated list, or 0.
-   pure integer function word_number(list, w)
-      character(len=*), intent(in) :: list, w
-      integer :: start, k, bar
-      word_number = 0
-      start = 1
-      k = 0
-      do
-         k = k + 1
-         bar = index(list(start:), '|')
-         if (bar == 0) then
-            if (trim(list(start:)) == w) word_number = k
-            return
-         end if
-         if (list(start:start + bar - 2) == w) then
-            word_number = k
-            return
-         end if
-         start = start + bar
-      end do
-   end function word_number
 
    pure function first_word(s) result(w)
       character(len=*), intent(in) :: s

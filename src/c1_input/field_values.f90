@@ -10,7 +10,7 @@ module field_values
    implicit none
    private
 
-   public :: convert_field_text, field_expectation
+   public :: convert_field_text, field_expectation, word_position
 
 contains
 
@@ -69,7 +69,11 @@ contains
                s = 'a number from '//num(f%low)//' to '//num(f%high)//unit
             end if
          else if (f%low > -huge(1.0_wp)) then
-            s = 'a number '//merge('> ', '>=', f%low_open)//' '//num(f%low)//unit
+            if (f%low_open) then
+               s = 'a number > '//num(f%low)//unit
+            else
+               s = 'a number >= '//num(f%low)//unit
+            end if
          else
             s = 'a number'//unit
          end if
