@@ -11,7 +11,7 @@ set(HSRI2D_FORTRAN_FLAGS
   -Wall -Wextra -Wimplicit-interface -Wno-maybe-uninitialized
   $<$<CONFIG:Debug>:-O0 -g -fcheck=all -fbacktrace
                     -ffpe-trap=invalid,zero,overflow -finit-real=snan
-                    -finit-integer=-99999999>
+                    -finit-integer=-99999999 -finit-derived>
   $<$<CONFIG:Release>:-O2 -funroll-loops>
   $<$<BOOL:${HSRI2D_WERROR}>:-Werror>)
 

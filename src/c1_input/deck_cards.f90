@@ -190,6 +190,9 @@ contains
       ! an upper bound on magnitudes that keeps every product of the model far
       ! from overflow (the divergence guard of equations_of_motion relies on it)
       real(wp), parameter :: big = 1.0e12_wp, one = 1.0_wp, zero = 0.0_wp
+      ! masses and inertias below this (a few thousandths of an ounce) would let
+      ! the accelerations of the model overflow before any guard sees them
+      real(wp), parameter :: small_mass = 1.0e-6_wp
 
       t(g_title)%name = 'TITLE'
       t(g_title)%title = 'Run title, printed at the head of every page'
@@ -220,7 +223,7 @@ contains
          real_field('CTOL', '-', one, blank_default, 1.0e-6_wp, zero, 1.0_wp, &
             'corrector tolerance (relative to max(1,|y|))', .true.), &
          int_field('CITER', blank_default, 10, 1, 1000, 'corrector iteration limit'), &
-         real_field('RTOL', '-', one, blank_default, 1.0e-7_wp, zero, 1.0_wp, 'adaptive relative tolerance', .true.), &
+         real_field('RTOL', '-', one, blank_default, 1.0e-7_wp, 1.0e-14_wp, 1.0_wp, 'adaptive relative tolerance'), &
          real_field('ATOL', '-', one, blank_default, 1.0e-9_wp, zero, 1.0_wp, 'adaptive absolute tolerance', .true.)])
 
       t(g_segments)%name = 'SEGMENTS'
@@ -234,8 +237,8 @@ contains
          //'joint; L6 and L8 are used by contacts only. RHO is measured from the segment''s proximal joint ' &
          //'(the hip for segments 1 and 7, the knee for 8).'
       call set_fields(t(g_segments), [ &
-         real_field('M', 'lb*s^2/in', one, blank_required, zero, zero, big, 'mass m_i', .true.), &
-         real_field('I', 'lb*in*s^2', one, blank_required, zero, zero, big, 'moment of inertia I_i about the CG', .true.), &
+         real_field('M', 'lb*s^2/in', one, blank_required, zero, small_mass, big, 'mass m_i'), &
+         real_field('I', 'lb*in*s^2', one, blank_required, zero, small_mass, big, 'moment of inertia I_i about the CG'), &
          real_field('L', 'in', one, blank_default, zero, zero, big, 'link length L_i'), &
          real_field('RHO', 'in', one, blank_required, zero, zero, big, 'distance rho_i from the joint to the CG')])
 

@@ -111,9 +111,10 @@ contains
             else
                call convert_field_text(spec%field(k), cell, values(col), good, expected)
                if (.not. good) then
-                  ! a first line whose cells are not numbers holds the column names
+                  ! a first line whose time is not a number holds the column names
+                  ! (a typo further along a first row of numbers is an error)
                   call read_real(cell, x, numeric)
-                  if (may_be_header .and. .not. numeric) then
+                  if (may_be_header .and. col == 1 .and. .not. numeric) then
                      header = .true.
                      return
                   end if

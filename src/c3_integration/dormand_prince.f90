@@ -172,16 +172,26 @@ contains
             yt = y + h*(a61*k1 + a62*k2 + a63*k3 + a64*k4 + a65*k5)
             if (.not. evaluate(t + h, yt, k6)) return
             ynew = y + h*(a71*k1 + a73*k3 + a74*k4 + a75*k5 + a76*k6)
+            ! a state that is not finite is a step far too long: rejected
+            ! (err stays huge), not a failure of the right-hand side
+            ok = .true.
             if (.not. all(ieee_is_finite(ynew))) return
+            ok = .false.
             if (.not. evaluate(t + h, ynew, k7)) return
+            ok = .true.
             e = h*(e1*k1 + e3*k3 + e4*k4 + e5*k5 + e6*k6 + e7*k7)
+            ! the scaled RMS norm, without overflow whatever the tolerances:
+            ! a component beyond 1e150 of its scale rejects the step at once
             err = 0.0_wp
             do i = 1, size(y)
                sc = this%atol + this%rtol*max(abs(y(i)), abs(ynew(i)))
+               if (.not. abs(e(i)) <= 1.0e150_wp*sc) then
+                  err = huge(1.0_wp)
+                  return
+               end if
                err = err + (e(i)/sc)**2
             end do
             err = sqrt(err/real(size(y), wp))
-            ok = ieee_is_finite(err)
          end associate
       end subroutine try_step
 

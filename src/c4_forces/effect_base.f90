@@ -92,6 +92,7 @@ module effect_base
       procedure :: outputs => effect_outputs
       procedure :: output_values => effect_output_values
       procedure :: describe => effect_describe
+      procedure :: initial_extra => effect_initial_extra
    end type effect_t
 
    !> An effect in a list.
@@ -159,6 +160,16 @@ contains
       end associate
       values = 0.0_wp
    end subroutine effect_output_values
+
+   !> The initial values of the extra degrees of freedom (q, then q'); zero
+   !! by default (the rigid-beam seat will start from its static deflection).
+   pure subroutine effect_initial_extra(this, extra)
+      class(effect_t), intent(in) :: this
+      real(wp), intent(out) :: extra(:)
+      associate (unused => this%name)
+      end associate
+      extra = 0.0_wp
+   end subroutine effect_initial_extra
 
    !> One line for the listing: what the effect acts on.
    function effect_describe(this) result(text)

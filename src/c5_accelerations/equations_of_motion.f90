@@ -147,12 +147,10 @@ contains
                status = rhs_not_positive_definite
                return
             end if
-            if (.not. all(ieee_is_finite(dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof)))) then
-               status = rhs_not_finite
-               return
-            end if
          end associate
       end do
+      ! every rate: z'', and the effects' extra and auxiliary quantities
+      if (.not. all(ieee_is_finite(dydt))) status = rhs_not_finite
    end subroutine system_rhs
 
    !> The occupant's coordinates and rates are finite and within the bounds

@@ -103,12 +103,21 @@ contains
       call place_effect(occ, n, layout)
    end subroutine occupant_add_effect
 
-   !> The occupant's initial part of y (auxiliary quantities start at 0).
+   !> The occupant's initial part of y: z0, z'0, each effect's extra
+   !! degrees of freedom as it says; auxiliary quantities (work) start at 0.
    pure subroutine occupant_initial_y(occ, y)
       type(occupant_t), intent(in) :: occ
       real(wp), intent(inout) :: y(:)
+      integer :: k, xo
       y(occ%z_offset + 1:occ%z_offset + n_dof) = occ%z0
       y(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = occ%zdot0
+      do k = 1, size(occ%effects)
+         xo = occ%extra_offset(k)
+         associate (e => occ%effects(k)%e)
+            call e%initial_extra(y(xo + 1:xo + 2*e%n_extra))
+            y(occ%aux_offset(k) + 1:occ%aux_offset(k) + e%n_aux) = 0.0_wp
+         end associate
+      end do
    end subroutine occupant_initial_y
 
    !> What the effects see: the occupant's coordinates and rates in y, the

@@ -5,7 +5,7 @@
 !! it.
 module frame_collector
    use kinds, only: wp
-   use error_handling, only: error_t
+   use error_handling, only: error_t, error_set, exit_io
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
@@ -51,8 +51,10 @@ contains
       type(error_t), intent(inout) :: err
       type(output_frame_t), allocatable :: longer(:)
       integer :: k
-      associate (unused => err%code)
-      end associate
+      if (.not. allocated(this%frames)) then
+         call error_set(err, exit_io, 'the frame collector received a record before the run began')
+         return
+      end if
       if (this%n == size(this%frames)) then
          allocate (longer(2*size(this%frames)))
          do k = 1, this%n

@@ -5,7 +5,7 @@
 !! and their times.
 module history_sink
    use kinds, only: wp
-   use error_handling, only: error_t
+   use error_handling, only: error_t, error_set, exit_io
    use model, only: n_joint
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
@@ -83,6 +83,10 @@ contains
       type(error_t), intent(inout) :: err
       integer :: k
       if (err%failed()) return
+      if (.not. allocated(this%id)) then
+         call error_set(err, exit_io, 'the HDF5 file received a record before the run began')
+         return
+      end if
       call this%file%append(this%id_time, [frame%t], err)
       do k = 1, size(this%reg%series)
          if (err%failed()) return

@@ -25,6 +25,9 @@ module output_registry
    type :: output_frame_t
       real(wp) :: t = 0.0_wp
       real(wp), allocatable :: v(:)
+      !> false for the frame a run that failed at its first evaluation
+      !! passes to begin: no value is known
+      logical :: valid = .true.
    end type output_frame_t
 
 contains

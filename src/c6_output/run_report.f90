@@ -13,7 +13,7 @@ module run_report
       astart_name, solver_name
    use deck_reader, only: deck_t, echo_bad, echo_header
    use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text
-   use error_handling, only: error_t
+   use error_handling, only: error_t, error_set, exit_io
    use listing, only: listing_t
    use number_format, only: fixed
    use output_series, only: output_series_t, max_listing_columns
@@ -43,6 +43,7 @@ module run_report
       integer, allocatable :: tables(:)          !< registry series printed (NOUT)
       real(wp), allocatable :: t(:), rows(:, :)  !< the pending page: times, frame values
       integer :: n_rows = 0
+      logical :: begun = .false.
       character(len=:), allocatable :: effect_lines
    contains
       procedure :: begin => sink_begin
@@ -83,18 +84,27 @@ contains
       end do
       this%tables = pack([(k, k=1, size(reg%series))], printed)
       allocate (this%t(rows_per_page), this%rows(reg%n_values, rows_per_page))
+      this%begun = .true.
+      call write_head(this)
+      call write_preliminary(this%lst, sys, reg, first)
+   end subroutine sink_begin
+
+   !> The banner, the deck and the parameters: everything known before the run.
+   subroutine write_head(this)
+      class(listing_sink_t), intent(inout) :: this
       call write_banner(this%lst, this%deck, this%m, this%version)
       call write_deck_echo(this%lst, this%deck)
       call write_parameters(this%lst, this%m)
-      call write_preliminary(this%lst, sys, reg, first)
-   end subroutine sink_begin
+   end subroutine write_head
 
    subroutine sink_record(this, frame, err)
       class(listing_sink_t), intent(inout) :: this
       type(output_frame_t), intent(in) :: frame
       type(error_t), intent(inout) :: err
-      associate (unused => err%code)
-      end associate
+      if (.not. this%begun) then
+         call error_set(err, exit_io, 'the listing received a record before the run began')
+         return
+      end if
       if (size(this%tables) == 0) return
       this%n_rows = this%n_rows + 1
       this%t(this%n_rows) = frame%t
@@ -117,6 +127,7 @@ contains
       type(error_t), intent(inout) :: err
       associate (unused => err%code)
       end associate
+      if (.not. this%begun) call write_head(this)     ! a run that never began still says why
       if (this%n_rows > 0) call write_page_of_tables(this)
       call write_summary(this%lst, this%m, this%reg, summary)
    end subroutine sink_finish
@@ -429,6 +440,10 @@ contains
          iacc = series_at(reg, 'acceleration', o)
          ien = series_at(reg, 'energy/summary', o)
          call lst%heading('INITIAL STATE AND ACCELERATIONS', 14)
+         if (.not. first%valid .or. min(iz, izd, izdd, iacc, ien) == 0) then
+            call lst%put('  not available: the right-hand side could not be evaluated at t = 0 (see the summary)')
+            cycle
+         end if
          call lst%put('  COORDINATE    VALUE         RATE          ACCELERATION   (deg, deg/s, deg/s^2; in, in/s, in/s^2)')
          do i = 1, 10
             write (line, '(2x,a12,3es14.5)') reg%series(iz)%col(i)%name, (first%v(reg%series(iz)%offset + i) &
@@ -444,7 +459,7 @@ contains
       end do
    end subroutine write_preliminary
 
-   !> The series name (of occupant o) in the registry.
+   !> The series name (of occupant o) in the registry, or 0.
    pure integer function series_at(reg, name, o) result(k)
       type(output_registry_t), intent(in) :: reg
       character(len=*), intent(in) :: name
@@ -456,7 +471,7 @@ contains
             if (n(len(n) - len(name) + 1:) == name) return
          end associate
       end do
-      k = 1
+      k = 0
    end function series_at
 
    !> Maxima and when, injuries, why the run ended, energy balance, cost.
@@ -499,7 +514,8 @@ contains
       if (res%n_events == 0) call lst%put('  none')
       do i = 1, res%n_events
          associate (e => res%events(i))
-            call lst%put('  t ='//fixed(e%t, 10, 5)//' s  joint '//joint_name(e%index)//'  ' &
+            call lst%put('  t ='//fixed(e%t, 10, 5)//' s  '//trim(merge('occupant '//achar(48 + min(e%occupant, 9)), &
+                         '          ', size(res%occ) > 1))//' joint '//joint_name(e%index)//'  ' &
                          //trim(event_kind_name(e%kind))//': angle'//fixed(e%value/deg, 9, 3)//' deg, limit' &
                          //fixed(e%limit/deg, 9, 3)//' deg')
          end associate

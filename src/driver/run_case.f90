@@ -4,6 +4,7 @@
 !! line, calls run_case and turns the error into an exit status.
 module run_case_mod
    use error_handling, only: error_t, error_set, exit_io
+   use strings, only: num
    use text_io, only: string_t, append_string
    use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
    use deck_cards, only: g_pulsefile
@@ -92,6 +93,8 @@ contains
       type(error_t) :: run_err, io_err
       type(case_sink_t) :: sink
       type(output_file_t) :: h5_file
+      type(string_t), allocatable :: notes(:)
+      integer :: o
 
       call read_case_deck(req, deck, m, err)
       if (present(warnings)) then
@@ -102,6 +105,7 @@ contains
          end if
       end if
       if (err%failed() .or. req%check_only) return
+      allocate (notes(0))
 
       ! outputs are written under temporary names and put in place of their
       ! targets at the end (output_files); nothing is created before the
@@ -127,7 +131,9 @@ contains
       call sink%listing%lst%flush(io_err)
       ! An input/output error outweighs a numerical failure: the outputs
       ! that would show the run up to the failure are incomplete.
-      if (run_err%code == exit_io) then
+      if (run_err%code == exit_io .and. io_err%failed()) then
+         io_err%message = run_err%message//new_line('a')//io_err%message
+      else if (run_err%code == exit_io) then
          io_err = run_err
       else if (run_err%failed() .and. io_err%failed()) then
          io_err%message = io_err%message//new_line('a')//'(the run had failed too: '//run_err%message//')'
@@ -140,6 +146,17 @@ contains
          call deliver_outputs(io_err, sink%listing%lst)
       end if
       if (io_err%failed()) call error_set(err, io_err%code, io_err%message)
+      ! a balance that failed while the deck said to go on is worth a warning
+      do o = 1, size(res%occ)
+         if (res%occ(o)%energy_flagged .and. m%numerics%energy_continue) call append_string(notes, &
+            'the energy balance failed its tolerance at t = '//num(res%occ(o)%t_flagged)//' s (*NUMERICS ' &
+            //'EBTOL; EBFAIL = CONTINUE ran on): the results are not trustworthy')
+      end do
+      if (present(warnings)) then
+         do o = 1, size(notes)
+            call append_string(warnings, notes(o)%s)
+         end do
+      end if
       if (present(summary)) summary = res
    end subroutine run_case
 

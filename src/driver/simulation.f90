@@ -66,9 +66,9 @@ contains
       type(end_state_t) :: end_state
       type(output_registry_t) :: reg
       type(output_frame_t) :: frame
-      real(wp), allocatable :: y(:), total0(:)
+      real(wp), allocatable :: y(:), total0(:), f_accepted(:)
       real(wp) :: t, t_limit, t_frame
-      logical :: fixed_step, print_now
+      logical :: fixed_step, print_now, at_end
       integer :: status, reason, o, i, n_occ
       integer(i8) :: n, n_steps, print_every, next_print
       type(body_state_t) :: st
@@ -80,13 +80,8 @@ contains
       fixed_step = m%options%nint == nint_adams .or. m%options%nint == nint_rk4
 
       t = 0.0_wp
-      call stepper%init(sys, t, y, status)
-      if (status /= step_ok) then
-         call fail(status)
-         call finish()
-         return
-      end if
-      ! C.2's initial outputs: the energy totals the balance is measured from
+      ! C.2's initial outputs: the energy totals the balance is measured from,
+      ! the initial joint angles the ranges start from
       do o = 1, n_occ
          st = system_body_state(sys, o, t, y)
          associate (eb => frame_energy(sys%occupants(o), st, y, 0.0_wp))
@@ -99,13 +94,26 @@ contains
          end do
       end do
       call registry_build(sys, reg)
+      allocate (f_accepted(size(y)))
+      call stepper%init(sys, t, y, status)
+      if (status /= step_ok) then
+         ! no derivative at t = 0: the outputs say so and hold no time history
+         call fail(status)
+         allocate (frame%v(reg%n_values))
+         frame%v = 0.0_wp
+         frame%valid = .false.
+         if (present(sink)) call sink%begin(sys, reg, frame, out_err)
+         call finish()
+         call merge_output_error()
+         return
+      end if
       call make_frame(t)
       if (present(sink)) call sink%begin(sys, reg, frame, out_err)
       if (present(sink) .and. .not. out_err%failed()) call sink%record(frame, out_err)
       reason = end_none
-      call on_accepted(t, reason)
-
       n_steps = nint(m%time%t_max/m%time%dt, i8)
+      call on_accepted(t, .false., reason)
+
       print_every = max(1_i8, nint(m%time%dt_print/m%time%dt, i8))
       next_print = 1
       n = 0
@@ -124,23 +132,41 @@ contains
             exit
          end if
          n = n + 1
-         call on_accepted(t, reason)
+         ! whether TMAX is reached here is known before the step's memory
+         ! updates, so that no restart is made for a step that ends the run
+         if (fixed_step) then
+            at_end = n >= n_steps
+         else
+            at_end = t >= m%time%t_max
+         end if
+         call on_accepted(t, at_end, reason)
          if (fixed_step) then
             print_now = mod(n, print_every) == 0
-            if (n >= n_steps .and. reason == end_none) reason = end_time
          else
             print_now = t >= t_limit
             if (print_now) next_print = next_print + 1
-            if (t >= m%time%t_max .and. reason == end_none) reason = end_time
          end if
+         if (at_end .and. reason == end_none) reason = end_time
          if (print_now .or. reason /= end_none) call output_frame(t)
          if (summary%end_reason == end_energy) reason = end_energy
       end do
       if (reason /= end_none .and. summary%end_reason == end_none) summary%end_reason = reason
       call finish()
-      if (out_err%failed() .and. .not. err%failed()) call error_set(err, out_err%code, out_err%message)
+      call merge_output_error()
 
    contains
+
+      !> An output error outweighs a numerical failure (docs/usage.md): the
+      !! outputs that would show the run up to the failure are incomplete.
+      subroutine merge_output_error()
+         if (.not. out_err%failed()) return
+         if (err%failed()) then
+            call error_set(err, out_err%code, out_err%message//new_line('a')//'(the run had failed too: ' &
+                           //err%message//')')
+         else
+            call error_set(err, out_err%code, out_err%message)
+         end if
+      end subroutine merge_output_error
 
       subroutine finish()
          summary%t_end = t
@@ -162,8 +188,9 @@ contains
       !> Memory updates after an accepted step (docs/architecture.md, rule 1):
       !! the effects' accept, maxima, the end tests; a restart of the
       !! stepper when an effect's memory made the right-hand side jump.
-      subroutine on_accepted(t_now, reason_out)
+      subroutine on_accepted(t_now, last, reason_out)
          real(wp), intent(in) :: t_now
+         logical, intent(in) :: last      !< the run ends at this step: no restart
          integer, intent(out) :: reason_out
          type(accept_result_t) :: ar
          real(wp) :: a_head, a_chest, delta
@@ -211,9 +238,13 @@ contains
          if (summary%n_events > 0) injured = injured .or. any(summary%events(1:summary%n_events)%injury)
          call end_test_update(m%options%nend, m%end_tests, end_state, t_now, injured, &
                               m%options%nend == nend_rest .and. at_rest, reason_out)
-         if (restart .and. reason_out == end_none) then
+         if (restart .and. reason_out == end_none .and. .not. last) then
+            ! the derivative at the accepted point is kept, for the frame of a
+            ! restart that fails
+            f_accepted = stepper%f
             call stepper%restart(sys, t_now, y, restart_status)
             if (restart_status /= step_ok) then
+               stepper%f = f_accepted
                call fail(restart_status)
                reason_out = end_failure
             end if
@@ -255,7 +286,7 @@ contains
             os%t_flagged = t_now
             if (.not. m%numerics%energy_continue .and. summary%end_reason == end_none) then
                summary%end_reason = end_energy
-               summary%failure = 'the energy balance error '//num(eb%error)//' in*lb at t = '//num(t_now) &
+               summary%failure = occupant_prefix()//'the energy balance error '//num(eb%error)//' in*lb at t = '//num(t_now) &
                   //' s exceeds EBTOL = '//num(m%numerics%energy_tol)//' of the largest body kinetic energy (' &
                   //num(os%ke_max)//' in*lb): the results are not trustworthy. A smaller DT (or NINT = 3 ' &
                   //'with tighter RTOL) should help; *NUMERICS EBFAIL = CONTINUE runs on regardless'
@@ -263,6 +294,13 @@ contains
             end if
          end if
       end subroutine check_energy
+
+      !> "occupant k: " when there are several.
+      function occupant_prefix() result(s)
+         character(len=:), allocatable :: s
+         s = ''
+         if (n_occ > 1) s = trim(sys%occupants(o)%label)//': '
+      end function occupant_prefix
 
       subroutine fail(code)
          integer, intent(in) :: code

@@ -90,6 +90,8 @@ if "THE ENERGY BALANCE FAILED" not in text:
     fail("the spun head with EBFAIL = CONTINUE: the listing is not flagged")
 if "ended at t =   0.20000 s: time" not in text:
     fail("the spun head with EBFAIL = CONTINUE: the run did not reach TMAX")
+if "hsri2d: warning: the energy balance failed" not in p.stderr:
+    fail(f"the spun head with EBFAIL = CONTINUE: no warning on standard error: {p.stderr[:300]}")
 for problem in listing_problems("spin_on.lst"):
     fail("the spun head with EBFAIL = CONTINUE: " + problem)
 
