@@ -5,11 +5,11 @@
 module joint_coupling
    use kinds, only: wp
    use model, only: n_dof, n_joint, joint_partner
-   use output_series, only: output_column_t, column
+   use output_series, only: output_column_t, output_series_t, column, series_new
    implicit none
    private
 
-   public :: relative_angle, relative_rate, apply_joint_torque, joint_columns, joint_list_text
+   public :: relative_angle, relative_rate, apply_joint_torque, joint_columns, joint_list_text, per_joint_series
 
 contains
 
@@ -47,6 +47,16 @@ contains
          cols(i) = column(trim(names(i)), unit)
       end do
    end function joint_columns
+
+   !> An effect's one output series of a value per joint in in*lb (the
+   !! joints' energies or work), printed from NOUT = 3.
+   pure function per_joint_series(name, title, description) result(series)
+      character(len=*), intent(in) :: name, title, description
+      type(output_series_t), allocatable :: series(:)
+      allocate (series(1))
+      series(1) = series_new(name, title, description, 3)
+      series(1)%col = joint_columns('in*lb')
+   end function per_joint_series
 
    !> "joints 1 2 5" for the listing.
    pure function joint_list_text(joints) result(s)

@@ -4,8 +4,8 @@ module joint_elasticity
    use kinds, only: wp
    use model, only: n_dof, n_joint, joint_partner
    use effect_base, only: effect_t, body_state_t, energy_stored, n_energy_kinds
-   use output_series, only: output_series_t, series_new
-   use joint_coupling, only: relative_angle, joint_columns, joint_list_text
+   use output_series, only: output_series_t
+   use joint_coupling, only: relative_angle, per_joint_series, joint_list_text
    implicit none
    private
 
@@ -86,9 +86,7 @@ contains
       type(output_series_t), allocatable :: series(:)
       associate (unused => this%name)
       end associate
-      allocate (series(1))
-      series(1) = series_new('energy', 'JOINT ELASTIC ENERGY', 'elastic energy of each joint (C.6, erratum E-61)', 3)
-      series(1)%col = joint_columns('in*lb')
+      series = per_joint_series('energy', 'JOINT ELASTIC ENERGY', 'elastic energy of each joint (C.6, erratum E-61)')
    end function elasticity_outputs
 
    pure subroutine elasticity_output_values(this, item, st, extra, aux, values)

@@ -8,8 +8,8 @@ module joint_friction
    use kinds, only: wp
    use model, only: n_dof, n_joint, joint_partner
    use effect_base, only: effect_t, body_state_t, energy_dissipated, n_energy_kinds
-   use output_series, only: output_series_t, series_new
-   use joint_coupling, only: joint_columns, joint_list_text
+   use output_series, only: output_series_t
+   use joint_coupling, only: per_joint_series, joint_list_text
    implicit none
    private
 
@@ -92,10 +92,8 @@ contains
       type(output_series_t), allocatable :: series(:)
       associate (unused => this%name)
       end associate
-      allocate (series(1))
-      series(1) = series_new('work', 'JOINT FRICTION WORK DISSIPATED', &
-                             'work dissipated by each joint''s friction since t = 0 (C.6, erratum E-64)', 3)
-      series(1)%col = joint_columns('in*lb')
+      series = per_joint_series('work', 'JOINT FRICTION WORK DISSIPATED', &
+                                'work dissipated by each joint''s friction since t = 0 (C.6, erratum E-64)')
    end function friction_outputs
 
    pure subroutine friction_output_values(this, item, st, extra, aux, values)

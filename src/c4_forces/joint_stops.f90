@@ -6,8 +6,8 @@ module joint_stops
    use kinds, only: wp
    use model, only: n_dof, n_joint, restraint_t, joint_partner
    use effect_base, only: effect_t, body_state_t, energy_stored, n_energy_kinds
-   use output_series, only: output_series_t, series_new
-   use joint_coupling, only: relative_angle, joint_columns, joint_list_text
+   use output_series, only: output_series_t
+   use joint_coupling, only: relative_angle, per_joint_series, joint_list_text
    use joint_restraints, only: restraint_torque, restraint_energy, restraint_is_active
    implicit none
    private
@@ -84,9 +84,7 @@ contains
       type(output_series_t), allocatable :: series(:)
       associate (unused => this%name)
       end associate
-      allocate (series(1))
-      series(1) = series_new('energy', 'JOINT STOP ENERGY', 'energy stored in each joint''s stops (figure 9)', 3)
-      series(1)%col = joint_columns('in*lb')
+      series = per_joint_series('energy', 'JOINT STOP ENERGY', 'energy stored in each joint''s stops (figure 9)')
    end function stops_outputs
 
    pure subroutine stops_output_values(this, item, st, extra, aux, values)
