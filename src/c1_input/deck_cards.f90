@@ -23,7 +23,7 @@ module deck_cards
    public :: field_first_col, field_last_col
    public :: g_title, g_options, g_time, g_segments, g_joints, g_restraints, g_stopcurve
    public :: g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates
-   public :: g_pulsepos, g_pulsefile, g_endtests, g_numerics, n_groups
+   public :: g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials, n_groups
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -46,8 +46,8 @@ module deck_cards
    integer, parameter :: g_title = 1, g_options = 2, g_time = 3, g_segments = 4, &
       g_joints = 5, g_restraints = 6, g_stopcurve = 7, g_injury = 8, g_arcs = 9, &
       g_initial = 10, g_vehicle = 11, g_gravity = 12, g_pulse = 13, g_pulserates = 14, &
-      g_pulsepos = 15, g_pulsefile = 16, g_endtests = 17, g_numerics = 18
-   integer, parameter :: n_groups = 18
+      g_pulsepos = 15, g_pulsefile = 16, g_endtests = 17, g_numerics = 18, g_materials = 19
+   integer, parameter :: n_groups = 19
 
    !> One field of a card.
    type :: field_spec_t
@@ -78,7 +78,7 @@ module deck_cards
       integer :: n_fields = 0
       type(field_spec_t) :: field(max_fields)
       character(len=72) :: title = ' '
-      character(len=400) :: note = ' '
+      character(len=800) :: note = ' '
    end type group_spec_t
 
 contains
@@ -420,6 +420,23 @@ contains
       t(g_numerics)%field(1)%default = real(1, wp)
       t(g_numerics)%field(2)%default = real(1, wp)
       t(g_numerics)%field(4)%default = real(1, wp)
+
+      t(g_materials)%name = 'MATERIALS'
+      t(g_materials)%title = 'Materials, Table 4'
+      t(g_materials)%layout = layout_indexed
+      t(g_materials)%max_index = 14
+      t(g_materials)%index_name = 'material l'
+      t(g_materials)%note = 'l: 1 seat, 2 glass, 3 padding, 4 floormat, 5 floor, 6 metal, 7 rim, 8 headrest, ' &
+         //'9 visor, 10 column, 11 abdomen, 12 chest, 13 face, 14 shoulder. MU and XI: Coulomb friction ' &
+         //'against the material, acting once the sliding ' &
+         //'velocity reaches XI. G: ratio of residual to maximum deformation; R: ratio of the energy ' &
+         //'conserved to that absorbed (recurrent loading, C.4.e figure 18). A material without a card ' &
+         //'has no friction, G = 0 and R = 1 (elastic).'
+      call set_fields(t(g_materials), [ &
+         real_field('MU', '-', one, blank_default, zero, zero, 10.0_wp, 'friction coefficient mu_l'), &
+         real_field('XI', 'in/s', one, blank_default, 0.1_wp, zero, 1.0e4_wp, 'friction velocity limit xi_l'), &
+         real_field('G', '-', one, blank_default, zero, zero, 1.0_wp, 'residual / maximum deformation G_l'), &
+         real_field('R', '-', one, blank_default, one, zero, 1.0_wp, 'conserved / absorbed energy R_l')])
 
       block
          integer :: i

@@ -9,7 +9,7 @@ module deck_fields
    private
 
    public :: field_number, card_value, card_int, card_given, group_value, group_int, group_given
-   public :: single_card
+   public :: single_card, default_value
 
 contains
 
@@ -64,6 +64,20 @@ contains
       card_given = .false.
       if (k > 0) card_given = c%given(k)
    end function card_given
+
+   !> A field's default, in internal units.
+   pure real(wp) function default_value(deck, gid, name)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: gid
+      character(len=*), intent(in) :: name
+      integer :: k
+      k = field_number(deck, gid, name)
+      if (k == 0) then
+         default_value = ieee_value(0.0_wp, ieee_quiet_nan)
+      else
+         default_value = deck%spec(gid)%field(k)%default*deck%spec(gid)%field(k)%scale
+      end if
+   end function default_value
 
    !> True when group gid is in the deck with its card.
    pure logical function single_card(deck, gid)

@@ -8,7 +8,7 @@ module model
    implicit none
    private
 
-   public :: n_seg, n_joint, n_dof, n_arc, n_injury, hip_x, hip_y
+   public :: n_seg, n_joint, n_dof, n_arc, n_injury, hip_x, hip_y, n_material, material_name
    public :: joint_partner, segment_name, joint_name, arc_name
    public :: form_linear, form_cubic, form_table, form_name
    public :: nint_adams, nint_rk4, nint_dopri, integrator_name
@@ -16,6 +16,7 @@ module model
    public :: stop_curve_t, restraint_t, model_t, pulse_table_t
    public :: options_section_t, time_section_t, numerics_section_t, body_section_t, joints_section_t
    public :: injury_section_t, vehicle_section_t, environment_section_t, end_tests_section_t
+   public :: materials_section_t
    public :: solver_structured, solver_dense, solver_name, astart_euler, astart_rk4, astart_name
 
    integer, parameter :: n_seg = 8     !< body segments (Table 5)
@@ -25,6 +26,10 @@ module model
    integer, parameter :: hip_x = 9, hip_y = 10
    integer, parameter :: n_arc = 10    !< body contact arcs (Table 1, r)
    integer, parameter :: n_injury = 10 !< rows of the bone/joint injury table (Table 5)
+   integer, parameter :: n_material = 14 !< materials of Table 4
+   character(len=10), parameter :: material_name(n_material) = [character(len=10) :: &
+      'seat', 'glass', 'padding', 'floormat', 'floor', 'metal', 'rim', 'headrest', 'visor', 'column', &
+      'abdomen', 'chest', 'face', 'shoulder']
 
    !> Table 6: joint i couples segment i with segment m(i); its relative
    !! angle is alpha_i - alpha_m (errata.md, "Joint springs").
@@ -138,6 +143,17 @@ module model
       real(wp) :: f_tension(n_injury) = 0.0_wp
    end type injury_section_t
 
+   !> Materials of Table 4 (l as in material_name): friction and the
+   !! recurrent-loading ratios. The loading curves come with the effects
+   !! that use them.
+   type :: materials_section_t
+      real(wp) :: mu(n_material) = 0.0_wp    !< friction coefficient
+      real(wp) :: xi(n_material) = 0.0_wp    !< friction velocity limit (in/s)
+      real(wp) :: g(n_material) = 0.0_wp     !< residual / maximum deformation
+      real(wp) :: r(n_material) = 1.0_wp     !< conserved / absorbed energy
+      logical :: given(n_material) = .false. !< the deck has a card for it
+   end type materials_section_t
+
    !> The vehicle (C.1, C.3): constants, initial motion, time tables.
    type :: vehicle_section_t
       real(wp) :: mass = 0.0_wp, inertia = 0.0_wp
@@ -170,6 +186,7 @@ module model
       type(body_section_t) :: body
       type(joints_section_t) :: joints
       type(injury_section_t) :: injury
+      type(materials_section_t) :: materials
       type(vehicle_section_t) :: vehicle
       type(environment_section_t) :: environment
       type(end_tests_section_t) :: end_tests

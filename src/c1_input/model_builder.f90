@@ -11,12 +11,13 @@ module model_builder
    use text_io, only: append_string
    use deck_cards, only: g_title, g_options, g_time, g_segments, g_joints, g_restraints, &
       g_stopcurve, g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates, &
-      g_pulsepos, g_pulsefile, g_endtests, g_numerics
+      g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials
    use deck_reader, only: deck_t, group_t, card_t
-   use deck_fields, only: card_value, card_int, card_given, group_value, group_int, single_card
+   use deck_fields, only: card_value, card_int, card_given, group_value, group_int, single_card, default_value
    use pulse_csv, only: read_pulse_csv
    use model, only: model_t, pulse_table_t, stop_curve_t, options_section_t, time_section_t, &
       numerics_section_t, body_section_t, joints_section_t, injury_section_t, vehicle_section_t, &
+      materials_section_t, &
       environment_section_t, end_tests_section_t, n_seg, n_joint, n_arc, joint_partner, &
       form_cubic, form_table, nint_adams, nint_rk4, nend_contact
    implicit none
@@ -42,6 +43,7 @@ contains
       call build_body(deck, m%body, err)
       call build_joints(deck, m%body, m%joints, err)
       call build_injury(deck, m%injury, err)
+      call build_materials(deck, m%materials)
       call build_vehicle(deck, m%vehicle, err)
       m%environment = environment_section_t(group_value(deck, g_gravity, 'G'))
       m%end_tests = end_tests_section_t(group_value(deck, g_endtests, 'VREST'), &
@@ -313,6 +315,25 @@ contains
          end do
       end associate
    end subroutine build_injury
+
+   !> Table 4: the materials the deck gives; the others keep the section's
+   !! values (no friction, elastic) and the XI default.
+   subroutine build_materials(deck, mat)
+      type(deck_t), intent(in) :: deck
+      type(materials_section_t), intent(out) :: mat
+      integer :: k, l
+      mat%xi = default_value(deck, g_materials, 'XI')
+      associate (g => deck%group(g_materials))
+         do k = 1, g%n
+            l = g%card(k)%index
+            mat%mu(l) = card_value(deck, g_materials, g%card(k), 'MU')
+            mat%xi(l) = card_value(deck, g_materials, g%card(k), 'XI')
+            mat%g(l) = card_value(deck, g_materials, g%card(k), 'G')
+            mat%r(l) = card_value(deck, g_materials, g%card(k), 'R')
+            mat%given(l) = .true.
+         end do
+      end associate
+   end subroutine build_materials
 
    !> Vehicle constants, initial motion and its time tables (C.1, C.3).
    subroutine build_vehicle(deck, v, err)

@@ -10,7 +10,7 @@ module run_report
    use strings, only: itoa
    use model, only: model_t, n_seg, n_joint, n_injury, n_arc, joint_partner, segment_name, &
       joint_name, arc_name, form_name, form_table, integrator_name, end_option_name, nint_adams, &
-      astart_name, solver_name
+      astart_name, solver_name, material_name
    use deck_reader, only: deck_t, echo_bad, echo_header
    use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text
    use error_handling, only: error_t, error_set, exit_io
@@ -332,6 +332,17 @@ contains
          write (line, '(i4,3es18.4)') i, m%injury%f_shear(i), m%injury%f_compression(i), m%injury%f_tension(i)
          call lst%put(line)
       end do
+
+      if (any(m%materials%given)) then
+         call lst%heading('TABLE 4 - MATERIALS (THOSE THE DECK GIVES)', count(m%materials%given) + 2)
+         call lst%put('   L  MATERIAL      MU          XI (in/s)   G           R')
+         do i = 1, size(m%materials%given)
+            if (.not. m%materials%given(i)) cycle
+            write (line, '(i4,2x,a12,4es12.4)') i, material_name(i), m%materials%mu(i), m%materials%xi(i), &
+               m%materials%g(i), m%materials%r(i)
+            call lst%put(line)
+         end do
+      end if
 
       associate (b => m%body)
          call lst%heading('TABLE 1 - CONTACT ARCS', 13)
