@@ -1,0 +1,199 @@
+!> Report C.4.e and C.2: the geometry of the belts — for each section its
+!! direction φ_j, nominal deformation δ_j, its rate δ̇_j and the gradient
+!! ∂δ_j/∂z, from which the generalized forces are B = −F_j ∂δ_j/∂z
+!! (docs/errata.md, BE-1: the printed B_2, B_3 are not this). Everything is
+!! in the vehicle-interior frame of the start of C.4 (x forward, y up,
+!! angles θ = α + Φ), with the conventions of errata-forces.md:
+!! (u_j, v_j) = belt point on the body − anchor, φ_j its direction (anchor →
+!! body) by atan2 (BE-2), the belt pulls the body towards the anchor.
+!!
+!! Lap belt (j = 1, figure 17, lost; reconstruction A-B1): it runs straight
+!! from its anchor A to its tangent point on the circle of radius h_1 about
+!! the hip, then wraps clockwise to E = hip + h_1 e(θ_1), h_1 up the lower
+!! torso's centre line. Its length is √(d² − h_1²) + h_1 (φ_1 − θ_1 + π/2),
+!! d = |hip − A|, φ_1 = asin(h_1/d) + atan2(v_1, u_1). Where the wrap would
+!! be negative the belt runs straight from A to E.
+!!
+!! Torso sections (j = 2, 3): straight from the anchor to the point h_j
+!! along the centre line of segment j from its proximal joint (joint 2 for
+!! the centre torso, joint 3 for the upper torso).
+!!
+!! The anchors and free lengths are fixed at t = 0 from the initial angles
+!! and lengths of the belts (C.2 with errata C2-1, C2-2, C2-3), so that
+!! every δ_j(0) = 0.
+module belt_geometry
+   use kinds, only: wp, pi
+   use model, only: n_dof, n_seg, hip_x, hip_y
+   implicit none
+   private
+
+   public :: belt_section_geometry_t, belt_kinematics_t, belt_body_t
+   public :: belt_lap, belt_torso, lap_belt_geometry, torso_belt_geometry, belt_kinematics
+   public :: belt_body_from
+
+   !> Kinds of belt section.
+   integer, parameter :: belt_lap = 1, belt_torso = 2
+
+   !> One section's fixed geometry (C.2).
+   type :: belt_section_geometry_t
+      integer :: kind = belt_torso
+      integer :: segment = 2          !< the segment carrying the belt point (1 for the lap belt)
+      real(wp) :: h = 0.0_wp          !< h_j: wrap radius (lap) or distance along the centre line (torso)
+      real(wp) :: anchor(2) = 0.0_wp  !< the anchorage, interior frame (in)
+      real(wp) :: length0 = 0.0_wp    !< ℓ_j0: the belt length at t = 0 (for the lap belt, with its wrap)
+   end type belt_section_geometry_t
+
+   !> What the belts need of the body at one instant, in the interior frame:
+   !! the positions and velocities of joints 1-3 (hip, lower spine, upper
+   !! spine), the angles and rates of segments 1-3, and the lengths and the
+   !! pitch for the gradients.
+   type :: belt_body_t
+      real(wp) :: joint(2, 3), joint_rate(2, 3)
+      real(wp) :: theta(3), theta_rate(3)
+      real(wp) :: length(2)        !< L_1, L_2
+      real(wp) :: phi              !< the vehicle's pitch Φ
+   end type belt_body_t
+
+   !> A section's state: direction, deformation, rate, gradient.
+   type :: belt_kinematics_t
+      real(wp) :: phi = 0.0_wp          !< φ_j, direction anchor → belt (or tangent) point
+      real(wp) :: delta = 0.0_wp        !< δ_j, nominal deformation (length − ℓ_j0)
+      real(wp) :: delta_rate = 0.0_wp   !< δ̇_j
+      real(wp) :: gradient(n_dof) = 0.0_wp  !< ∂δ_j/∂z
+      logical :: wrapped = .true.       !< lap belt: wraps the hip (false: straight to E)
+   end type belt_kinematics_t
+
+contains
+
+   !> The body data the belts use, from the interior positions and
+   !! velocities of joints 1-3 and the generalized state (section B, C.4).
+   pure function belt_body_from(joint, joint_rate, z, zdot, length, phi, phi_rate) result(bb)
+      real(wp), intent(in) :: joint(2, 3), joint_rate(2, 3), z(n_dof), zdot(n_dof), length(n_seg)
+      real(wp), intent(in) :: phi, phi_rate
+      type(belt_body_t) :: bb
+      bb%joint = joint
+      bb%joint_rate = joint_rate
+      bb%theta = z(1:3) + phi            ! θ_i = α_i + Φ (section B)
+      bb%theta_rate = zdot(1:3) + phi_rate
+      bb%length = length(1:2)
+      bb%phi = phi
+   end function belt_body_from
+
+   !> C.2 for the lap belt (j = 1): the anchor at ℓ'_0 from the initial hip
+   !! in the direction −e(φ'_0) (φ'_0 points from the anchor to the hip:
+   !! λ_1 = ℓ'_0 cos φ'_0, λ_2 = ℓ'_0 sin φ'_0), and the free length
+   !! ℓ_10 = √(ℓ'_0² − h_1²) + h_1 [φ_10 − Θ_10 + π/2], φ_10 = φ'_0 + asin(h_1/ℓ'_0)
+   !! (errata C2-2, C2-3). hip0 is the hip's initial interior position.
+   pure function lap_belt_geometry(h, length_anchor, phi_anchor, hip0, theta10) result(g)
+      real(wp), intent(in) :: h, length_anchor, phi_anchor, hip0(2), theta10
+      type(belt_section_geometry_t) :: g
+      g%kind = belt_lap
+      g%segment = 1
+      g%h = h
+      g%anchor = hip0 - length_anchor*[cos(phi_anchor), sin(phi_anchor)]
+      g%length0 = lap_length(g, hip0, theta10)
+   end function lap_belt_geometry
+
+   !> C.2 for a torso section (j = 2, 3): the anchor at ℓ_j0 from the
+   !! initial belt point P_j0 = joint_j0 + h_j e(Θ_j0) in the direction
+   !! −e(φ_j0) (errata C2-1: the horizontal sums belong to u_j, the vertical
+   !! ones to v_j).
+   pure function torso_belt_geometry(segment, h, length0, phi0, joint0, theta0) result(g)
+      integer, intent(in) :: segment
+      real(wp), intent(in) :: h, length0, phi0, joint0(2), theta0
+      type(belt_section_geometry_t) :: g
+      g%kind = belt_torso
+      g%segment = segment
+      g%h = h
+      g%length0 = length0
+      g%anchor = joint0 + h*[cos(theta0), sin(theta0)] - length0*[cos(phi0), sin(phi0)]
+   end function torso_belt_geometry
+
+   !> The lap belt's length from its anchor to E (with its wrap when the
+   !! wrap is positive).
+   pure real(wp) function lap_length(g, hip, theta1) result(length)
+      type(belt_section_geometry_t), intent(in) :: g
+      real(wp), intent(in) :: hip(2), theta1
+      real(wp) :: u, v, d, phi1, wrap, e(2)
+      u = hip(1) - g%anchor(1)
+      v = hip(2) - g%anchor(2)
+      d = hypot(u, v)
+      if (d > g%h) then
+         phi1 = asin(g%h/d) + atan2(v, u)
+         wrap = phi1 - theta1 + 0.5_wp*pi
+         if (wrap >= 0.0_wp) then
+            length = sqrt(d**2 - g%h**2) + g%h*wrap
+            return
+         end if
+      end if
+      e = hip + g%h*[cos(theta1), sin(theta1)] - g%anchor
+      length = hypot(e(1), e(2))
+   end function lap_length
+
+   !> φ_j, δ_j, δ̇_j and ∂δ_j/∂z of one section (C.4.e).
+   pure function belt_kinematics(g, bb) result(k)
+      type(belt_section_geometry_t), intent(in) :: g
+      type(belt_body_t), intent(in) :: bb
+      type(belt_kinematics_t) :: k
+      real(wp) :: dp_dz(2, n_dof), dth_dz(n_dof), p(2), p_rate(2), e(2), u, v, d, wrap, length
+      integer :: s
+
+      s = g%segment
+      call point_jacobian(bb, s, dp_dz)          ! the proximal joint of segment s
+      dth_dz = 0.0_wp
+      dth_dz(s) = 1.0_wp                          ! ∂θ_s/∂α_s
+
+      if (g%kind == belt_lap) then
+         u = bb%joint(1, 1) - g%anchor(1)
+         v = bb%joint(2, 1) - g%anchor(2)
+         d = hypot(u, v)
+         k%wrapped = d > g%h
+         if (k%wrapped) then
+            k%phi = asin(g%h/d) + atan2(v, u)     ! C.4.e φ_1, with atan2 (BE-2)
+            wrap = k%phi - bb%theta(1) + 0.5_wp*pi
+            k%wrapped = wrap >= 0.0_wp            ! A-B1: no negative wrap
+         end if
+         if (k%wrapped) then
+            ! δ_1 = √(u²+v²−h_1²) − ℓ_10 + h_1 [φ_1 − θ_1 + π/2]; its derivative
+            ! is the tangent direction against the hip's motion minus h_1 dθ_1
+            length = sqrt(d**2 - g%h**2) + g%h*wrap
+            e = [cos(k%phi), sin(k%phi)]
+            k%delta = length - g%length0
+            k%delta_rate = dot_product(e, bb%joint_rate(:, 1)) - g%h*bb%theta_rate(1)   ! C.4.e δ̇_1
+            k%gradient = matmul(e, dp_dz) - g%h*dth_dz
+            return
+         end if
+         ! straight from the anchor to E = hip + h_1 e(θ_1)
+         p = bb%joint(:, 1) + g%h*[cos(bb%theta(1)), sin(bb%theta(1))]
+         p_rate = bb%joint_rate(:, 1) + g%h*bb%theta_rate(1)*[-sin(bb%theta(1)), cos(bb%theta(1))]
+      else
+         ! C.4.e: u_j = x_j + h_j cos θ_j − (anchor x), v_j likewise
+         p = bb%joint(:, s) + g%h*[cos(bb%theta(s)), sin(bb%theta(s))]
+         p_rate = bb%joint_rate(:, s) + g%h*bb%theta_rate(s)*[-sin(bb%theta(s)), cos(bb%theta(s))]
+      end if
+      u = p(1) - g%anchor(1)
+      v = p(2) - g%anchor(2)
+      d = hypot(u, v)
+      k%phi = atan2(v, u)                          ! C.4.e φ_j, atan2 (BE-2)
+      e = [cos(k%phi), sin(k%phi)]
+      k%delta = d - g%length0                      ! δ_j = √(u_j² + v_j²) − ℓ_j0
+      k%delta_rate = dot_product(e, p_rate)        ! = ẋ_j cos φ_j + ẏ_j sin φ_j + h_j θ̇_j sin(φ_j − θ_j)
+      k%gradient = matmul(e, dp_dz) + g%h*dot_product(e, [-sin(bb%theta(s)), cos(bb%theta(s))])*dth_dz
+   end function belt_kinematics
+
+   !> ∂(interior position of the proximal joint of segment s)/∂z, s = 1..3:
+   !! the hip moves with x_h, y_h (rotated into the interior frame), joint 2
+   !! also with α_1 (L_1), joint 3 with α_1 and α_2 (section B).
+   pure subroutine point_jacobian(bb, s, dp_dz)
+      type(belt_body_t), intent(in) :: bb
+      integer, intent(in) :: s
+      real(wp), intent(out) :: dp_dz(2, n_dof)
+      integer :: k
+      dp_dz = 0.0_wp
+      dp_dz(:, hip_x) = [cos(bb%phi), sin(bb%phi)]      ! R(Φ) e_x
+      dp_dz(:, hip_y) = [-sin(bb%phi), cos(bb%phi)]     ! R(Φ) e_y
+      do k = 1, s - 1
+         dp_dz(:, k) = bb%length(k)*[-sin(bb%theta(k)), cos(bb%theta(k))]
+      end do
+   end subroutine point_jacobian
+end module belt_geometry
