@@ -231,7 +231,7 @@ contains
          end do
          call polynomial_minimum(dq(0:c%order - 1), q_min, at)
          if (q_min < -1.0e-12_wp*maxval(abs(dq))*max(1.0_wp, at)**(c%order - 1)) then
-            if (at > huge(1.0_wp)) then
+            if (at >= huge(1.0_wp)) then
                message = 'the force decreases, and finally pulls, as the deformation grows ' &
                          //'(the highest coefficient is negative)'
             else

@@ -226,9 +226,6 @@ contains
          end if
       else if (delta_dot > 0.0_wp) then
          ! point x: d-dot from negative to positive, a new cycle (C.4.e)
-         mem%cycle = mem%cycle + 1
-         mem%unloading = .false.
-         mem%delta_x = delta
          if (delta <= mem%delta_zero) then
             ! case 1: the load was completely removed; the new cycle starts at
             ! the end of the unloading curve
@@ -242,6 +239,9 @@ contains
             mem%f_x = fx
             mem%eps = delta - curve_deflection_at(law%curve, fx)
          end if
+         mem%cycle = mem%cycle + 1
+         mem%unloading = .false.
+         mem%delta_x = delta
          changed = .true.
       end if
    end subroutine recurrent_accept
