@@ -39,6 +39,9 @@ module loading_curves
    integer, parameter :: curve_none = 0, curve_polynomial = 1, curve_table = 2
    !> Highest polynomial order N ("fifth-order polynomials", C.4.f).
    integer, parameter :: max_order = 5
+   !> Beyond any deformation or rate that means something (in, in/s): the
+   !! searches stop there, so that no polynomial of the deck overflows.
+   real(wp), parameter :: x_far = 1.0e50_wp
 
    !> One loading curve. Units: d in in, v in in/s, F in lb.
    type :: loading_curve_t
@@ -164,7 +167,7 @@ contains
          ! F_e is continuous and not decreasing: bisection for its first crossing of f
          hi = 1.0_wp
          do it = 1, 2000
-            if (curve_elastic_force(c, hi) >= f .or. hi > huge(1.0_wp)/4.0_wp) exit
+            if (curve_elastic_force(c, hi) >= f .or. hi > x_far) exit
             hi = 2.0_wp*hi
          end do
          lo = 0.0_wp
@@ -230,15 +233,14 @@ contains
             dq(k - 1) = real(k, wp)*c%sigma(k)
          end do
          call polynomial_minimum(dq(0:c%order - 1), q_min, at)
-         if (q_min < -1.0e-12_wp*maxval(abs(dq))*max(1.0_wp, at)**(c%order - 1)) then
-            if (at >= huge(1.0_wp)) then
-               message = 'the force decreases, and finally pulls, as the deformation grows ' &
-                         //'(the highest coefficient is negative)'
-            else
-               message = 'the force decreases with the deformation near d = '//num(at) &
-                         //' in (slope '//num(q_min)//' lb/in); a loading curve must not decrease, ' &
-                         //'so that it never pulls'
-            end if
+         if (at >= huge(1.0_wp)) then
+            message = 'the force decreases, and finally pulls, as the deformation grows ' &
+                      //'(the highest coefficient is negative)'
+         else if (q_min < -1.0e-12_wp*maxval(abs(dq))*max(1.0_wp, at)**(c%order - 1)) then
+            ! (the tolerance: rounding in F_e' at d = at)
+            message = 'the force decreases with the deformation near d = '//num(at) &
+                      //' in (slope '//num(q_min)//' lb/in); a loading curve must not decrease, ' &
+                      //'so that it never pulls'
          end if
       case (curve_table)
          if (.not. (allocated(c%defl) .and. allocated(c%force))) then
@@ -274,11 +276,13 @@ contains
       end select
    end subroutine curve_check
 
-   !> The minimum of q(x) = sum c(j) x**j over x >= 0, and where it is
-   !! (at = huge when q falls without bound). Exact up to rounding: q's
+   !> The minimum of q(x) = sum c(j) x**j over 0 <= x <= x_far, and where it
+   !! is (at = huge when q falls without bound). Exact up to rounding: q's
    !! minimum lies at 0 or at a real root of q' (found by isolating the
    !! roots of each derivative between those of the next), all of which lie
-   !! within the Cauchy bound of q'.
+   !! within the Cauchy bound of q' (beyond x_far = 1e50 only when the
+   !! highest coefficient is some 1e50 times smaller than the others: a
+   !! deformation far beyond any meaning).
    pure subroutine polynomial_minimum(c, q_min, at)
       real(wp), intent(in) :: c(0:)
       real(wp), intent(out) :: q_min, at
@@ -297,8 +301,11 @@ contains
       do j = 1, n
          dc(j - 1) = real(j, wp)*c(j)
       end do
-      ! every critical point lies within the Cauchy bound of q'
-      bound = 1.0_wp + maxval(abs(dc(0:n - 2)))/abs(dc(n - 1))
+      ! every critical point lies within the Cauchy bound of q' (searched up
+      ! to x_far at most, so that q never overflows there)
+      bound = x_far
+      if (maxval(abs(dc(0:n - 2))) < x_far*abs(dc(n - 1))) &
+         bound = 1.0_wp + maxval(abs(dc(0:n - 2)))/abs(dc(n - 1))
       call real_roots(dc(0:n - 1), 0.0_wp, bound, roots, nr)
       do j = 1, nr
          q = horner(c(0:n), roots(j))
@@ -324,10 +331,12 @@ contains
       n = degree(c)
       if (n <= 0) return
       if (n == 1) then
-         mid = -c(0)/c(1)
-         if (mid > a .and. mid < b) then
-            nr = 1
-            roots(1) = mid
+         if (abs(c(0)) < max(abs(a), abs(b))*abs(c(1))) then   ! the root is finite
+            mid = -c(0)/c(1)
+            if (mid > a .and. mid < b) then
+               nr = 1
+               roots(1) = mid
+            end if
          end if
          return
       end if
