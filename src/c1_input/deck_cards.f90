@@ -12,6 +12,8 @@
 !! for card identification and are ignored.
 module deck_cards
    use kinds, only: wp, deg, g_std
+   use loading_curves, only: max_order
+   use model, only: max_curves, n_belt_section
    implicit none
    private
 
@@ -24,6 +26,7 @@ module deck_cards
    public :: g_title, g_options, g_time, g_segments, g_joints, g_restraints, g_stopcurve
    public :: g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates
    public :: g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials, n_groups
+   public :: g_loadpoly, g_loadrate, g_loadtable, g_beltloading
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -47,7 +50,9 @@ module deck_cards
       g_joints = 5, g_restraints = 6, g_stopcurve = 7, g_injury = 8, g_arcs = 9, &
       g_initial = 10, g_vehicle = 11, g_gravity = 12, g_pulse = 13, g_pulserates = 14, &
       g_pulsepos = 15, g_pulsefile = 16, g_endtests = 17, g_numerics = 18, g_materials = 19
-   integer, parameter :: n_groups = 19
+   !> Loading curves (C.4.e, C.4.f; docs/loading.md).
+   integer, parameter :: g_loadpoly = 20, g_loadrate = 21, g_loadtable = 22, g_beltloading = 23
+   integer, parameter :: n_groups = 23
 
    !> One field of a card.
    type :: field_spec_t
@@ -201,9 +206,9 @@ contains
 
       t(g_options)%name = 'OPTIONS'
       t(g_options)%title = 'Program options (C.1)'
-      t(g_options)%note = 'NBELT and NLOAD are read and checked for the belt and contact issues to come: ' &
-         //'this version models no belts (NBELT must be 0) and NLOAD has no effect yet. ' &
-         //'NEND = 2 needs contact surfaces, which this version does not model yet.'
+      t(g_options)%note = 'NBELT is read and checked for the belt issue to come: this version models no ' &
+         //'belts (NBELT must be 0). NLOAD selects the loading curves the deck gives: *LOADPOLY (1) or ' &
+         //'*LOADTABLE (2). NEND = 2 needs contact surfaces, which this version does not model yet.'
       call set_fields(t(g_options), [ &
          int_field('NBODY', blank_default, 1, 1, 3, 'occupant: 1 driver, 2 front-seat passenger, 3 rear-seat passenger'), &
          int_field('NBELT', blank_default, 0, 0, 3, 'belts: 0 none, 1 lap, 2 torso, 3 lap and torso (C.4.e)'), &
@@ -430,13 +435,18 @@ contains
          //'9 visor, 10 column, 11 abdomen, 12 chest, 13 face, 14 shoulder. MU and XI: Coulomb friction ' &
          //'against the material, acting once the sliding ' &
          //'velocity reaches XI. G: ratio of residual to maximum deformation; R: ratio of the energy ' &
-         //'conserved to that absorbed (recurrent loading, C.4.e figure 18). A material without a card ' &
-         //'has no friction, G = 0 and R = 1 (elastic).'
+         //'conserved to that absorbed (recurrent loading, C.4.e figure 18); R must not exceed 1 - G ' &
+         //'(docs/loading.md). CURVE: the number k of its loading curve (*LOADPOLY or *LOADTABLE, as ' &
+         //'NLOAD selects), 0 for none. A material without a card ' &
+         //'has no friction, G = 0 and R = 1 (elastic) and no curve.'
       call set_fields(t(g_materials), [ &
          real_field('MU', '-', one, blank_default, zero, zero, 10.0_wp, 'friction coefficient mu_l'), &
          real_field('XI', 'in/s', one, blank_default, 0.1_wp, zero, 1.0e4_wp, 'friction velocity limit xi_l'), &
          real_field('G', '-', one, blank_default, zero, zero, 1.0_wp, 'residual / maximum deformation G_l'), &
-         real_field('R', '-', one, blank_default, one, zero, 1.0_wp, 'conserved / absorbed energy R_l')])
+         real_field('R', '-', one, blank_default, one, zero, 1.0_wp, 'conserved / absorbed energy R_l'), &
+         int_field('CURVE', blank_default, 0, 0, max_curves, 'loading curve k (0: none)')])
+
+      call loading_groups(t)
 
       block
          integer :: i
@@ -447,5 +457,76 @@ contains
          end do
       end block
    end function card_table
+
+   !> The loading-curve groups (C.4.e, C.4.f, Tables 2 and 4; docs/loading.md).
+   pure subroutine loading_groups(t)
+      type(group_spec_t), intent(inout) :: t(:)
+      real(wp), parameter :: big = 1.0e12_wp, one = 1.0_wp, zero = 0.0_wp
+      character(len=8), parameter :: s_unit(max_order) = [character(len=8) :: &
+         'lb/in', 'lb/in^2', 'lb/in^3', 'lb/in^4', 'lb/in^5']
+      character(len=12), parameter :: r_unit(max_order) = [character(len=12) :: &
+         'lb*s/in', 'lb*s^2/in^2', 'lb*s^3/in^3', 'lb*s^4/in^4', 'lb*s^5/in^5']
+      character(len=1), parameter :: digit(max_order) = ['1', '2', '3', '4', '5']
+      type(field_spec_t) :: f(max_order + 1)
+      integer :: n
+
+      t(g_loadpoly)%name = 'LOADPOLY'
+      t(g_loadpoly)%title = 'Polynomial loading curves, NLOAD = 1 (Tables 2 and 4: N, sigma_n)'
+      t(g_loadpoly)%layout = layout_indexed
+      t(g_loadpoly)%max_index = max_curves
+      t(g_loadpoly)%index_name = 'curve k'
+      t(g_loadpoly)%note = 'Force F = SIGMA1 d + SIGMA2 d**2 + ... + SIGMAN d**N (lb) at a deformation d >= 0 ' &
+         //'(in), plus the rate terms of *LOADRATE. The force must not decrease as d grows, so that it ' &
+         //'never pulls; SIGMAn beyond N must be blank. Materials (*MATERIALS CURVE) and belt sections ' &
+         //'(*BELTLOADING) name their curve by k. Used when NLOAD = 1; see docs/loading.md.'
+      f(1) = int_field('N', blank_required, 0, 1, max_order, 'order N of the polynomial')
+      do n = 1, max_order
+         f(n + 1) = real_field('SIGMA'//digit(n), trim(s_unit(n)), one, blank_default, zero, -big, big, &
+                               'coefficient sigma_'//digit(n)//' of d**'//digit(n))
+      end do
+      call set_fields(t(g_loadpoly), f)
+
+      t(g_loadrate)%name = 'LOADRATE'
+      t(g_loadrate)%title = 'Rate terms of the loading curves (Tables 2 and 4: sigma_n+N)'
+      t(g_loadrate)%layout = layout_indexed
+      t(g_loadrate)%max_index = max_curves
+      t(g_loadrate)%index_name = 'curve k'
+      t(g_loadrate)%note = 'Adds RATE1 v + RATE2 v abs(v) + ... + RATEn v abs(v)**(n-1) (lb) to curve k, v being the rate ' &
+         //'of deformation (in/s): sigma_N+1 .. sigma_2N of the report, odd in v so that each term ' &
+         //'opposes the motion. They act while the curve carries load, and the total force never ' &
+         //'pulls. A polynomial curve of order N takes RATE1..RATEN only. Curve k must be given.'
+      do n = 1, max_order
+         f(n) = real_field('RATE'//digit(n), trim(r_unit(n)), one, blank_default, zero, zero, big, &
+                           'sigma_N+'//digit(n)//': coefficient of abs(v)**'//digit(n)//', sign of v')
+      end do
+      call set_fields(t(g_loadrate), f(1:max_order))
+
+      t(g_loadtable)%name = 'LOADTABLE'
+      t(g_loadtable)%title = 'Tabulated loading curves, NLOAD = 2'
+      t(g_loadtable)%layout = layout_multi
+      t(g_loadtable)%max_index = max_curves
+      t(g_loadtable)%min_cards = 2
+      t(g_loadtable)%max_cards = 100000
+      t(g_loadtable)%index_name = 'curve k'
+      t(g_loadtable)%note = 'Points (d, F) of curve k in order: the first (0, 0), d increasing, F not ' &
+         //'decreasing. Between points the force is linear in d; beyond the last point it continues ' &
+         //'along the last interval. *LOADRATE may add rate terms. Used when NLOAD = 2.'
+      call set_fields(t(g_loadtable), [ &
+         real_field('DEFL', 'in', one, blank_required, zero, zero, big, 'deformation d'), &
+         real_field('FORCE', 'lb', one, blank_required, zero, zero, big, 'force F at d')])
+
+      t(g_beltloading)%name = 'BELTLOADING'
+      t(g_beltloading)%title = 'Loading of the belt sections, Table 2 (C.4.e, figure 18)'
+      t(g_beltloading)%layout = layout_indexed
+      t(g_beltloading)%max_index = n_belt_section
+      t(g_beltloading)%index_name = 'section j'
+      t(g_beltloading)%note = 'j: 1 lap belt, 2 torso belt at the centre torso, 3 torso belt at the upper ' &
+         //'torso. CURVE: the number k of the section''s loading curve (*LOADPOLY or *LOADTABLE, as ' &
+         //'NLOAD selects). G and R as for *MATERIALS; R must not exceed 1 - G.'
+      call set_fields(t(g_beltloading), [ &
+         int_field('CURVE', blank_required, 0, 1, max_curves, 'loading curve k'), &
+         real_field('G', '-', one, blank_default, zero, zero, one, 'residual / maximum deformation G_j'), &
+         real_field('R', '-', one, blank_default, one, zero, one, 'conserved / absorbed energy R_j')])
+   end subroutine loading_groups
 
 end module deck_cards

@@ -5,6 +5,7 @@
 module model
    use kinds, only: wp
    use text_io, only: string_t
+   use loading_curves, only: loading_curve_t
    implicit none
    private
 
@@ -16,7 +17,7 @@ module model
    public :: stop_curve_t, restraint_t, model_t, pulse_table_t
    public :: options_section_t, time_section_t, numerics_section_t, body_section_t, joints_section_t
    public :: injury_section_t, vehicle_section_t, environment_section_t, end_tests_section_t
-   public :: materials_section_t
+   public :: materials_section_t, loading_section_t, max_curves, n_belt_section
    public :: solver_structured, solver_dense, solver_name, astart_euler, astart_rk4, astart_name
 
    integer, parameter :: n_seg = 8     !< body segments (Table 5)
@@ -144,8 +145,8 @@ module model
    end type injury_section_t
 
    !> Materials of Table 4 (l as in material_name): friction and the
-   !! recurrent-loading ratios. The loading curves come with the effects
-   !! that use them.
+   !! recurrent-loading ratios; each material's loading curve is named in
+   !! loading_section_t.
    type :: materials_section_t
       real(wp) :: mu(n_material) = 0.0_wp    !< friction coefficient
       real(wp) :: xi(n_material) = 0.0_wp    !< friction velocity limit (in/s)
@@ -153,6 +154,21 @@ module model
       real(wp) :: r(n_material) = 1.0_wp     !< conserved / absorbed energy
       logical :: given(n_material) = .false. !< the deck has a card for it
    end type materials_section_t
+
+   integer, parameter :: max_curves = 20     !< loading curves k of a deck (*LOADPOLY, *LOADTABLE)
+   integer, parameter :: n_belt_section = 3  !< belt sections j of Table 2: lap, torso on 2, torso on 3
+
+   !> Loading curves (C.4.e, C.4.f; docs/loading.md): the curves of the form
+   !! NLOAD selects, by number k (form curve_none: not given), the curve of
+   !! each material (0: none) and of each belt section with its G and R
+   !! (Table 2; those of the materials are in materials_section_t).
+   type :: loading_section_t
+      type(loading_curve_t) :: curve(max_curves)
+      integer :: material_curve(n_material) = 0
+      integer :: belt_curve(n_belt_section) = 0
+      real(wp) :: belt_g(n_belt_section) = 0.0_wp   !< residual / maximum deformation
+      real(wp) :: belt_r(n_belt_section) = 1.0_wp   !< conserved / absorbed energy
+   end type loading_section_t
 
    !> The vehicle (C.1, C.3): constants, initial motion, time tables.
    type :: vehicle_section_t
@@ -187,6 +203,7 @@ module model
       type(joints_section_t) :: joints
       type(injury_section_t) :: injury
       type(materials_section_t) :: materials
+      type(loading_section_t) :: loading
       type(vehicle_section_t) :: vehicle
       type(environment_section_t) :: environment
       type(end_tests_section_t) :: end_tests

@@ -11,7 +11,8 @@ module model_builder
    use text_io, only: append_string
    use deck_cards, only: g_title, g_options, g_time, g_segments, g_joints, g_restraints, &
       g_stopcurve, g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates, &
-      g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials
+      g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials, &
+      g_loadpoly, g_loadrate, g_loadtable, g_beltloading
    use deck_reader, only: deck_t, group_t, card_t
    use deck_fields, only: card_value, card_int, card_given, group_value, group_int, single_card, default_value
    use pulse_csv, only: read_pulse_csv
@@ -19,7 +20,11 @@ module model_builder
       numerics_section_t, body_section_t, joints_section_t, injury_section_t, vehicle_section_t, &
       materials_section_t, &
       environment_section_t, end_tests_section_t, n_seg, n_joint, n_arc, joint_partner, &
-      form_cubic, form_table, nint_adams, nint_rk4, nend_contact
+      form_cubic, form_table, nint_adams, nint_rk4, nend_contact, loading_section_t, max_curves
+   use text_io, only: string_t
+   use loading_curves, only: loading_curve_t, curve_polynomial, curve_table, curve_is_defined, &
+      curve_check, max_order
+   use recurrent_loading, only: recurrent_check
    implicit none
    private
 
@@ -44,6 +49,7 @@ contains
       call build_joints(deck, m%body, m%joints, err)
       call build_injury(deck, m%injury, err)
       call build_materials(deck, m%materials)
+      call build_loading(deck, m%options%nload, m%materials, m%loading, m%warnings, err)
       call build_vehicle(deck, m%vehicle, err)
       m%environment = environment_section_t(group_value(deck, g_gravity, 'G'))
       m%end_tests = end_tests_section_t(group_value(deck, g_endtests, 'VREST'), &
@@ -334,6 +340,154 @@ contains
          end do
       end associate
    end subroutine build_materials
+
+   !> Loading curves (C.4.e, C.4.f; docs/loading.md): those of the form NLOAD
+   !! selects (*LOADPOLY or *LOADTABLE) with their *LOADRATE terms, the curve
+   !! each material (*MATERIALS CURVE) and belt section (*BELTLOADING) names,
+   !! and what single fields cannot check: orders, curves that never pull,
+   !! curves that exist, R <= 1 - G.
+   subroutine build_loading(deck, nload, mat, ld, warnings, err)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: nload
+      type(materials_section_t), intent(in) :: mat
+      type(loading_section_t), intent(out) :: ld
+      type(string_t), allocatable, intent(inout) :: warnings(:)
+      type(error_t), intent(inout) :: err
+      character(len=1), parameter :: digit(max_order) = ['1', '2', '3', '4', '5']
+      character(len=:), allocatable :: where, message, selected
+      integer :: k, i, n
+
+      selected = trim(merge('*LOADPOLY ', '*LOADTABLE', nload == 1))
+      if (nload == 1) then
+         call build_polynomials(deck, ld, err)
+         call unused(g_loadtable, '*LOADPOLY')
+      else
+         call build_tables(deck, ld, err)
+         call unused(g_loadpoly, '*LOADTABLE')
+      end if
+
+      associate (g => deck%group(g_loadrate))
+         do k = 1, g%n
+            i = g%card(k)%index
+            where = '*LOADRATE curve '//itoa(i)
+            if (.not. curve_is_defined(ld%curve(i))) then
+               call problem(deck, err, g%card(k), where//': no such curve in '//selected//' (NLOAD = ' &
+                  //itoa(nload)//')')
+               cycle
+            end if
+            do n = 1, max_order
+               ld%curve(i)%sigma_rate(n) = card_value(deck, g_loadrate, g%card(k), 'RATE'//digit(n))
+               if (ld%curve(i)%form == curve_polynomial .and. n > ld%curve(i)%order .and. &
+                   card_given(deck, g_loadrate, g%card(k), 'RATE'//digit(n))) &
+                  call problem(deck, err, g%card(k), where//', field RATE'//digit(n)//': beyond the order N = ' &
+                  //itoa(ld%curve(i)%order)//' of the curve (the report pairs sigma_n+N with sigma_n)')
+            end do
+         end do
+      end associate
+
+      associate (g => deck%group(g_materials))
+         do k = 1, g%n
+            i = g%card(k)%index
+            where = '*MATERIALS material '//itoa(i)
+            ld%material_curve(i) = card_int(deck, g_materials, g%card(k), 'CURVE')
+            call check_reference(g%card(k), ld%material_curve(i))
+            message = recurrent_check(mat%g(i), mat%r(i))
+            if (len(message) > 0) call problem(deck, err, g%card(k), where//', fields G and R: '//message)
+         end do
+      end associate
+
+      associate (g => deck%group(g_beltloading))
+         do k = 1, g%n
+            i = g%card(k)%index
+            where = '*BELTLOADING section '//itoa(i)
+            ld%belt_curve(i) = card_int(deck, g_beltloading, g%card(k), 'CURVE')
+            ld%belt_g(i) = card_value(deck, g_beltloading, g%card(k), 'G')
+            ld%belt_r(i) = card_value(deck, g_beltloading, g%card(k), 'R')
+            call check_reference(g%card(k), ld%belt_curve(i))
+            message = recurrent_check(ld%belt_g(i), ld%belt_r(i))
+            if (len(message) > 0) call problem(deck, err, g%card(k), where//', fields G and R: '//message)
+         end do
+      end associate
+   contains
+      !> A curve named on a card must exist in the selected form.
+      subroutine check_reference(c, curve)
+         type(card_t), intent(in) :: c
+         integer, intent(in) :: curve
+         if (curve < 1 .or. curve > max_curves) return
+         if (.not. curve_is_defined(ld%curve(curve))) call problem(deck, err, c, where//', field CURVE: ' &
+            //'no curve '//itoa(curve)//' in '//selected//' (NLOAD = '//itoa(nload)//')')
+      end subroutine check_reference
+      !> The other form's group is read but not used: say so.
+      subroutine unused(gid, used)
+         integer, intent(in) :: gid
+         character(len=*), intent(in) :: used
+         type(card_t) :: header
+         if (.not. deck%group(gid)%present) return
+         header%source = deck%group(gid)%source
+         header%line = deck%group(gid)%line
+         call append_string(warnings, located(deck, header, '*'//trim(deck%spec(gid)%name)//' is not used: ' &
+            //'NLOAD = '//itoa(nload)//' selects '//used))
+      end subroutine unused
+   end subroutine build_loading
+
+   !> The polynomial curves of *LOADPOLY (NLOAD = 1).
+   subroutine build_polynomials(deck, ld, err)
+      type(deck_t), intent(in) :: deck
+      type(loading_section_t), intent(inout) :: ld
+      type(error_t), intent(inout) :: err
+      character(len=1), parameter :: digit(max_order) = ['1', '2', '3', '4', '5']
+      character(len=:), allocatable :: where, message
+      type(loading_curve_t) :: cv
+      integer :: k, i, n, point
+      associate (g => deck%group(g_loadpoly))
+         do k = 1, g%n
+            i = g%card(k)%index
+            where = '*LOADPOLY curve '//itoa(i)
+            cv = loading_curve_t()
+            cv%form = curve_polynomial
+            cv%order = card_int(deck, g_loadpoly, g%card(k), 'N')
+            do n = 1, max_order
+               if (n <= cv%order) then
+                  cv%sigma(n) = card_value(deck, g_loadpoly, g%card(k), 'SIGMA'//digit(n))
+               else if (card_given(deck, g_loadpoly, g%card(k), 'SIGMA'//digit(n))) then
+                  call problem(deck, err, g%card(k), where//', field SIGMA'//digit(n)//': beyond the ' &
+                     //'order N = '//itoa(cv%order)//'; leave it blank or raise N')
+               end if
+            end do
+            call curve_check(cv, message, point)
+            if (len(message) > 0) call problem(deck, err, g%card(k), where//': '//message)
+            ld%curve(i) = cv
+         end do
+      end associate
+   end subroutine build_polynomials
+
+   !> The tabulated curves of *LOADTABLE (NLOAD = 2): the points of each
+   !! curve in the order of its cards.
+   subroutine build_tables(deck, ld, err)
+      type(deck_t), intent(in) :: deck
+      type(loading_section_t), intent(inout) :: ld
+      type(error_t), intent(inout) :: err
+      character(len=:), allocatable :: message
+      integer, allocatable :: cards(:)
+      integer :: k, i, point
+      associate (g => deck%group(g_loadtable))
+         do i = 1, max_curves
+            cards = pack([(k, k=1, g%n)], [(g%card(k)%index == i, k=1, g%n)])
+            if (size(cards) == 0) cycle
+            associate (cv => ld%curve(i))
+               cv%form = curve_table
+               cv%defl = [(card_value(deck, g_loadtable, g%card(cards(k)), 'DEFL'), k=1, size(cards))]
+               cv%force = [(card_value(deck, g_loadtable, g%card(cards(k)), 'FORCE'), k=1, size(cards))]
+               call curve_check(cv, message, point)
+               if (len(message) > 0) then
+                  if (point < 1) point = size(cards)
+                  call problem(deck, err, g%card(cards(point)), '*LOADTABLE curve '//itoa(i)//', point ' &
+                     //itoa(point)//': '//message)
+               end if
+            end associate
+         end do
+      end associate
+   end subroutine build_tables
 
    !> Vehicle constants, initial motion and its time tables (C.1, C.3).
    subroutine build_vehicle(deck, v, err)

@@ -1,0 +1,427 @@
+!> Loading curves of the belts (report C.4.e) and of the padded and
+!! non-rigid interior surfaces (C.4.f): the force F(d, v) >= 0 that an
+!! element carries at a deformation d and a rate of deformation v = d-dot
+!! (docs/loading.md, sections 1-2).
+!!
+!! - NLOAD = 1, polynomial (Tables 2 and 4: N, sigma_n and sigma_{n+N}):
+!!   elastic part  F_e(d) = sigma_1 d + sigma_2 d**2 + ... + sigma_N d**N;
+!!   rate part     F_v(v) = sum_k sigma_{N+k} |v|**(k-1) v   (k = 1..N).
+!! - NLOAD = 2, tabulated: F_e(d) linear between points (d_i, F_i) that
+!!   start at (0, 0), d increasing and F not decreasing; beyond the last
+!!   point along the last interval. The rate part is as above.
+!! - total: F = max(0, F_e(d) + F_v(v)) while the elastic part carries load
+!!   (F_e > 0), else 0. A curve never pulls.
+!!
+!! The rate terms are the report's polynomial in the rate ("fifth-order
+!! polynomials in both the deflection and the rate of deflection", C.4.f)
+!! extended oddly to v < 0, so that every term with sigma_{N+k} >= 0 opposes
+!! the motion: F_v v = sum sigma_{N+k} |v|**(k+1) >= 0. Taken literally,
+!! sigma v**2 would push harder while the element unloads (an energy source).
+!! The clip at 0 removes at most part of a term that opposes v, so the rate
+!! part F - F_e keeps the sign of v: it only ever dissipates (loading.md 2).
+!!
+!! The checks a deck must pass (curve_check): F_e not decreasing for d >= 0
+!! (which with F_e(0) = 0 means it never pulls; polynomials are checked
+!! exactly, through the real roots of F_e'), not identically zero, rate
+!! coefficients >= 0, table abscissae increasing.
+module loading_curves
+   use kinds, only: wp
+   use strings, only: itoa, num
+   implicit none
+   private
+
+   public :: loading_curve_t, curve_none, curve_polynomial, curve_table, max_order
+   public :: curve_is_defined, curve_elastic_force, curve_rate_force, curve_force
+   public :: curve_energy, curve_moment, curve_deflection_at, curve_check
+   public :: polynomial_minimum
+
+   !> Forms of a curve: NLOAD = 1 and 2 of *OPTIONS (C.1).
+   integer, parameter :: curve_none = 0, curve_polynomial = 1, curve_table = 2
+   !> Highest polynomial order N ("fifth-order polynomials", C.4.f).
+   integer, parameter :: max_order = 5
+   !> Beyond any deformation or rate that means something (in, in/s): the
+   !! searches stop there, so that no polynomial of the deck overflows.
+   real(wp), parameter :: x_far = 1.0e50_wp
+
+   !> One loading curve. Units: d in in, v in in/s, F in lb.
+   type :: loading_curve_t
+      integer :: form = curve_none
+      integer :: order = 0                        !< N (polynomial)
+      real(wp) :: sigma(max_order) = 0.0_wp       !< sigma_1..sigma_N (lb/in**n)
+      real(wp) :: sigma_rate(max_order) = 0.0_wp  !< sigma_{N+1}..sigma_{2N} (lb*s**k/in**k)
+      real(wp), allocatable :: defl(:)            !< table: deformations d_i (in)
+      real(wp), allocatable :: force(:)           !< table: forces F_i (lb)
+   end type loading_curve_t
+
+contains
+
+   !> True when the curve has been given (a polynomial or a table).
+   pure logical function curve_is_defined(c)
+      type(loading_curve_t), intent(in) :: c
+      curve_is_defined = c%form == curve_polynomial .or. c%form == curve_table
+   end function curve_is_defined
+
+   !> The elastic (rate-independent) part F_e(d); 0 for d <= 0.
+   pure real(wp) function curve_elastic_force(c, d) result(f)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: d
+      integer :: k
+      f = 0.0_wp
+      if (.not. d > 0.0_wp) return
+      select case (c%form)
+      case (curve_polynomial)
+         ! Tables 2, 4: sum sigma_n d**n (Horner)
+         do k = c%order, 1, -1
+            f = (f + c%sigma(k))*d
+         end do
+      case (curve_table)
+         k = table_interval(c%defl, d)
+         f = c%force(k) + slope(c, k)*(d - c%defl(k))
+      end select
+      f = max(f, 0.0_wp)   ! a curve that passed curve_check is >= 0 already
+   end function curve_elastic_force
+
+   !> The rate part F_v(v) = sum_k sigma_{N+k} |v|**(k-1) v (loading.md 2):
+   !! the sign of v, so that it always dissipates.
+   pure real(wp) function curve_rate_force(c, v) result(f)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: v
+      integer :: k
+      real(wp) :: a
+      f = 0.0_wp
+      a = abs(v)
+      do k = max_order, 1, -1
+         f = (f + c%sigma_rate(k))*a
+      end do
+      f = sign(f, v)
+      if (.not. abs(v) > 0.0_wp) f = 0.0_wp
+   end function curve_rate_force
+
+   !> The force of the curve without memory (an elastic element, docs/
+   !! loading.md 2): max(0, F_e(d) + F_v(v)) while F_e(d) > 0, else 0.
+   pure real(wp) function curve_force(c, d, v) result(f)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: d, v
+      real(wp) :: fe
+      fe = curve_elastic_force(c, d)
+      f = 0.0_wp
+      if (fe > 0.0_wp) f = max(0.0_wp, fe + curve_rate_force(c, v))
+   end function curve_force
+
+   !> The energy of the elastic part, E(d) = integral of F_e from 0 to d
+   !! (exact: sum sigma_n d**(n+1)/(n+1), or the trapezoids of the table).
+   pure real(wp) function curve_energy(c, d) result(e)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: d
+      e = curve_moment(c, d, 0.0_wp)
+   end function curve_energy
+
+   !> M(d, p) = integral from 0 to d of F_e(u) (u/d)**p du, p >= 0, exact
+   !! for both forms (M(d, 0) = E(d)). The unloading curves of recurrent
+   !! loading are sized with it (docs/loading.md 3).
+   pure real(wp) function curve_moment(c, d, p) result(m)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: d, p
+      integer :: k, last
+      real(wp) :: s0, s1, u0, u1, b, f0
+      m = 0.0_wp
+      if (.not. d > 0.0_wp) return
+      select case (c%form)
+      case (curve_polynomial)
+         ! integral of sigma_n u**n (u/d)**p = sigma_n d**(n+1)/(n+1+p)
+         do k = c%order, 1, -1
+            m = (m + c%sigma(k)/(real(k + 1, wp) + p))*d
+         end do
+         m = m*d
+      case (curve_table)
+         ! F_e = f0 + b (u - u0) on each interval, u = s d: the integral of
+         ! (f0 - b u0 + b d s) s**p d ds in closed form
+         last = table_interval(c%defl, d)
+         do k = 1, last
+            u0 = c%defl(k)
+            u1 = d
+            if (k < last) u1 = c%defl(k + 1)
+            b = slope(c, k)
+            f0 = c%force(k)
+            s0 = u0/d
+            s1 = u1/d
+            m = m + d*((f0 - b*u0)*(pw(s1, p + 1.0_wp) - pw(s0, p + 1.0_wp))/(p + 1.0_wp) &
+                       + b*d*(pw(s1, p + 2.0_wp) - pw(s0, p + 2.0_wp))/(p + 2.0_wp))
+         end do
+      end select
+   end function curve_moment
+
+   !> The smallest d >= 0 at which F_e(d) >= f: the inverse of the curve
+   !! (recurrent loading, case 2 of figure 18; docs/loading.md 3). 0 for
+   !! f <= 0. For an f the curve never reaches (a table ending flat), the
+   !! last point.
+   pure real(wp) function curve_deflection_at(c, f) result(d)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: f
+      real(wp) :: lo, hi, mid, b
+      integer :: k, n, it
+      d = 0.0_wp
+      if (.not. f > 0.0_wp) return
+      select case (c%form)
+      case (curve_polynomial)
+         ! F_e is continuous and not decreasing: bisection for its first crossing of f
+         hi = 1.0_wp
+         do it = 1, 2000
+            if (curve_elastic_force(c, hi) >= f .or. hi > x_far) exit
+            hi = 2.0_wp*hi
+         end do
+         lo = 0.0_wp
+         do it = 1, 2000
+            mid = 0.5_wp*(lo + hi)
+            if (.not. (mid > lo .and. mid < hi)) exit
+            if (curve_elastic_force(c, mid) >= f) then
+               hi = mid
+            else
+               lo = mid
+            end if
+         end do
+         d = hi
+      case (curve_table)
+         n = size(c%defl)
+         do k = 1, n - 1
+            if (c%force(k + 1) >= f) then
+               ! first interval that reaches f; its slope is > 0 since force(k) < f
+               d = c%defl(k) + (f - c%force(k))*(c%defl(k + 1) - c%defl(k))/(c%force(k + 1) - c%force(k))
+               return
+            end if
+         end do
+         b = slope(c, n - 1)
+         d = c%defl(n)
+         if (b > 0.0_wp) d = c%defl(n) + (f - c%force(n))/b
+      end select
+   end function curve_deflection_at
+
+   !> What is wrong with a curve, or '' (docs/loading.md 2). point: the
+   !! table point (or, for a polynomial, the coefficient) concerned, 0 when
+   !! the whole curve is.
+   pure subroutine curve_check(c, message, point)
+      type(loading_curve_t), intent(in) :: c
+      character(len=:), allocatable, intent(out) :: message
+      integer, intent(out) :: point
+      real(wp) :: dq(0:max_order - 1), q_min, at
+      integer :: k, n
+      message = ''
+      point = 0
+      if (any(c%sigma_rate < 0.0_wp)) then
+         point = minloc(c%sigma_rate, 1)
+         message = 'a rate coefficient is negative: the rate term would feed energy into the motion'
+         return
+      end if
+      select case (c%form)
+      case (curve_polynomial)
+         if (c%order < 1 .or. c%order > max_order) then
+            message = 'the order N must be from 1 to '//itoa(max_order)
+            return
+         end if
+         if (any(abs(c%sigma(c%order + 1:)) > 0.0_wp)) then
+            point = c%order + findloc(abs(c%sigma(c%order + 1:)) > 0.0_wp, .true., 1)
+            message = 'coefficient '//itoa(point)//' lies beyond the order N = '//itoa(c%order)
+            return
+         end if
+         if (.not. any(abs(c%sigma) > 0.0_wp)) then
+            message = 'every coefficient is zero: the curve gives no force'
+            return
+         end if
+         ! F_e' = sum n sigma_n d**(n-1) >= 0 on d >= 0: F_e never decreases, and never pulls
+         dq = 0.0_wp
+         do k = 1, c%order
+            dq(k - 1) = real(k, wp)*c%sigma(k)
+         end do
+         call polynomial_minimum(dq(0:c%order - 1), q_min, at)
+         if (at >= huge(1.0_wp)) then
+            message = 'the force decreases, and finally pulls, as the deformation grows ' &
+                      //'(the highest coefficient is negative)'
+         else if (q_min < -1.0e-12_wp*maxval(abs(dq))*max(1.0_wp, at)**(c%order - 1)) then
+            ! (the tolerance: rounding in F_e' at d = at)
+            message = 'the force decreases with the deformation near d = '//num(at) &
+                      //' in (slope '//num(q_min)//' lb/in); a loading curve must not decrease, ' &
+                      //'so that it never pulls'
+         end if
+      case (curve_table)
+         if (.not. (allocated(c%defl) .and. allocated(c%force))) then
+            message = 'the table has no points'
+            return
+         end if
+         n = size(c%defl)
+         if (n < 2 .or. size(c%force) /= n) then
+            point = n
+            message = 'a table needs at least two points'
+            return
+         end if
+         if (abs(c%defl(1)) > 0.0_wp .or. abs(c%force(1)) > 0.0_wp) then
+            point = 1
+            message = 'the first point must be (0, 0)'
+            return
+         end if
+         do k = 2, n
+            point = k
+            if (.not. c%defl(k) > c%defl(k - 1)) then
+               message = 'the deformations must increase from point to point'
+               return
+            end if
+            if (c%force(k) < c%force(k - 1)) then
+               message = 'the force must not decrease from point to point (a loading curve never pulls)'
+               return
+            end if
+         end do
+         point = 0
+         if (.not. c%force(n) > 0.0_wp) message = 'every force is zero: the curve gives no force'
+      case default
+         message = 'the curve is not defined'
+      end select
+   end subroutine curve_check
+
+   !> The minimum of q(x) = sum c(j) x**j over 0 <= x <= x_far, and where it
+   !! is (at = huge when q falls without bound). Exact up to rounding: q's
+   !! minimum lies at 0 or at a real root of q' (found by isolating the
+   !! roots of each derivative between those of the next), all of which lie
+   !! within the Cauchy bound of q' (beyond x_far = 1e50 only when the
+   !! highest coefficient is some 1e50 times smaller than the others: a
+   !! deformation far beyond any meaning).
+   pure subroutine polynomial_minimum(c, q_min, at)
+      real(wp), intent(in) :: c(0:)
+      real(wp), intent(out) :: q_min, at
+      real(wp) :: dc(0:max(size(c) - 2, 0)), roots(max(size(c), 1)), bound, q
+      integer :: n, j, nr
+      n = degree(c)
+      q_min = c(0)
+      at = 0.0_wp
+      if (n <= 0) return
+      if (c(n) < 0.0_wp) then
+         q_min = -huge(1.0_wp)
+         at = huge(1.0_wp)
+         return
+      end if
+      if (n == 1) return   ! rising line: its minimum is at 0
+      do j = 1, n
+         dc(j - 1) = real(j, wp)*c(j)
+      end do
+      ! every critical point lies within the Cauchy bound of q' (searched up
+      ! to x_far at most, so that q never overflows there)
+      bound = x_far
+      if (maxval(abs(dc(0:n - 2))) < x_far*abs(dc(n - 1))) &
+         bound = 1.0_wp + maxval(abs(dc(0:n - 2)))/abs(dc(n - 1))
+      call real_roots(dc(0:n - 1), 0.0_wp, bound, roots, nr)
+      do j = 1, nr
+         q = horner(c(0:n), roots(j))
+         if (q < q_min) then
+            q_min = q
+            at = roots(j)
+         end if
+      end do
+   end subroutine polynomial_minimum
+
+   ! --- helpers ------------------------------------------------------------
+
+   !> The real roots of sum c(j) x**j in the open interval (a, b), increasing.
+   !! Between consecutive roots of the derivative (and a, b) the polynomial
+   !! is monotone: each sign change there holds one root, found by bisection.
+   pure recursive subroutine real_roots(c, a, b, roots, nr)
+      real(wp), intent(in) :: c(0:), a, b
+      real(wp), intent(inout) :: roots(:)
+      integer, intent(out) :: nr
+      real(wp) :: dc(0:max(size(c) - 2, 0)), knots(size(c) + 1), lo, hi, mid, flo, fmid
+      integer :: n, j, nk, it
+      nr = 0
+      n = degree(c)
+      if (n <= 0) return
+      if (n == 1) then
+         if (abs(c(0)) < max(abs(a), abs(b))*abs(c(1))) then   ! the root is finite
+            mid = -c(0)/c(1)
+            if (mid > a .and. mid < b) then
+               nr = 1
+               roots(1) = mid
+            end if
+         end if
+         return
+      end if
+      do j = 1, n
+         dc(j - 1) = real(j, wp)*c(j)
+      end do
+      call real_roots(dc(0:n - 1), a, b, knots(2:), nk)
+      knots(1) = a
+      knots(nk + 2) = b
+      do j = 1, nk + 1
+         lo = knots(j)
+         hi = knots(j + 1)
+         flo = horner(c(0:n), lo)
+         if (j > 1 .and. .not. abs(flo) > 0.0_wp) then
+            nr = nr + 1
+            roots(nr) = lo
+            cycle
+         end if
+         if (flo*horner(c(0:n), hi) >= 0.0_wp) cycle
+         do it = 1, 200
+            mid = 0.5_wp*(lo + hi)
+            if (.not. (mid > lo .and. mid < hi)) exit
+            fmid = horner(c(0:n), mid)
+            if (.not. abs(fmid) > 0.0_wp) exit
+            if (fmid*flo < 0.0_wp) then
+               hi = mid
+            else
+               lo = mid
+               flo = fmid
+            end if
+         end do
+         nr = nr + 1
+         roots(nr) = mid
+      end do
+   end subroutine real_roots
+
+   pure integer function degree(c) result(n)
+      real(wp), intent(in) :: c(0:)
+      do n = ubound(c, 1), 0, -1
+         if (abs(c(n)) > 0.0_wp) return
+      end do
+      n = -1
+   end function degree
+
+   pure real(wp) function horner(c, x) result(q)
+      real(wp), intent(in) :: c(0:), x
+      integer :: j
+      q = 0.0_wp
+      do j = ubound(c, 1), 0, -1
+         q = q*x + c(j)
+      end do
+   end function horner
+
+   !> The table interval k (1 <= k < n) that holds d > 0; the last one beyond
+   !! the table (extrapolation along it).
+   pure integer function table_interval(defl, d) result(k)
+      real(wp), intent(in) :: defl(:), d
+      integer :: lo, hi, mid
+      lo = 1
+      hi = size(defl)
+      if (d >= defl(hi)) then
+         k = hi - 1
+         return
+      end if
+      do while (hi - lo > 1)
+         mid = (lo + hi)/2
+         if (defl(mid) <= d) then
+            lo = mid
+         else
+            hi = mid
+         end if
+      end do
+      k = lo
+   end function table_interval
+
+   pure real(wp) function slope(c, k)
+      type(loading_curve_t), intent(in) :: c
+      integer, intent(in) :: k
+      slope = (c%force(k + 1) - c%force(k))/(c%defl(k + 1) - c%defl(k))
+   end function slope
+
+   !> s**p for 0 <= s, p > 0 (0 at s = 0 without a logarithm of zero).
+   pure real(wp) function pw(s, p)
+      real(wp), intent(in) :: s, p
+      pw = 0.0_wp
+      if (s > 0.0_wp) pw = s**p
+   end function pw
+end module loading_curves

@@ -1,0 +1,340 @@
+!> Recurrent loading with residual (permanent) deformation: report C.4.e,
+!! figure 18 (lost in the OCR; reconstructed in docs/loading.md 3), for the
+!! belts and the contact surfaces and body regions of C.4.f, and the energy
+!! split of C.6 as corrected by erratum E6-2 (docs/loading.md 4).
+!!
+!! A law is a loading curve F_e (loading_curves) with G, the ratio of
+!! residual to maximum deformation, and R, the ratio of the energy conserved
+!! to that absorbed (Tables 2 and 4). Cycle n has a residual deformation
+!! eps_n (eps_1 = 0) and, with d = delta - eps_n:
+!! - loading:   F_b = F_e(d);
+!! - unloading, after the turning point (delta_max, F_max), d_max = delta_max
+!!   - eps_n: F_b = F_e(xi d_max) xi**p, xi = (delta - delta_0)/(delta_max
+!!   - delta_0), zero below delta_0 = eps_n + G d_max. It passes through
+!!   (delta_max, F_max) and (delta_0, 0), never lies above the loading curve,
+!!   and p >= 0 makes the energy it returns R times the loading work:
+!!   (1 - G) M(d_max, p) = R E(d_max). That needs R <= 1 - G (recurrent_check);
+!!   R = 1 - G gives p = 0 (the loading curve compressed into [delta_0,
+!!   delta_max]); R = 1, G = 0 the loading curve itself (elastic); R = 0 a
+!!   drop to zero force (plastic);
+!! - a new cycle begins at the point x where d-dot goes from negative to
+!!   positive (C.4.e). Case 1, the load was completely removed (delta_x <=
+!!   delta_0): eps_{n+1} = delta_0. Case 2, it was not: eps_{n+1} = delta_x -
+!!   F_e^-1(F_x), the loading curve shifted to pass through x. Either way the
+!!   force is continuous at x.
+!! The rate terms of the curve act while the branch carries load (F_b > 0);
+!! the total max(0, F_b + F_v) never pulls.
+!!
+!! The memory (loading_memory_t) is read-only in recurrent_eval and
+!! recurrent_rates, which the right-hand side calls at trial points; only
+!! recurrent_accept changes it, from an accepted state, and it says when
+!! the law changed so that the stepper restarts (docs/architecture.md,
+!! rule 1).
+!!
+!! Energies (erratum E6-2, extended to the rate terms): an effect integrates
+!! three auxiliary quantities per element, whose rates recurrent_rates gives:
+!! W, the net work done on the element (integral of F d-dot); E_abs, the work
+!! of F_b over loading phases (d-dot > 0 on a loading branch); D_v, the work of
+!! the rate part F - F_b (>= 0). Then DE = (1 - R) E_abs + D_v and CE = W - DE
+!! (recurrent_energies): W = CE + DE always, and CE returns to 0 once an
+!! element has unloaded completely.
+module recurrent_loading
+   use kinds, only: wp
+   use strings, only: num
+   use loading_curves, only: loading_curve_t, curve_elastic_force, curve_rate_force, curve_energy, &
+      curve_moment, curve_deflection_at
+   use model, only: materials_section_t, loading_section_t
+   implicit none
+   private
+
+   public :: recurrent_law_t, loading_memory_t, loading_point_t
+   public :: recurrent_law, recurrent_check, recurrent_is_elastic
+   public :: recurrent_eval, recurrent_force, recurrent_rates, recurrent_accept, recurrent_energies
+   public :: unloading_exponent, material_law, belt_law
+   public :: n_loading_aux, aux_work, aux_absorbed, aux_rate_work
+   public :: cycle_first, cycle_case_1, cycle_case_2
+
+   !> The auxiliary quantities an effect integrates per element (E6-2).
+   integer, parameter :: aux_work = 1       !< W: integral of F d-dot dt, the net work on the element
+   integer, parameter :: aux_absorbed = 2   !< E_abs: the same for F_b over loading phases only
+   integer, parameter :: aux_rate_work = 3  !< D_v: the work of the rate terms (dissipated)
+   integer, parameter :: n_loading_aux = 3
+
+   !> How the present cycle began (figure 18).
+   integer, parameter :: cycle_first = 0, cycle_case_1 = 1, cycle_case_2 = 2
+
+   !> G and R that differ from the consistent R = 1 - G by less than this are
+   !! taken as consistent (decks give decimals: 1 - 0.3 is not 0.7 in binary).
+   real(wp), parameter :: ratio_slack = 1.0e-12_wp
+
+   !> A recurrent-loading law: a curve, G and R (Tables 2, 4).
+   type :: recurrent_law_t
+      type(loading_curve_t) :: curve
+      real(wp) :: g = 0.0_wp          !< residual / maximum deformation of a cycle
+      real(wp) :: r = 1.0_wp          !< energy returned / energy absorbed
+      logical :: elastic = .true.     !< R = 1 (and so G = 0): unloading retraces loading, no memory
+      logical :: plastic = .false.    !< R = 0: unloading drops to zero force
+   end type recurrent_law_t
+
+   !> The memory of one element (figure 18), changed only by recurrent_accept.
+   type :: loading_memory_t
+      integer :: cycle = 1                 !< n, the loading cycle
+      integer :: began = cycle_first       !< how cycle n began: cycle_first, cycle_case_1 or _2
+      logical :: unloading = .false.       !< past the turning point of cycle n
+      real(wp) :: eps = 0.0_wp             !< eps_n, residual deformation: origin of the loading curve
+      real(wp) :: delta_max = 0.0_wp       !< the turning point (maximum deformation of the cycle)
+      real(wp) :: f_max = 0.0_wp           !< F_e(delta_max - eps_n), the force there
+      real(wp) :: delta_zero = 0.0_wp      !< eps_n + G (delta_max - eps_n): end of the unloading curve
+      real(wp) :: p = 0.0_wp               !< exponent of the unloading curve
+      real(wp) :: delta_x = 0.0_wp         !< where cycle n began (point x of figure 18)
+      real(wp) :: f_x = 0.0_wp             !< the force there
+   end type loading_memory_t
+
+   !> The force at one (delta, delta-dot).
+   type :: loading_point_t
+      real(wp) :: force = 0.0_wp      !< total force, >= 0
+      real(wp) :: branch = 0.0_wp     !< F_b, the rate-independent part (loading or unloading curve)
+      logical :: loading = .false.    !< on a loading branch (counts towards E_abs while d-dot > 0)
+   end type loading_point_t
+
+contains
+
+   !> The law of a curve with G and R that passed recurrent_check.
+   pure function recurrent_law(curve, g, r) result(law)
+      type(loading_curve_t), intent(in) :: curve
+      real(wp), intent(in) :: g, r
+      type(recurrent_law_t) :: law
+      law%curve = curve
+      law%g = g
+      law%r = r
+      law%elastic = r >= 1.0_wp - ratio_slack .and. g <= ratio_slack
+      law%plastic = r <= 0.0_wp
+   end function recurrent_law
+
+   !> What is wrong with G and R, or '' (docs/loading.md 3): 0 <= G <= 1,
+   !! 0 <= R <= 1 and R <= 1 - G. An unloading curve that ends at G d_max and
+   !! does not rise above the loading curve returns at most (1 - G) times the
+   !! loading work along the curves of docs/loading.md; more would need an
+   !! unloading path above the loading path, which would create energy on the
+   !! next reloading.
+   pure function recurrent_check(g, r) result(message)
+      real(wp), intent(in) :: g, r
+      character(len=:), allocatable :: message
+      message = ''
+      if (g < 0.0_wp .or. g > 1.0_wp) then
+         message = 'G = '//num(g)//' must lie from 0 to 1'
+      else if (r < 0.0_wp .or. r > 1.0_wp) then
+         message = 'R = '//num(r)//' must lie from 0 to 1'
+      else if (r > 1.0_wp - g + ratio_slack) then
+         message = 'R = '//num(r)//' exceeds 1 - G = '//num(1.0_wp - g)//': an element that keeps G of ' &
+                   //'its maximum deformation cannot return more than 1 - G of the energy it absorbed ' &
+                   //'(docs/loading.md 3)'
+      end if
+   end function recurrent_check
+
+   !> True when the law needs no memory (R = 1, G = 0).
+   pure logical function recurrent_is_elastic(law)
+      type(recurrent_law_t), intent(in) :: law
+      recurrent_is_elastic = law%elastic
+   end function recurrent_is_elastic
+
+   !> The force at a trial state (delta, delta_dot) with the memory as it
+   !! stands (docs/loading.md 3). Pure; the memory is not changed.
+   pure function recurrent_eval(law, mem, delta, delta_dot) result(pt)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: delta, delta_dot
+      type(loading_point_t) :: pt
+      real(wp) :: xi
+      if (law%elastic .or. .not. mem%unloading .or. delta >= mem%delta_max) then
+         ! the loading curve of cycle n (also beyond the turning point: continuous there)
+         pt%loading = .true.
+         pt%branch = curve_elastic_force(law%curve, delta - mem%eps)
+      else if (law%plastic .or. .not. delta > mem%delta_zero) then
+         pt%branch = 0.0_wp
+      else
+         ! the unloading curve through (delta_zero, 0) and (delta_max, f_max)
+         xi = (delta - mem%delta_zero)/(mem%delta_max - mem%delta_zero)
+         pt%branch = curve_elastic_force(law%curve, xi*(mem%delta_max - mem%eps))
+         if (mem%p > 0.0_wp) pt%branch = pt%branch*xi**mem%p
+      end if
+      ! the rate terms while the branch carries load; the sum never pulls
+      pt%force = 0.0_wp
+      if (pt%branch > 0.0_wp) pt%force = max(0.0_wp, pt%branch + curve_rate_force(law%curve, delta_dot))
+   end function recurrent_eval
+
+   !> The total force at a trial state (recurrent_eval's force).
+   pure real(wp) function recurrent_force(law, mem, delta, delta_dot) result(f)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: delta, delta_dot
+      type(loading_point_t) :: pt
+      pt = recurrent_eval(law, mem, delta, delta_dot)
+      f = pt%force
+   end function recurrent_force
+
+   !> The force and the rates of the auxiliary quantities (aux_work,
+   !! aux_absorbed, aux_rate_work) at a trial state (E6-2; loading.md 4).
+   pure subroutine recurrent_rates(law, mem, delta, delta_dot, force, rates)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: delta, delta_dot
+      real(wp), intent(out) :: force
+      real(wp), intent(out) :: rates(n_loading_aux)
+      type(loading_point_t) :: pt
+      pt = recurrent_eval(law, mem, delta, delta_dot)
+      force = pt%force
+      rates(aux_work) = pt%force*delta_dot
+      rates(aux_absorbed) = 0.0_wp
+      if (pt%loading .and. delta_dot > 0.0_wp) rates(aux_absorbed) = pt%branch*delta_dot
+      rates(aux_rate_work) = (pt%force - pt%branch)*delta_dot
+   end subroutine recurrent_rates
+
+   !> Conserved and dissipated energy of an element from its auxiliary
+   !! quantities (C.6 with erratum E6-2): DE = (1 - R) E_abs + D_v, CE = W - DE.
+   pure subroutine recurrent_energies(law, aux, conserved, dissipated)
+      type(recurrent_law_t), intent(in) :: law
+      real(wp), intent(in) :: aux(n_loading_aux)
+      real(wp), intent(out) :: conserved, dissipated
+      dissipated = (1.0_wp - law%r)*aux(aux_absorbed) + aux(aux_rate_work)
+      conserved = aux(aux_work) - dissipated
+   end subroutine recurrent_energies
+
+   !> After an ACCEPTED step: update the memory from the accepted state
+   !! (figure 18; docs/loading.md 3). changed: the law is a different
+   !! function from here on (a turning point, a new cycle), so the stepper
+   !! must restart. The force is continuous at every change except the
+   !! turning point of a plastic law (R = 0), where it drops to zero.
+   pure subroutine recurrent_accept(law, mem, delta, delta_dot, changed)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(inout) :: mem
+      real(wp), intent(in) :: delta, delta_dot
+      logical, intent(out) :: changed
+      real(wp) :: fx
+      changed = .false.
+      if (law%elastic) return
+      if (.not. mem%unloading) then
+         ! loading: the turning point, where d-dot becomes negative under load
+         if (delta_dot < 0.0_wp) call turn(law, mem, delta, changed)
+      else if (delta >= mem%delta_max) then
+         ! back beyond the turning point within one step: on the loading curve again
+         if (delta_dot < 0.0_wp) then
+            call turn(law, mem, delta, changed)
+         else if (delta_dot > 0.0_wp) then
+            mem%unloading = .false.
+            changed = .true.
+         end if
+      else if (delta_dot > 0.0_wp) then
+         ! point x: d-dot from negative to positive, a new cycle (C.4.e)
+         if (delta <= mem%delta_zero) then
+            ! case 1: the load was completely removed; the new cycle starts at
+            ! the end of the unloading curve
+            mem%began = cycle_case_1
+            mem%f_x = 0.0_wp
+            mem%eps = mem%delta_zero
+         else
+            ! case 2: under load; the loading curve shifted to pass through x
+            fx = unloading_force(law, mem, delta)
+            mem%began = cycle_case_2
+            mem%f_x = fx
+            mem%eps = delta - curve_deflection_at(law%curve, fx)
+         end if
+         mem%cycle = mem%cycle + 1
+         mem%unloading = .false.
+         mem%delta_x = delta
+         changed = .true.
+      end if
+   end subroutine recurrent_accept
+
+   !> The turning point of the cycle at delta, if the element is loaded there.
+   pure subroutine turn(law, mem, delta, changed)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(inout) :: mem
+      real(wp), intent(in) :: delta
+      logical, intent(inout) :: changed
+      real(wp) :: d, fm
+      d = delta - mem%eps
+      fm = curve_elastic_force(law%curve, d)
+      if (.not. fm > 0.0_wp) return
+      mem%unloading = .true.
+      mem%delta_max = delta
+      mem%f_max = fm
+      mem%delta_zero = mem%eps + law%g*d
+      mem%p = unloading_exponent(law, d)
+      changed = .true.
+   end subroutine turn
+
+   !> The exponent p >= 0 of the unloading curve from a maximum deformation
+   !! d of the cycle: (1 - G) M(d, p) = R E(d) (docs/loading.md 3). M falls
+   !! from E(d) at p = 0 towards 0; bisection to rounding. huge for R = 0.
+   pure real(wp) function unloading_exponent(law, d) result(p)
+      type(recurrent_law_t), intent(in) :: law
+      real(wp), intent(in) :: d
+      real(wp) :: target, lo, hi, mid
+      integer :: it
+      p = 0.0_wp
+      if (law%plastic) then
+         p = huge(1.0_wp)
+         return
+      end if
+      if (law%elastic .or. law%r >= (1.0_wp - law%g)) return
+      target = law%r/(1.0_wp - law%g)*curve_energy(law%curve, d)
+      if (.not. target > 0.0_wp) return
+      lo = 0.0_wp
+      hi = 1.0_wp
+      do it = 1, 2000
+         if (curve_moment(law%curve, d, hi) <= target .or. hi > huge(1.0_wp)/4.0_wp) exit
+         lo = hi
+         hi = 2.0_wp*hi
+      end do
+      do it = 1, 2000
+         mid = 0.5_wp*(lo + hi)
+         if (.not. (mid > lo .and. mid < hi)) exit
+         if (curve_moment(law%curve, d, mid) > target) then
+            lo = mid
+         else
+            hi = mid
+         end if
+      end do
+      p = 0.5_wp*(lo + hi)
+   end function unloading_exponent
+
+   !> The elastic force on the unloading curve at delta (delta_zero < delta < delta_max).
+   pure real(wp) function unloading_force(law, mem, delta) result(f)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: delta
+      type(loading_point_t) :: pt
+      pt = recurrent_eval(law, mem, delta, 0.0_wp)
+      f = pt%branch
+   end function unloading_force
+
+   !> The law of material l (Table 4): its curve (*MATERIALS CURVE), G and R.
+   !! A material without a curve gives a law whose curve is not defined
+   !! (loading_curves' curve_is_defined is false): it carries no force.
+   pure function material_law(materials, loading, l) result(law)
+      type(materials_section_t), intent(in) :: materials
+      type(loading_section_t), intent(in) :: loading
+      integer, intent(in) :: l
+      type(recurrent_law_t) :: law
+      type(loading_curve_t) :: none
+      if (loading%material_curve(l) > 0) then
+         law = recurrent_law(loading%curve(loading%material_curve(l)), materials%g(l), materials%r(l))
+      else
+         law = recurrent_law(none, materials%g(l), materials%r(l))
+      end if
+   end function material_law
+
+   !> The law of belt section j (Table 2; *BELTLOADING): its curve, G and R.
+   pure function belt_law(loading, j) result(law)
+      type(loading_section_t), intent(in) :: loading
+      integer, intent(in) :: j
+      type(recurrent_law_t) :: law
+      type(loading_curve_t) :: none
+      if (loading%belt_curve(j) > 0) then
+         law = recurrent_law(loading%curve(loading%belt_curve(j)), loading%belt_g(j), loading%belt_r(j))
+      else
+         law = recurrent_law(none, loading%belt_g(j), loading%belt_r(j))
+      end if
+   end function belt_law
+end module recurrent_loading
