@@ -15,6 +15,7 @@ module run_report
    use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text
    use error_handling, only: error_t, error_set, exit_io
    use listing, only: listing_t
+   use loading_curves, only: curve_is_defined, curve_polynomial, curve_table
    use number_format, only: fixed
    use output_series, only: output_series_t, max_listing_columns
    use output_registry, only: output_registry_t, output_frame_t
@@ -344,6 +345,8 @@ contains
          end do
       end if
 
+      call write_loading_curves(lst, m)
+
       associate (b => m%body)
          call lst%heading('TABLE 1 - CONTACT ARCS', 13)
          call lst%put('   I  ARC           RADIUS R    RHO''        GAMMA (deg)')
@@ -385,6 +388,47 @@ contains
          end do
       end subroutine put_curve
    end subroutine write_parameters
+
+   !> The loading curves the deck gives (C.4.e, Tables 2 and 4;
+   !! docs/loading.md) and who uses them.
+   subroutine write_loading_curves(lst, m)
+      type(listing_t), intent(inout) :: lst
+      type(model_t), intent(in) :: m
+      character(len=132) :: line
+      integer :: k, j, n
+      n = count([(curve_is_defined(m%loading%curve(k)), k=1, size(m%loading%curve))])
+      if (n == 0) return
+      call lst%heading('LOADING CURVES (C.4.e, TABLES 2 AND 4; NLOAD = '//itoa(m%options%nload)//')', n + 2)
+      do k = 1, size(m%loading%curve)
+         associate (c => m%loading%curve(k))
+            select case (c%form)
+            case (curve_polynomial)
+               write (line, '(a,i3,a,i2,a,5es11.3)') '  curve', k, ': polynomial, N =', c%order, ', sigma', &
+                  c%sigma(1:c%order)
+               call lst%put(line)
+               if (any(c%sigma_rate > 0.0_wp)) then
+                  write (line, '(a,5es11.3)') '             rate terms', c%sigma_rate(1:c%order)
+                  call lst%put(line)
+               end if
+            case (curve_table)
+               call lst%put('  curve'//fixed(real(k, wp), 4, 0)//': table of '//itoa(size(c%defl)) &
+                            //' points, deflection (in) : force (lb)')
+               do j = 1, size(c%defl), 5
+                  write (line, '(9x,5(es10.3,a,es10.3,2x))') (c%defl(n), ':', c%force(n), n=j, min(j + 4, size(c%defl)))
+                  call lst%put(line)
+               end do
+            end select
+         end associate
+      end do
+      do k = 1, size(m%loading%material_curve)
+         if (m%loading%material_curve(k) > 0) call lst%put('  material '//itoa(k)//' ('//trim(material_name(k)) &
+            //') uses curve '//itoa(m%loading%material_curve(k)))
+      end do
+      do k = 1, size(m%loading%belt_curve)
+         if (m%loading%belt_curve(k) > 0) call lst%put('  belt section '//itoa(k)//' uses curve ' &
+            //itoa(m%loading%belt_curve(k)))
+      end do
+   end subroutine write_loading_curves
 
    subroutine write_pulse(lst, m)
       type(listing_t), intent(inout) :: lst
