@@ -6,8 +6,10 @@
 !!   +lst   - the simulation writing its listing (to /dev/null);
 !!   +h5    - the simulation writing its listing and its HDF5 file;
 !! and prints them with the cost per simulated second and per right-hand-side
-!! evaluation. tools/bench builds it in Release and runs it on the shipped
-!! decks; docs/performance.md keeps the figures.
+!! evaluation; then the cost of each effect's add_forces per evaluation, at
+!! the deck's initial state (median of repeated blocks of calls), and of the
+!! solve of A z'' = b. tools/bench builds it in Release and runs it on the
+!! shipped decks; docs/performance.md keeps the figures.
 !!
 !!   hsri2d_bench [--repeat N] DECK [DECK ...]
 program hsri2d_bench
@@ -20,6 +22,10 @@ program hsri2d_bench
    use simulation, only: run_simulation
    use run_summary, only: run_summary_t
    use run_case_mod, only: run_request_t, run_case, read_case_deck
+   use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state
+   use effect_base, only: body_state_t
+   use body_matrix, only: body_accelerations
+   use model, only: n_dof
    implicit none
 
    integer, parameter :: n_parts = 4, p_read = 1, p_run = 2, p_lst = 3, p_h5 = 4
@@ -88,6 +94,12 @@ program hsri2d_bench
             r%evaluations, r%stats%steps
       end associate
    end do
+   write (output_unit, '(a)') ''
+   write (output_unit, '(a)') '  CPU time of each effect''s add_forces and of the solve, per evaluation, at the initial ' &
+      //'state (median of 21 blocks of 20000 calls)'
+   do d = 1, n_decks
+      if (usable(d)) call effect_costs(d)
+   end do
    open (newunit=k, file=h5_scratch, status='old', iostat=ios)
    if (ios == 0) close (k, status='delete')
 
@@ -140,6 +152,67 @@ contains
       dt = t1 - t0
       if (err%failed()) write (error_unit, '(a)') decks(d)%s//': '//err%message
    end function cpu_of_case
+
+   !> The cost of each effect of deck d's occupant, and of the solve.
+   subroutine effect_costs(d)
+      integer, intent(in) :: d
+      integer, parameter :: calls = 20000, blocks = 21
+      type(crash_system_t) :: sys
+      type(body_state_t) :: st
+      real(wp), allocatable :: y(:), rate(:), rate2(:)
+      real(wp) :: b(n_dof), zdd(n_dof), t0, t1, cost(blocks), sink
+      integer :: k, blk, i, info, xo, ao
+      character(len=:), allocatable :: line
+      call system_build(models(d), sys)
+      call system_initial_y(sys, y)
+      allocate (rate(size(y)), rate2(size(y)))
+      st = system_body_state(sys, 1, 0.0_wp, y)
+      sink = 0.0_wp
+      line = '  '//basename(decks(d)%s)//':'
+      associate (occ => sys%occupants(1))
+         do k = 1, size(occ%effects)
+            xo = occ%extra_offset(k)
+            ao = occ%aux_offset(k)
+            associate (e => occ%effects(k)%e)
+               if (.not. e%acts) cycle
+               do blk = 1, blocks
+                  call cpu_time(t0)
+                  do i = 1, calls
+                     b = 0.0_wp
+                     call e%add_forces(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), b, &
+                                       rate(xo + 1:xo + 2*e%n_extra), rate2(ao + 1:ao + e%n_aux))
+                     sink = sink + b(1)
+                  end do
+                  call cpu_time(t1)
+                  cost(blk) = (t1 - t0)/real(calls, wp)
+               end do
+               line = line//' '//trim(e%name)//' '//number(1.0e6_wp*median_of(cost))
+            end associate
+         end do
+         do blk = 1, blocks
+            call cpu_time(t0)
+            do i = 1, calls
+               b = real(i, wp)
+               call body_accelerations(occ%bc, st%c, st%s, b, zdd, info, occ%solver)
+               sink = sink + zdd(1)
+            end do
+            call cpu_time(t1)
+            cost(blk) = (t1 - t0)/real(calls, wp)
+         end do
+         line = line//' | solve '//number(1.0e6_wp*median_of(cost))//' (us)'
+      end associate
+      ! the sum keeps the calls from being optimised away
+      if (.not. sink < huge(1.0_wp)) line = line//' (!)'
+      write (output_unit, '(a)') line
+   end subroutine effect_costs
+
+   function number(x) result(s)
+      real(wp), intent(in) :: x
+      character(len=:), allocatable :: s
+      character(len=16) :: buf
+      write (buf, '(f8.4)') x
+      s = trim(adjustl(buf))
+   end function number
 
    real(wp) function median_of(x)
       real(wp), intent(in) :: x(:)
