@@ -29,10 +29,11 @@ module seat_beams
    use kinds, only: wp, deg
    use strings, only: num
    use model, only: n_dof, seat_section_t, body_section_t
-   use effect_base, only: effect_t, body_state_t, energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
+   use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
+      energy_supplied, n_energy_kinds
    use output_series, only: output_series_t, series_new, column
    use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, hip_friction, &
-      vehicle_power, add_hip_force, seg_thigh
+      slip_of, vehicle_power, add_hip_force, seg_thigh
    implicit none
    private
 
@@ -48,8 +49,10 @@ module seat_beams
       real(wp) :: l7 = 0.0_wp, l8 = 0.0_wp
       real(wp) :: r1 = 0.0_wp, r7 = 0.0_wp
       real(wp) :: alpha_l7 = 0.0_wp, alpha_l8 = 0.0_wp   !< alpha_L, alpha_l (C.4.d)
+      integer :: slip = 0        !< the hip slides (+1, -1) or not (0): decided on accepted steps
    contains
       procedure :: add_forces => beams_add_forces
+      procedure :: accept => beams_accept
       procedure :: energy => beams_energy
       procedure :: outputs => beams_outputs
       procedure :: output_values => beams_output_values
@@ -73,7 +76,7 @@ contains
       type(body_section_t), intent(in) :: body
       type(seat_beams_t) :: e
       e%name = 'seat'
-      e%title = 'non-rigid beam seat (C.4.d, fig. 13)'
+      e%title = 'non-rigid beam seat (C.4.d)'
       e%p = p
       e%l7 = body%length(7)
       e%l8 = body%length(8)
@@ -84,6 +87,7 @@ contains
       e%alpha_l8 = asin((body%r_arc(7) - body%r_arc(11))/body%length(8))
       e%n_aux = 3
       e%needs_vehicle = .true.
+      e%has_memory = .true.
       e%has_energy = .true.
    end function seat_beams_effect
 
@@ -153,7 +157,7 @@ contains
       call beams_stiffness(this%p%ell, this%p%k_ratio, this%p%e1, this%p%e2, s%z, s%k1, s%rho, s%k2)
       call beams_forces(s%k1, s%rho, s%k2, s%delta_a, s%delta_z, s%f_s, s%fp_s, s%w)
       if (.not. s%leg) s%fp_s = 0.0_wp
-      s%f = hip_friction(this%p%mu, this%p%xi, s%f_s + s%fp_s, s%fr%x1dot)
+      s%f = hip_friction(this%p%mu, s%f_s + s%fp_s, this%slip)
       ! the work the body does on the beams: F_s delta_A' + F'_s delta_z'
       s%work_rate = s%f_s*(-s%fr%y1dot + s%fr%x1dot*tg0)
       if (s%leg) s%work_rate = s%work_rate - s%fp_s*s%ln%h_dot
@@ -181,6 +185,27 @@ contains
       b = b + s%fp_s*s%ln%dh
       aux_rate = [s%work_rate, s%dissipation, s%supply]
    end subroutine beams_add_forces
+
+   !> On accepted steps: whether the hip slides (the friction's dead band,
+   !! A-S4); a change restarts the stepper. The beams' own switches (the hip
+   !! past an end, the leg off the edge) need no memory: their energy is the
+   !! integrated work.
+   subroutine beams_accept(this, st, extra, aux, result)
+      class(seat_beams_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(accept_result_t), intent(inout) :: result
+      type(seat_frame_t) :: fr
+      integer :: slip
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      fr = seat_frame(st, this%l7)
+      slip = 0
+      if (this%p%z0 - fr%x1 >= 0.0_wp) slip = slip_of(this%p%xi, fr%x1dot)
+      if (slip == this%slip) return
+      this%slip = slip
+      result%restart = .true.
+   end subroutine beams_accept
 
    pure subroutine beams_energy(this, st, extra, aux, e)
       class(seat_beams_t), intent(in) :: this
@@ -235,5 +260,6 @@ contains
       text = trim(this%title)//': l '//num(this%p%ell)//' in, k '//num(this%p%k_ratio)//', e_1 '//num(this%p%e1) &
              //', e_2 '//num(this%p%e2)//' lb*in^2, z_o '//num(this%p%z0)//' in, gamma_o ' &
              //num(anint(10.0_wp*this%p%gamma0/deg)/10.0_wp)//' deg'
+      text = text(1:min(len(text), 128))
    end function beams_describe
 end module seat_beams

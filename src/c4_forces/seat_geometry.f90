@@ -20,7 +20,7 @@ module seat_geometry
    private
 
    public :: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests
-   public :: seat_memory_t, seat_case, hip_friction, vehicle_power, add_hip_force
+   public :: seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force
    public :: case_off, case_a, case_b, case_name, seg_thigh, seg_shank, max_leg_slope
 
    integer, parameter :: seg_thigh = 7, seg_shank = 8
@@ -59,11 +59,13 @@ module seat_geometry
 
    !> What the seat remembers between accepted steps (figure 12 as
    !! reconstructed in docs/seat.md): the case, whether the leg rests on the
-   !! front edge, the spring constant of case B (chosen at the switch, A-S4),
+   !! front edge, the direction the hip slides in (+1, -1; 0 within the dead
+   !! band xi), the spring constant of case B (chosen at the switch, A-S4),
    !! and the energy the switches moved out of the stored energy.
    type :: seat_memory_t
       integer :: case = case_a
       logical :: leg_on = .true.
+      integer :: slip = 0
       real(wp) :: k_hat = 0.0_wp
       real(wp) :: e_switch = 0.0_wp
    end type seat_memory_t
@@ -183,17 +185,22 @@ contains
       b(hip_y) = b(hip_y) - f(1)*fr%s_phi + f(2)*fr%c_phi
    end subroutine add_hip_force
 
-   !> C.4.d friction at the hip: f = mu N sgn x_1' once |x_1'| reaches xi,
-   !! zero below (A-S4); the force on the body is -f along the interior x
-   !! (A-f). Zero at x_1' = 0 whatever xi (as the joints, D-16).
-   pure real(wp) function hip_friction(mu, xi, n, x1dot) result(f)
-      real(wp), intent(in) :: mu, xi, n, x1dot
-      if (abs(x1dot) >= xi .and. abs(x1dot) > 0.0_wp) then
-         f = sign(mu*max(n, 0.0_wp), x1dot)
-      else
-         f = 0.0_wp
-      end if
+   !> C.4.d friction at the hip: f = mu (F_s + F'_s) sgn x_1' while the hip
+   !! slides (slip = sgn x_1', decided on accepted steps), zero within the
+   !! dead band (A-S4); the force on the body is -f along the interior x (A-f).
+   pure real(wp) function hip_friction(mu, n, slip) result(f)
+      real(wp), intent(in) :: mu, n
+      integer, intent(in) :: slip
+      f = mu*max(n, 0.0_wp)*real(slip, wp)
    end function hip_friction
+
+   !> The direction the hip slides in: sgn x_1' once |x_1'| reaches xi, 0
+   !! below it and at x_1' = 0 whatever xi (as the joints, D-16).
+   pure integer function slip_of(xi, x1dot)
+      real(wp), intent(in) :: xi, x1dot
+      slip_of = 0
+      if (abs(x1dot) >= xi .and. abs(x1dot) > 0.0_wp) slip_of = int(sign(1.0_wp, x1dot))
+   end function slip_of
 
    !> The power that the vehicle delivers through a seat force f (on the
    !! body, interior components) acting at the interior point p: f . R u,

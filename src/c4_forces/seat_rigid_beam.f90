@@ -24,7 +24,7 @@ module seat_rigid_beam
       energy_supplied, n_energy_kinds
    use output_series, only: output_series_t, series_new, column
    use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
-      hip_friction, vehicle_power, add_hip_force, case_off, case_a
+      hip_friction, slip_of, vehicle_power, add_hip_force, case_off, case_a
    implicit none
    private
 
@@ -74,7 +74,7 @@ contains
       type(seat_frame_t) :: fr
       type(leg_line_t) :: ln
       e%name = 'seat'
-      e%title = 'rigid-beam seat (C.4.d, fig. 15)'
+      e%title = 'rigid-beam seat (C.4.d)'
       e%p = p
       e%l7 = body%length(7)
       e%l8 = body%length(8)
@@ -157,7 +157,7 @@ contains
          s%e_contact = s%e_contact + 0.5_wp*this%p%k_edge*max(s%p_edge, 0.0_wp)**2
       end if
       ! C.4.d friction at the hip, on the beam's load (A-S4, A-f)
-      s%f = hip_friction(this%p%mu, this%p%xi, s%f_hip + s%f_edge, s%fr%x1dot)
+      s%f = hip_friction(this%p%mu, s%f_hip + s%f_edge, mem%slip)
       ! the frame's pseudo-forces on the beam (A-RB): translation, and the pitch
       ! acceleration and rate at the CG; the angle feels Phi'' (gamma is measured
       ! from the turning interior)
@@ -201,7 +201,8 @@ contains
    end subroutine beam_add_forces
 
    !> On accepted steps (figure 12's logic, as for the present seat): the hip
-   !! leaves the beam past its front edge (z < 0), the leg leaves the edge.
+   !! leaves the beam past its front edge (z < 0), the leg leaves the edge,
+   !! the hip slides or sticks.
    subroutine beam_accept(this, st, extra, aux, result)
       class(seat_rigid_beam_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
@@ -215,7 +216,9 @@ contains
       new = this%mem
       new%case = merge(case_off, case_a, before%z < 0.0_wp)
       new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l8)
-      if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on)) return
+      new%slip = 0
+      if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
+      if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip) return
       after = beam_state(this, st, extra, new)
       new%e_switch = this%mem%e_switch + before%e_contact - after%e_contact
       this%mem = new
@@ -283,9 +286,10 @@ contains
    function beam_describe(this) result(text)
       class(seat_rigid_beam_t), intent(in) :: this
       character(len=:), allocatable :: text
-      text = trim(this%title)//': a '//r2(this%p%a)//', a'' '//r2(this%p%a_prime)//' in; W_o '//r2(this%p%w0) &
-             //', F-hat''_so '//r2(this%p%fhps0)//', F_so '//r2(this%p%fs0)//', F''_so '//r2(this%p%fps0) &
-             //' lb; y_go '//r2(this%p%yg0)//' in, gamma_o '//r2(this%p%gamma0/deg)//' deg'
+      text = trim(this%title)//': a '//r2(this%p%a)//', a'' '//r2(this%p%a_prime)//', y_go '//r2(this%p%yg0) &
+             //' in, gamma_o '//r2(this%p%gamma0/deg)//' deg; W_o '//r2(this%p%w0)//', F^''_so '//r2(this%p%fhps0) &
+             //', F_so '//r2(this%p%fs0)//', F''_so '//r2(this%p%fps0)//' lb'
+      text = text(1:min(len(text), 128))
    contains
       function r2(x) result(t)
          real(wp), intent(in) :: x

@@ -26,7 +26,7 @@ module seat_springs
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_state_t, segment_cg_state
    use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
-      seat_case, hip_friction, vehicle_power, add_hip_force, case_off, case_a, case_b, seg_thigh
+      seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, case_off, case_a, case_b, seg_thigh
    implicit none
    private
 
@@ -71,7 +71,7 @@ contains
       type(body_state_t) :: st
       type(seat_frame_t) :: fr
       e%name = 'seat'
-      e%title = 'seat springs (C.4.d, fig. 11)'
+      e%title = 'seat springs (C.4.d)'
       e%p = p
       e%l7 = body%length(7)
       e%l8 = body%length(8)
@@ -85,6 +85,7 @@ contains
       e%mem%case = seat_case(p%z0, p%z_hat)
       e%mem%leg_on = e%mem%case /= case_off .and. leg_rests(fr, p%z0, e%l8)
       e%mem%k_hat = secant(p%beta, 0.0_wp)
+      e%mem%slip = 0
       call static_loads(body, g, z0, phi0, p%z0, e%w_pred, e%fps_pred)
    end function seat_springs_effect
 
@@ -186,7 +187,7 @@ contains
          s%e_edge = 0.5_wp*this%p%s*max(s%delta_e, 0.0_wp)**2
       end if
       ! C.4.d friction at the hip, A-S4, A-f
-      s%f = hip_friction(this%p%mu, this%p%xi, s%f_s + s%fp_s, s%fr%x1dot)
+      s%f = hip_friction(this%p%mu, s%f_s + s%fp_s, mem%slip)
       ! dissipated: damper and the clip of the hip force, (F_s - beta(d)) d' >= 0; friction f x_1' >= 0
       s%dissipation = (s%f_s - s%f_el)*s%d_dot + s%f*s%fr%x1dot
       ! supplied by the vehicle: the seat forces at the vehicle's material points
@@ -214,8 +215,10 @@ contains
    end subroutine springs_add_forces
 
    !> Figure 12's decisions on an accepted step: the case (off, A, B), the
-   !! leg on the front edge, case B's spring constant; the stored energy the
-   !! switch changes goes to the switching account, and the stepper restarts.
+   !! leg on the front edge, case B's spring constant, the hip sliding or
+   !! not; the stored energy a switch changes goes to the switching account,
+   !! and the stepper restarts (the right-hand side jumps only here, so no
+   !! step straddles a jump: docs/seat.md).
    subroutine springs_accept(this, st, extra, aux, result)
       class(seat_springs_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
@@ -230,7 +233,9 @@ contains
       new%case = seat_case(before%z, this%p%z_hat)
       new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l8)
       if (new%case == case_b .and. this%mem%case /= case_b) new%k_hat = secant(this%p%beta, before%d)
-      if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on)) return
+      new%slip = 0
+      if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
+      if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip) return
       after = springs_state(this, st, new)
       new%e_switch = this%mem%e_switch + (before%e_hip + before%e_edge) - (after%e_hip + after%e_edge)
       this%mem = new
@@ -300,10 +305,11 @@ contains
    function springs_describe(this) result(text)
       class(seat_springs_t), intent(in) :: this
       character(len=:), allocatable :: text
-      text = trim(this%title)//': z_o '//r1(this%p%z0)//' in, z-hat '//r1(this%p%z_hat)//' in, gamma_o ' &
-             //r1(this%p%gamma0/deg)//' deg, mu '//r1(this%p%mu)//'; static loads of the posture W_o ' &
-             //r1(this%w_pred)//' lb, F''_so '//r1(this%fps_pred)//' lb'
+      text = trim(this%title)//': z_o '//r1(this%p%z0)//', z-hat '//r1(this%p%z_hat)//' in, gamma_o ' &
+             //r1(this%p%gamma0/deg)//' deg, mu '//r1(this%p%mu)//'; static loads W_o ' &
+             //r1(this%w_pred)//', F''_so '//r1(this%fps_pred)//' lb'
       if (this%p%w0 > 0.0_wp .or. this%p%fps0 > 0.0_wp) text = text//' (deck '//r1(this%p%w0)//', '//r1(this%p%fps0)//')'
+      text = text(1:min(len(text), 128))
    contains
       function r1(x) result(t)
          real(wp), intent(in) :: x
