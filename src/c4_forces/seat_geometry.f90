@@ -21,14 +21,13 @@ module seat_geometry
 
    public :: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests
    public :: seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force
-   public :: case_off, case_a, case_b, case_name, seg_thigh, seg_shank, max_leg_slope
+   public :: case_off, case_a, case_b, seg_thigh, seg_shank, max_leg_slope
 
    integer, parameter :: seg_thigh = 7, seg_shank = 8
    !> Figure 11's cases: off the seat (z < 0), case A (z > z-hat: hip
    !! spring-damper and front-edge spring), case B (0 <= z <= z-hat: the
    !! hip spring linear).
    integer, parameter :: case_off = 0, case_a = 1, case_b = 2
-   character(len=3), parameter :: case_name(0:2) = [character(len=3) :: 'OFF', 'A', 'B']
    !> A leg segment steeper than this does not rest on the front edge: the
    !! front-edge force normal to it (erratum A-S1) would grow without bound
    !! (tan Theta_8 of the shank case; docs/seat.md).

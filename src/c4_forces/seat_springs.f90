@@ -26,7 +26,7 @@ module seat_springs
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_state_t, segment_cg_state
    use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
-      seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, case_off, case_a, case_b, seg_thigh
+      seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, case_off, case_a, case_b
    implicit none
    private
 
