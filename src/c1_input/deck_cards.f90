@@ -27,6 +27,7 @@ module deck_cards
    public :: g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates
    public :: g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials, n_groups
    public :: g_loadpoly, g_loadrate, g_loadtable, g_beltloading
+   public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -52,7 +53,9 @@ module deck_cards
       g_pulsepos = 15, g_pulsefile = 16, g_endtests = 17, g_numerics = 18, g_materials = 19
    !> Loading curves (C.4.e, C.4.f; docs/loading.md).
    integer, parameter :: g_loadpoly = 20, g_loadrate = 21, g_loadtable = 22, g_beltloading = 23
-   integer, parameter :: n_groups = 23
+   !> The seat, C.4.d (docs/seat.md).
+   integer, parameter :: g_seat = 24, g_seatsprings = 25, g_seatbeam = 26, g_seatbeaminit = 27, g_seatbeams = 28
+   integer, parameter :: n_groups = 28
 
    !> One field of a card.
    type :: field_spec_t
@@ -448,6 +451,8 @@ contains
 
       call loading_groups(t)
 
+      call seat_groups(t)
+
       block
          integer :: i
          do i = 1, n_groups
@@ -528,5 +533,85 @@ contains
          real_field('G', '-', one, blank_default, zero, zero, one, 'residual / maximum deformation G_j'), &
          real_field('R', '-', one, blank_default, one, zero, one, 'conserved / absorbed energy R_j')])
    end subroutine loading_groups
+   !> The seat card groups (C.1's seat parameters, C.4.d; docs/seat.md).
+   pure subroutine seat_groups(t)
+      type(group_spec_t), intent(inout) :: t(n_groups)
+      real(wp), parameter :: big = 1.0e12_wp, zero = 0.0_wp, one = 1.0_wp, small_mass = 1.0e-6_wp, stiff = 1.0e8_wp
+
+      t(g_seat)%name = 'SEAT'
+      t(g_seat)%title = 'Seat (C.1, C.4.d): representation and geometry'
+      t(g_seat)%note = 'FORM: NONE (no seat code runs), SPRINGS (the report''s present seat: hip spring-damper, ' &
+         //'front-edge spring, hip friction of material 1; figures 11-12), RIGID (the rigid-beam seat, ' &
+         //'figures 15-16) or BEAMS (the pair of non-rigid beams, figures 13-14); docs/seat.md. Z0: the ' &
+         //'horizontal distance from the initial hip to the front edge; ZHAT: the front region where the ' &
+         //'hip spring becomes linear (SPRINGS only, < Z0); GAMMA0: the undeflected cushion angle (RIGID: ' &
+         //'the initial beam angle). W0, FPS0: static loads at the hip and on the front edge; SPRINGS: ' &
+         //'checks, listed beside those the occupant''s statics predict; RIGID: two of the ten ' &
+         //'quantities of *SEATBEAMINIT.'
+      call set_fields(t(g_seat), [ &
+         word_field('FORM', 'NONE|SPRINGS|RIGID|BEAMS', blank_default, 'seat representation'), &
+         real_field('Z0', 'in', one, blank_default, 14.0_wp, zero, 100.0_wp, 'hip to front edge z_o', .true.), &
+         real_field('ZHAT', 'in', one, blank_default, zero, zero, 100.0_wp, 'front region z-hat'), &
+         real_field('GAMMA0', 'deg', deg, blank_default, zero, -45.0_wp, 45.0_wp, 'cushion angle gamma_o'), &
+         real_field('W0', 'lb', one, blank_absent, zero, zero, 1.0e5_wp, 'static load at the hip W_o'), &
+         real_field('FPS0', 'lb', one, blank_absent, zero, zero, 1.0e5_wp, 'static front-edge load F''_so')])
+      t(g_seat)%field(1)%default = real(1, wp)   ! word 1: NONE
+
+      t(g_seatsprings)%name = 'SEATSPRINGS'
+      t(g_seatsprings)%title = 'Seat cushion springs and damper (C.4.d)'
+      t(g_seatsprings)%note = 'The hip force is F_s = BETA1 d + BETA2 d**2 + BETA3 d**3 + CS d'' for a ' &
+         //'compression d > 0 (a compression polynomial, erratum A-S3), the front-edge force F''_s = S times ' &
+         //'the front compression; neither pulls. BETA2 may be negative down to -2 sqrt(BETA1 BETA3), so ' &
+         //'that the spring pushes at every compression. RIGID: the rear (BETA, CS) and front (S) supports.'
+      call set_fields(t(g_seatsprings), [ &
+         real_field('CS', 'lb*s/in', one, blank_default, 3.0_wp, zero, 1.0e6_wp, 'hip damper c_s'), &
+         real_field('S', 'lb/in', one, blank_default, 30.0_wp, zero, stiff, 'front-edge spring s'), &
+         real_field('BETA1', 'lb/in', one, blank_default, 50.0_wp, zero, stiff, 'hip spring beta_1'), &
+         real_field('BETA2', 'lb/in^2', one, blank_default, zero, -stiff, stiff, 'hip spring beta_2'), &
+         real_field('BETA3', 'lb/in^3', one, blank_default, 15.0_wp, zero, stiff, 'hip spring beta_3')])
+
+      t(g_seatbeam)%name = 'SEATBEAM'
+      t(g_seatbeam)%title = 'Rigid-beam seat (C.4.d, figure 15)'
+      t(g_seatbeam)%note = 'The beam''s mass and inertia, its unloaded CG height (from the initial hip) and ' &
+         //'angle, and the stiffnesses of the body''s contacts with it: the hip and the leg at the front ' &
+         //'edge press into the moving beam (erratum A-RB; docs/seat.md).'
+      call set_fields(t(g_seatbeam), [ &
+         real_field('MS', 'lb*s^2/in', one, blank_default, 0.05_wp, small_mass, big, 'beam mass m_s'), &
+         real_field('IS', 'lb*in*s^2', one, blank_default, one, small_mass, big, 'beam inertia I_s'), &
+         real_field('YGU', 'in', one, blank_default, zero, -100.0_wp, 100.0_wp, 'unloaded CG height y_gu'), &
+         real_field('GAMMAU', 'deg', deg, blank_default, zero, -45.0_wp, 45.0_wp, 'unloaded angle gamma_u'), &
+         real_field('KHIP', 'lb/in', one, blank_default, 2000.0_wp, zero, stiff, 'hip contact stiffness', .true.), &
+         real_field('KEDGE', 'lb/in', one, blank_default, 500.0_wp, zero, stiff, 'leg contact stiffness', .true.)])
+
+      t(g_seatbeaminit)%name = 'SEATBEAMINIT'
+      t(g_seatbeaminit)%title = 'Rigid-beam seat at t = 0 (C.4.d): four of the ten quantities'
+      t(g_seatbeaminit)%note = 'The ten quantities a, a'', W_o, F-hat''_so, F_so, F''_so, Delta_so, Delta_zo, ' &
+         //'y_go, gamma_o (A, AP, *SEAT W0, FHPS0, FS0, *SEAT FPS0, DS0, DZ0, YG0, *SEAT GAMMA0) obey six ' &
+         //'relations (equilibrium of forces and moments, the two support laws, the two deflections): give ' &
+         //'exactly four and the program solves for the other six. Four that leave the rest undetermined ' &
+         //'(FS0 with DS0, FPS0 with DZ0, ...) are refused (erratum A-RB).'
+      call set_fields(t(g_seatbeaminit), [ &
+         real_field('A', 'in', one, blank_absent, zero, zero, 100.0_wp, 'front edge to rear support a', .true.), &
+         real_field('AP', 'in', one, blank_absent, zero, zero, 100.0_wp, 'front edge to beam CG a''', .true.), &
+         real_field('FHPS0', 'lb', one, blank_absent, zero, zero, 1.0e5_wp, 'leg load on the edge F-hat''_so'), &
+         real_field('FS0', 'lb', one, blank_absent, zero, zero, 1.0e5_wp, 'rear support force F_so'), &
+         real_field('DS0', 'in', one, blank_absent, zero, zero, 100.0_wp, 'rear support deflection'), &
+         real_field('DZ0', 'in', one, blank_absent, zero, zero, 100.0_wp, 'front support deflection'), &
+         real_field('YG0', 'in', one, blank_absent, zero, -100.0_wp, 100.0_wp, 'CG height y_go')])
+
+      t(g_seatbeams)%name = 'SEATBEAMS'
+      t(g_seatbeams)%title = 'Non-rigid beam seat (C.4.d, figure 13)'
+      t(g_seatbeams)%note = 'A beam of length L built in at both ends carries the hip; a cantilever of length ' &
+         //'K*L, built in K*L behind the front edge, carries the legs at its tip (docs/seat.md). E1, E2 are ' &
+         //'3 E I of each (erratum NB-1). The undeflected cushion line passes through (XSC, YSC) at GAMMA0; ' &
+         //'YSC blank: through the point r_1 (hip arc, *ARCS) below the initial hip.'
+      call set_fields(t(g_seatbeams), [ &
+         real_field('L', 'in', one, blank_default, 20.0_wp, zero, 100.0_wp, 'hip beam length l', .true.), &
+         real_field('K', '-', one, blank_default, 0.5_wp, zero, one, 'cantilever length / l', .true.), &
+         real_field('E1', 'lb*in^2', one, blank_default, 12500.0_wp, zero, big, 'hip beam 3EI, e_1', .true.), &
+         real_field('E2', 'lb*in^2', one, blank_default, 30000.0_wp, zero, big, 'cantilever 3EI, e_2', .true.), &
+         real_field('XSC', 'in', one, blank_default, zero, -100.0_wp, 100.0_wp, 'cushion line point x''''_sc'), &
+         real_field('YSC', 'in', one, blank_absent, zero, -100.0_wp, 100.0_wp, 'cushion line point y''''_sc')])
+   end subroutine seat_groups
 
 end module deck_cards

@@ -18,7 +18,7 @@ contains
    !> The text of docs/deck-format.md, line by line.
    function deck_format_lines() result(lines)
       type(string_t), allocatable :: lines(:)
-      type(group_spec_t) :: t(n_groups)
+      type(group_spec_t), allocatable :: t(:)
       integer :: g, k
       t = card_table()
       allocate (lines(0))

@@ -62,7 +62,7 @@ module deck_reader
 
    !> The tables of a deck, built from one or more sources.
    type :: deck_t
-      type(group_spec_t) :: spec(n_groups)
+      type(group_spec_t), allocatable :: spec(:)   !< the card table (large: not on the stack)
       type(string_t), allocatable :: source_name(:)
       type(string_t), allocatable :: source_dir(:)   !< for relative file names on cards
       type(echo_line_t), allocatable :: echo(:)

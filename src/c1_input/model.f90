@@ -18,6 +18,8 @@ module model
    public :: options_section_t, time_section_t, numerics_section_t, body_section_t, joints_section_t
    public :: injury_section_t, vehicle_section_t, environment_section_t, end_tests_section_t
    public :: materials_section_t, loading_section_t, max_curves, n_belt_section
+   public :: seat_section_t
+   public :: seat_none, seat_springs, seat_rigid_beam, seat_beams, seat_form_name
    public :: solver_structured, solver_dense, solver_name, astart_euler, astart_rk4, astart_name
 
    integer, parameter :: n_seg = 8     !< body segments (Table 5)
@@ -169,6 +171,36 @@ module model
       real(wp) :: belt_g(n_belt_section) = 0.0_wp   !< residual / maximum deformation
       real(wp) :: belt_r(n_belt_section) = 1.0_wp   !< conserved / absorbed energy
    end type loading_section_t
+   !> Seat representations (C.4.d; docs/seat.md): none, the report's present
+   !! springs (figures 11, 12), the rigid beam (15, 16), the non-rigid beams (13, 14).
+   integer, parameter :: seat_none = 0, seat_springs = 1, seat_rigid_beam = 2, seat_beams = 3
+   character(len=9), parameter :: seat_form_name(0:3) = [character(len=9) :: &
+      'NONE', 'SPRINGS', 'RIGIDBEAM', 'BEAMS']
+
+   !> The seat (C.1's seat parameters and C.4.d; *SEAT, *SEATSPRINGS,
+   !! *SEATBEAM, *SEATBEAMINIT, *SEATBEAMS). Lengths in inches, measured in
+   !! the interior frame from the initial hip; the friction mu, xi is that
+   !! of material 1 (Table 4).
+   type :: seat_section_t
+      integer :: form = seat_none
+      real(wp) :: z0 = 0.0_wp        !< hip to front edge at t = 0, z_o
+      real(wp) :: z_hat = 0.0_wp     !< width of the front region, z-hat
+      real(wp) :: gamma0 = 0.0_wp    !< cushion angle gamma_o (rigid beam: its initial angle)
+      real(wp) :: w0 = 0.0_wp        !< static load at the hip W_o
+      real(wp) :: fps0 = 0.0_wp      !< static load on the front edge F'_so
+      real(wp) :: c_s = 0.0_wp, s = 0.0_wp, beta(3) = 0.0_wp   !< damper, front spring, hip polynomial
+      real(wp) :: mu = 0.0_wp, xi = 0.0_wp                     !< friction (material 1)
+      ! the rigid beam (figure 15): mass, inertia, unloaded CG height and angle,
+      ! the body's contact stiffnesses, and the ten quantities of the initial relations
+      real(wp) :: m_s = 0.0_wp, i_s = 0.0_wp, y_gu = 0.0_wp, gamma_u = 0.0_wp
+      real(wp) :: k_hip = 0.0_wp, k_edge = 0.0_wp
+      real(wp) :: a = 0.0_wp, a_prime = 0.0_wp, fhps0 = 0.0_wp, fs0 = 0.0_wp
+      real(wp) :: ds0 = 0.0_wp, dz0 = 0.0_wp, yg0 = 0.0_wp
+      ! the non-rigid beams (figure 13): lengths l and k*l, e = 3 E I (NB-1),
+      ! the undeflected cushion line through (x''_sc, y''_sc)
+      real(wp) :: ell = 0.0_wp, k_ratio = 0.0_wp, e1 = 0.0_wp, e2 = 0.0_wp
+      real(wp) :: x_sc = 0.0_wp, y_sc = 0.0_wp
+   end type seat_section_t
 
    !> The vehicle (C.1, C.3): constants, initial motion, time tables.
    type :: vehicle_section_t
@@ -207,6 +239,7 @@ module model
       type(vehicle_section_t) :: vehicle
       type(environment_section_t) :: environment
       type(end_tests_section_t) :: end_tests
+      type(seat_section_t) :: seat
       !> Things worth a user's attention that are not errors (listing and stderr).
       type(string_t), allocatable :: warnings(:)
    end type model_t

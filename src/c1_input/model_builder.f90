@@ -12,15 +12,20 @@ module model_builder
    use deck_cards, only: g_title, g_options, g_time, g_segments, g_joints, g_restraints, &
       g_stopcurve, g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates, &
       g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials, &
-      g_loadpoly, g_loadrate, g_loadtable, g_beltloading
+      g_loadpoly, g_loadrate, g_loadtable, g_beltloading, g_seat, g_seatsprings, g_seatbeam, &
+      g_seatbeaminit, g_seatbeams
    use deck_reader, only: deck_t, group_t, card_t
-   use deck_fields, only: card_value, card_int, card_given, group_value, group_int, single_card, default_value
+   use deck_fields, only: card_value, card_int, card_given, group_value, group_int, single_card, default_value, &
+      group_given
+   use seat_beam_statics, only: beam_statics_t, beam_statics_solve, n_beam_quantities, beam_quantity_name, &
+      statics_ok, bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    use pulse_csv, only: read_pulse_csv
    use model, only: model_t, pulse_table_t, stop_curve_t, options_section_t, time_section_t, &
       numerics_section_t, body_section_t, joints_section_t, injury_section_t, vehicle_section_t, &
       materials_section_t, &
       environment_section_t, end_tests_section_t, n_seg, n_joint, n_arc, joint_partner, &
-      form_cubic, form_table, nint_adams, nint_rk4, nend_contact, loading_section_t, max_curves
+      form_cubic, form_table, nint_adams, nint_rk4, nend_contact, loading_section_t, max_curves, &
+      seat_none, seat_springs, seat_rigid_beam, seat_beams, seat_form_name
    use text_io, only: string_t
    use loading_curves, only: loading_curve_t, curve_polynomial, curve_table, curve_is_defined, &
       curve_check, max_order
@@ -55,6 +60,7 @@ contains
       m%end_tests = end_tests_section_t(group_value(deck, g_endtests, 'VREST'), &
                                         group_value(deck, g_endtests, 'WREST'), &
                                         group_value(deck, g_endtests, 'THOLD'))
+      call build_seat(deck, m, err)
    end subroutine build_model
 
    !> *OPTIONS (C.1) and what this version supports of them.
@@ -488,6 +494,126 @@ contains
          end do
       end associate
    end subroutine build_tables
+   !> The seat (C.1's seat parameters, C.4.d; docs/seat.md): its form, the
+   !! groups and fields the form uses, the checks between fields, and for the
+   !! rigid beam the six initial relations solved for the quantities the deck
+   !! does not give (erratum A-RB). Friction: material 1 of *MATERIALS.
+   subroutine build_seat(deck, m, err)
+      type(deck_t), intent(in) :: deck
+      type(model_t), intent(inout) :: m
+      type(error_t), intent(inout) :: err
+      integer, parameter :: groups(4) = [g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams]
+      logical :: uses(4)
+      integer :: k
+      character(len=:), allocatable :: form
+
+      associate (p => m%seat)
+         p%form = group_int(deck, g_seat, 'FORM') - 1
+         form = trim(seat_form_name(p%form))
+         p%z0 = group_value(deck, g_seat, 'Z0')
+         p%z_hat = group_value(deck, g_seat, 'ZHAT')
+         p%gamma0 = group_value(deck, g_seat, 'GAMMA0')
+         p%w0 = group_value(deck, g_seat, 'W0')
+         p%fps0 = group_value(deck, g_seat, 'FPS0')
+         p%c_s = group_value(deck, g_seatsprings, 'CS')
+         p%s = group_value(deck, g_seatsprings, 'S')
+         p%beta = [group_value(deck, g_seatsprings, 'BETA1'), group_value(deck, g_seatsprings, 'BETA2'), &
+                   group_value(deck, g_seatsprings, 'BETA3')]
+         p%mu = m%materials%mu(1)
+         p%xi = m%materials%xi(1)
+         ! every seat group must serve the form chosen
+         uses = [any(p%form == [seat_springs, seat_rigid_beam]), p%form == seat_rigid_beam, &
+                 p%form == seat_rigid_beam, p%form == seat_beams]
+         do k = 1, size(groups)
+            if (deck%group(groups(k))%present .and. .not. uses(k)) call problem_at(deck, err, groups(k), &
+               'not used with *SEAT FORM = '//form)
+         end do
+         if (p%form == seat_none) return
+         if (p%form /= seat_springs .and. group_given(deck, g_seat, 'ZHAT')) &
+            call problem_at(deck, err, g_seat, 'ZHAT is used only with FORM = SPRINGS')
+         if (p%form == seat_beams .and. (group_given(deck, g_seat, 'W0') .or. group_given(deck, g_seat, 'FPS0'))) &
+            call problem_at(deck, err, g_seat, 'W0 and FPS0 are not used with FORM = BEAMS')
+         if (p%form /= seat_beams) then
+            ! the hip (rear support) spring pushes at every compression d > 0:
+            ! beta_1 + beta_2 d + beta_3 d**2 >= 0 (docs/seat.md)
+            if (.not. any(p%beta > 0.0_wp)) call problem_at(deck, err, g_seatsprings, &
+               'the hip spring has no stiffness: give BETA1, BETA2 or BETA3 > 0')
+            if (p%beta(2) < -2.0_wp*sqrt(p%beta(1)*p%beta(3))) call problem_at(deck, err, g_seatsprings, &
+               'BETA2 = '//num(p%beta(2))//' lb/in^2 is below -2 sqrt(BETA1 BETA3) = ' &
+               //num(-2.0_wp*sqrt(p%beta(1)*p%beta(3)))//': the spring would pull at some compression')
+         end if
+         select case (p%form)
+         case (seat_springs)
+            if (.not. p%z_hat < p%z0) call problem_at(deck, err, g_seat, 'ZHAT = '//num(p%z_hat) &
+               //' in must be less than Z0 = '//num(p%z0)//' in (the hip starts behind the front region)')
+            if (p%z_hat > 0.0_wp .and. .not. p%beta(1) > 0.0_wp) call problem_at(deck, err, g_seatsprings, &
+               'a front region (ZHAT > 0) needs BETA1 > 0: its linear spring starts from beta_1 for a hip ' &
+               //'that is not pressed in')
+         case (seat_rigid_beam)
+            call build_rigid_beam(deck, m, err)
+         case (seat_beams)
+            p%ell = group_value(deck, g_seatbeams, 'L')
+            p%k_ratio = group_value(deck, g_seatbeams, 'K')
+            p%e1 = group_value(deck, g_seatbeams, 'E1')
+            p%e2 = group_value(deck, g_seatbeams, 'E2')
+            p%x_sc = group_value(deck, g_seatbeams, 'XSC')
+            ! by default the cushion line touches the hip arc at t = 0
+            p%y_sc = -m%body%r_arc(1) + p%x_sc*tan(p%gamma0)
+            if (group_given(deck, g_seatbeams, 'YSC')) p%y_sc = group_value(deck, g_seatbeams, 'YSC')
+            if (.not. p%z0 < p%ell) call problem_at(deck, err, g_seat, 'Z0 = '//num(p%z0) &
+               //' in: the hip must start on the hip beam, Z0 < L = '//num(p%ell)//' in')
+            if (.not. abs(m%body%r_arc(1) - m%body%r_arc(7)) < m%body%length(7) .or. &
+                .not. abs(m%body%r_arc(7) - m%body%r_arc(11)) < m%body%length(8)) call problem_at(deck, err, &
+               g_seatbeams, 'the leg''s underside needs |r_1 - r_7| < L7 and |r_7 - r_A| < L8 (*ARCS, *SEGMENTS)')
+         end select
+      end associate
+   end subroutine build_seat
+
+   !> The rigid-beam seat: its parameters and the four of the ten initial
+   !! quantities the deck gives, solved for the other six (C.4.d, A-RB).
+   subroutine build_rigid_beam(deck, m, err)
+      type(deck_t), intent(in) :: deck
+      type(model_t), intent(inout) :: m
+      type(error_t), intent(inout) :: err
+      type(beam_statics_t) :: bs
+      logical :: given(n_beam_quantities)
+      real(wp) :: q(n_beam_quantities)
+      integer :: j, status, gid
+      character(len=:), allocatable :: message
+      associate (p => m%seat)
+         p%m_s = group_value(deck, g_seatbeam, 'MS')
+         p%i_s = group_value(deck, g_seatbeam, 'IS')
+         p%y_gu = group_value(deck, g_seatbeam, 'YGU')
+         p%gamma_u = group_value(deck, g_seatbeam, 'GAMMAU')
+         p%k_hip = group_value(deck, g_seatbeam, 'KHIP')
+         p%k_edge = group_value(deck, g_seatbeam, 'KEDGE')
+         do j = 1, n_beam_quantities
+            gid = g_seatbeaminit
+            if (any(j == [bq_w0, bq_fps0, bq_gamma0])) gid = g_seat
+            given(j) = group_given(deck, gid, trim(beam_quantity_name(j)))
+            q(j) = 0.0_wp
+            if (given(j)) q(j) = group_value(deck, gid, trim(beam_quantity_name(j)))
+         end do
+         ! the apparent gravity at t = 0 in the interior frame
+         bs = beam_statics_t(z0=p%z0, m_s=p%m_s, g=m%environment%gravity*cos(m%vehicle%phi0), y_gu=p%y_gu, &
+                             gamma_u=p%gamma_u, s=p%s, beta=p%beta)
+         call beam_statics_solve(bs, given, q, status, message)
+         if (status /= statics_ok) then
+            call problem_at(deck, err, g_seatbeaminit, message)
+            return
+         end if
+         p%a = q(bq_a)
+         p%a_prime = q(bq_ap)
+         p%w0 = q(bq_w0)
+         p%fhps0 = q(bq_fhps0)
+         p%fs0 = q(bq_fs0)
+         p%fps0 = q(bq_fps0)
+         p%ds0 = q(bq_ds0)
+         p%dz0 = q(bq_dz0)
+         p%yg0 = q(bq_yg0)
+         p%gamma0 = q(bq_gamma0)
+      end associate
+   end subroutine build_rigid_beam
 
    !> Vehicle constants, initial motion and its time tables (C.1, C.3).
    subroutine build_vehicle(deck, v, err)

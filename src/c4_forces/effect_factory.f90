@@ -4,7 +4,7 @@
 !! (docs/architecture.md, rule 2). Adding an effect is one line here.
 module effect_factory
    use kinds, only: wp
-   use model, only: model_t, n_joint, n_dof
+   use model, only: model_t, n_joint, n_dof, seat_none
    use preliminary, only: body_constants_t
    use effect_base, only: effect_t, effect_slot_t
    use centrifugal, only: centrifugal_effect
@@ -14,6 +14,7 @@ module effect_factory
    use joint_stops, only: joint_stops_effect
    use joint_dislocation, only: joint_dislocation_effect
    use joint_restraints, only: restraint_is_active
+   use seat_forces, only: seat_effect
    implicit none
    private
 
@@ -39,6 +40,7 @@ contains
       if (any([(restraint_is_active(m%joints%restraint(i)), i=1, n_joint)])) &
          call add(joint_stops_effect(m%joints%restraint))                               ! C.4.c, fig. 9
       call add(joint_dislocation_effect(m%joints%restraint))                            ! C.4.c, fig. 10
+      if (m%seat%form /= seat_none) call add(seat_effect(m, z0))                        ! C.4.d
    contains
       subroutine add(e)
          class(effect_t), intent(in) :: e

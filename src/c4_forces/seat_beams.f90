@@ -1,0 +1,265 @@
+!> Report C.4.d, the seat as a pair of non-rigid beams (figures 13 and 14,
+!! reconstructed in docs/seat.md). A uniform beam of length l built in at
+!! both ends (NB-1) carries the hip at z from its front end; a cantilever of
+!! length k l, built in k l behind the front edge, carries the leg at its
+!! tip (the front edge). e_1, e_2 are 3 E I of each (NB-1).
+!!
+!!   F*   = e_1 l^3 delta_A / (a^3 z^3)   hip-point stiffness K_1 of the built-in beam, a = l - z
+!!   F*_s = e_2 delta_z / (k l)^3         tip stiffness K_2 of the cantilever
+!!   F-hat = F* b/(2 k^3 l^3) delta_z/delta_A, b = z^3 - 3k^2l^2 z + 2k^3l^3 = c^2(2kl + z), c = kl - z:
+!!          rho = b/(2 k^3 l^3) is the cantilever's deflection under the hip per unit tip deflection
+!!
+!! Reconstruction (docs/seat.md): the hip load reaches the cantilever through
+!! the built-in beam, a spring K_1 in series with the cantilever's hip point,
+!! which moves rho times its tip. The elastic energy
+!!   U = 1/2 K_1 (delta_A - rho w)^2 + 1/2 K_2 w^2,  w >= delta_z (the leg holds the tip down)
+!! gives the hip force F_s = K_1 (delta_A - rho w) = F* - F-hat (w = delta_z) and
+!! the front force F'_s = K_2 w - rho F_s = F*_s - rho F_s. Its stiffness is
+!! symmetric (Maxwell-Betti). The printed F-hat_s = 2 e_2 k l delta_A/(b c),
+!! unverifiable (A-NB) and unbounded as the hip nears the cantilever's root,
+!! is replaced by the reciprocal coupling rho F_s (erratum NB-3).
+!!
+!! delta_A = r_1 + d with d = y''_sc - y_1 + (x_1 - x''_sc) tan gamma_o (NB-2);
+!! delta_z: the undeflected cushion line minus the leg's underside (the common
+!! tangent of the hip and knee arcs, angle alpha_L, or of the knee and ankle
+!! arcs, alpha_l) at the front edge. K_1 and rho change as the hip slides, so
+!! the forces are not a gradient: "energy calculations must be done
+!! incrementally": the work the body does on the seat is integrated.
+module seat_beams
+   use kinds, only: wp, deg
+   use strings, only: num
+   use model, only: n_dof, seat_section_t, body_section_t
+   use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
+      energy_supplied, n_energy_kinds
+   use output_series, only: output_series_t, series_new, column
+   use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, hip_friction, &
+      slip_of, vehicle_power, add_hip_force, seg_thigh
+   implicit none
+   private
+
+   public :: seat_beams_t, seat_beams_effect, beams_stiffness, beams_forces, beams_state_t, beams_state
+   public :: end_fraction
+
+   !> The hip beam's stiffness grows without bound at its built-in ends; it
+   !! is taken no larger than at this fraction of l from either end.
+   real(wp), parameter :: end_fraction = 0.05_wp
+
+   type, extends(effect_t) :: seat_beams_t
+      type(seat_section_t) :: p
+      real(wp) :: l7 = 0.0_wp, l8 = 0.0_wp
+      real(wp) :: r1 = 0.0_wp, r7 = 0.0_wp
+      real(wp) :: alpha_l7 = 0.0_wp, alpha_l8 = 0.0_wp   !< alpha_L, alpha_l (C.4.d)
+      integer :: slip = 0        !< the hip slides (+1, -1) or not (0): decided on accepted steps
+   contains
+      procedure :: add_forces => beams_add_forces
+      procedure :: accept => beams_accept
+      procedure :: energy => beams_energy
+      procedure :: outputs => beams_outputs
+      procedure :: output_values => beams_output_values
+      procedure :: describe => beams_describe
+   end type seat_beams_t
+
+   type :: beams_state_t
+      type(seat_frame_t) :: fr
+      type(leg_line_t) :: ln
+      logical :: on = .false., leg = .false.
+      real(wp) :: z = 0.0_wp, delta_a = 0.0_wp, delta_z = 0.0_wp
+      real(wp) :: k1 = 0.0_wp, rho = 0.0_wp, k2 = 0.0_wp, w = 0.0_wp
+      real(wp) :: f_s = 0.0_wp, fp_s = 0.0_wp, f = 0.0_wp
+      real(wp) :: work_rate = 0.0_wp, dissipation = 0.0_wp, supply = 0.0_wp
+   end type beams_state_t
+
+contains
+
+   function seat_beams_effect(p, body) result(e)
+      type(seat_section_t), intent(in) :: p
+      type(body_section_t), intent(in) :: body
+      type(seat_beams_t) :: e
+      e%name = 'seat'
+      e%title = 'non-rigid beam seat (C.4.d)'
+      e%p = p
+      e%l7 = body%length(7)
+      e%l8 = body%length(8)
+      e%r1 = body%r_arc(1)
+      e%r7 = body%r_arc(7)
+      ! C.4.d: alpha_L = asin((r_1 - r_7)/L_7), alpha_l = asin((r_7 - r_A)/L_8)
+      e%alpha_l7 = asin((body%r_arc(1) - body%r_arc(7))/body%length(7))
+      e%alpha_l8 = asin((body%r_arc(7) - body%r_arc(11))/body%length(8))
+      e%n_aux = 3
+      e%needs_vehicle = .true.
+      e%has_memory = .true.
+      e%has_energy = .true.
+   end function seat_beams_effect
+
+   !> K_1 (hip-point stiffness of the built-in beam), rho (cantilever
+   !! deflection under the hip per unit tip deflection) and K_2 (tip
+   !! stiffness) with the hip at z behind the front edge (C.4.d with NB-1).
+   pure subroutine beams_stiffness(ell, k, e1, e2, z, k1, rho, k2)
+      real(wp), intent(in) :: ell, k, e1, e2, z
+      real(wp), intent(out) :: k1, rho, k2
+      real(wp) :: a, zz, c, b
+      if (z < ell) then
+         zz = max(z, end_fraction*ell)
+         a = max(ell - z, end_fraction*ell)
+         k1 = e1*ell**3/(a**3*zz**3)           ! F*/delta_A
+      else
+         k1 = 0.0_wp                           ! the hip is behind the beam
+      end if
+      c = k*ell - z
+      if (z >= 0.0_wp .and. c > 0.0_wp) then
+         b = z**3 - 3.0_wp*k**2*ell**2*z + 2.0_wp*k**3*ell**3   ! = c^2 (2 k l + z)
+         rho = b/(2.0_wp*k**3*ell**3)
+      else
+         rho = 0.0_wp                          ! the hip is not over the cantilever
+      end if
+      k2 = e2/(k*ell)**3                       ! F*_s/delta_z
+   end subroutine beams_stiffness
+
+   !> The forces of the reconstruction: the tip deflection w minimizes U with
+   !! w >= delta_z; F_s = K_1 (delta_A - rho w) >= 0, F'_s = K_2 w - rho F_s >= 0.
+   pure subroutine beams_forces(k1, rho, k2, delta_a, delta_z, f_s, fp_s, w)
+      real(wp), intent(in) :: k1, rho, k2, delta_a, delta_z
+      real(wp), intent(out) :: f_s, fp_s, w
+      real(wp) :: w_free
+      w_free = 0.0_wp
+      if (delta_a > 0.0_wp) w_free = rho*k1*delta_a/(k2 + rho**2*k1)
+      w = max(delta_z, w_free)
+      f_s = k1*max(delta_a - rho*w, 0.0_wp)
+      fp_s = max(k2*w - rho*f_s, 0.0_wp)
+   end subroutine beams_forces
+
+   pure function beams_state(this, st) result(s)
+      class(seat_beams_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      type(beams_state_t) :: s
+      real(wp) :: tg0, h_c, fh(2), fe(2)
+      integer :: seg
+      s%fr = seat_frame(st, this%l7)
+      s%z = this%p%z0 - s%fr%x1
+      s%on = s%z >= 0.0_wp
+      if (.not. s%on) return
+      tg0 = tan(this%p%gamma0)
+      ! NB-2: d, the cushion line's height at the hip minus y_1; delta_A = r_1 + d
+      s%delta_a = this%r1 + this%p%y_sc - s%fr%y1 + (s%fr%x1 - this%p%x_sc)*tg0
+      s%leg = leg_rests(s%fr, this%p%z0, this%l8)
+      if (s%leg) then
+         seg = leg_branch(s%fr, this%p%z0)
+         if (seg == seg_thigh) then
+            s%ln = leg_line(s%fr, seg, this%p%z0, this%r1, this%alpha_l7, this%l7)
+         else
+            s%ln = leg_line(s%fr, seg, this%p%z0, this%r7, this%alpha_l8, this%l7)
+         end if
+         h_c = this%p%y_sc + (this%p%z0 - this%p%x_sc)*tg0
+         s%delta_z = h_c - s%ln%h
+      else
+         s%delta_z = -huge(1.0_wp)        ! nothing on the cantilever's tip
+      end if
+      call beams_stiffness(this%p%ell, this%p%k_ratio, this%p%e1, this%p%e2, s%z, s%k1, s%rho, s%k2)
+      call beams_forces(s%k1, s%rho, s%k2, s%delta_a, s%delta_z, s%f_s, s%fp_s, s%w)
+      if (.not. s%leg) s%fp_s = 0.0_wp
+      s%f = hip_friction(this%p%mu, s%f_s + s%fp_s, this%slip)
+      ! the work the body does on the beams: F_s delta_A' + F'_s delta_z'
+      s%work_rate = s%f_s*(-s%fr%y1dot + s%fr%x1dot*tg0)
+      if (s%leg) s%work_rate = s%work_rate - s%fp_s*s%ln%h_dot
+      s%dissipation = s%f*s%fr%x1dot
+      fh = [-s%f_s*tg0 - s%f, s%f_s]
+      fe = s%fp_s*[-s%ln%tan_phi, 1.0_wp]
+      s%supply = vehicle_power(s%fr, fh, [s%fr%x1, s%fr%y1]) + vehicle_power(s%fr, fe, [this%p%z0, s%ln%h])
+   end function beams_state
+
+   pure subroutine beams_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(seat_beams_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      type(beams_state_t) :: s
+      associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
+      end associate
+      s = beams_state(this, st)
+      aux_rate = 0.0_wp
+      if (.not. s%on) return
+      ! external generalized forces: the hip force normal to the cushion line,
+      ! -F_s d delta_A/dz, the friction, and F'_s normal to the leg's underside
+      call add_hip_force(s%fr, [-s%f_s*tan(this%p%gamma0) - s%f, s%f_s], b)
+      b = b + s%fp_s*s%ln%dh
+      aux_rate = [s%work_rate, s%dissipation, s%supply]
+   end subroutine beams_add_forces
+
+   !> On accepted steps: whether the hip slides (the friction's dead band,
+   !! A-S4); a change restarts the stepper. The beams' own switches (the hip
+   !! past an end, the leg off the edge) need no memory: their energy is the
+   !! integrated work.
+   subroutine beams_accept(this, st, extra, aux, result)
+      class(seat_beams_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(accept_result_t), intent(inout) :: result
+      type(seat_frame_t) :: fr
+      integer :: slip
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      fr = seat_frame(st, this%l7)
+      slip = 0
+      if (this%p%z0 - fr%x1 >= 0.0_wp) slip = slip_of(this%p%xi, fr%x1dot)
+      if (slip == this%slip) return
+      this%slip = slip
+      result%restart = .true.
+   end subroutine beams_accept
+
+   pure subroutine beams_energy(this, st, extra, aux, e)
+      class(seat_beams_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      associate (u1 => this%name, u2 => st%t, u3 => size(extra))
+      end associate
+      e(energy_stored) = aux(1)
+      e(energy_dissipated) = aux(2)
+      e(energy_supplied) = aux(3)
+   end subroutine beams_energy
+
+   function beams_outputs(this) result(series)
+      class(seat_beams_t), intent(in) :: this
+      type(output_series_t), allocatable :: series(:)
+      associate (unused => this%name)
+      end associate
+      allocate (series(2))
+      series(1) = series_new('loads', 'NON-RIGID BEAM SEAT LOADS (C.4.d)', 'vertical components of the hip force ' &
+                             //'F_s (normal to the cushion line) and the front-edge force F''_s (normal to the leg''s ' &
+                             //'underside), the friction magnitude f, the penetrations delta_A and delta_z, the ' &
+                             //'cantilever''s tip deflection w, z = z_o - x_1', 2)
+      series(1)%col = [column('F_s', 'lb'), column('Fp_s', 'lb'), column('f', 'lb'), column('delta_A', 'in'), &
+                       column('delta_z', 'in'), column('w', 'in'), column('z', 'in')]
+      series(2) = series_new('energy', 'NON-RIGID BEAM SEAT ENERGIES (C.6)', 'the work the body did on the ' &
+                             //'beams (integrated, not a potential), dissipated by the friction, supplied by the ' &
+                             //'vehicle', 3)
+      series(2)%col = [column('work', 'in*lb'), column('friction', 'in*lb'), column('supplied', 'in*lb')]
+   end function beams_outputs
+
+   pure subroutine beams_output_values(this, item, st, extra, aux, values)
+      class(seat_beams_t), intent(in) :: this
+      integer, intent(in) :: item
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: values(:)
+      type(beams_state_t) :: s
+      associate (u1 => size(extra))
+      end associate
+      s = beams_state(this, st)
+      if (item == 1) then
+         values = [s%f_s, s%fp_s, s%f, s%delta_a, merge(s%delta_z, 0.0_wp, s%leg), s%w, s%z]
+      else
+         values = aux(1:3)
+      end if
+   end subroutine beams_output_values
+
+   function beams_describe(this) result(text)
+      class(seat_beams_t), intent(in) :: this
+      character(len=:), allocatable :: text
+      text = trim(this%title)//': l '//num(this%p%ell)//' in, k '//num(this%p%k_ratio)//', e_1 '//num(this%p%e1) &
+             //', e_2 '//num(this%p%e2)//' lb*in^2, z_o '//num(this%p%z0)//' in, gamma_o ' &
+             //num(anint(10.0_wp*this%p%gamma0/deg)/10.0_wp)//' deg'
+      text = text(1:min(len(text), 128))
+   end function beams_describe
+end module seat_beams

@@ -1,0 +1,226 @@
+!> Report C.4.d, what the three seat representations share (docs/seat.md):
+!! the hip in the vehicle interior (the start of C.4), the leg line that
+!! rests on the front edge of the seat (figure 11: the thigh for an adult,
+!! the shank for a child whose legs stick out), the friction at the hip,
+!! the power of a seat force against the vehicle, and the logic of figure
+!! 12 that decides, on accepted steps only, whether the occupant is on the
+!! seat, in the front region z <= z-hat, and whether his leg rests on the
+!! front edge.
+!!
+!! Conventions (errata-forces.md): interior coordinates x forward, y up,
+!! from the initial hip; Theta_i = alpha_i + Phi; z = z_o - x_1 is the
+!! horizontal hip to front-edge distance. Forces are given in interior
+!! components; the generalized force of a force F at a body point P is
+!! F . dP/dz_k with the vehicle held fixed (virtual work).
+module seat_geometry
+   use kinds, only: wp, deg
+   use model, only: n_dof, hip_x, hip_y
+   use effect_base, only: body_state_t
+   implicit none
+   private
+
+   public :: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests
+   public :: seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force
+   public :: case_off, case_a, case_b, seg_thigh, seg_shank, max_leg_slope
+
+   integer, parameter :: seg_thigh = 7, seg_shank = 8
+   !> Figure 11's cases: off the seat (z < 0), case A (z > z-hat: hip
+   !! spring-damper and front-edge spring), case B (0 <= z <= z-hat: the
+   !! hip spring linear).
+   integer, parameter :: case_off = 0, case_a = 1, case_b = 2
+   !> A leg segment steeper than this does not rest on the front edge: the
+   !! front-edge force normal to it (erratum A-S1) would grow without bound
+   !! (tan Theta_8 of the shank case; docs/seat.md).
+   real(wp), parameter :: max_leg_slope = 75.0_wp*deg
+
+   !> The interior frame at one evaluation: the pitch, the hip's interior
+   !! position and rate (x_1, y_1 and their rates, with the -y Phi', +x Phi'
+   !! terms of C.4), the thigh and shank angles Theta_7, Theta_8 and rates, and
+   !! the velocity of the interior origin in interior components (R c').
+   type :: seat_frame_t
+      real(wp) :: c_phi = 1.0_wp, s_phi = 0.0_wp, phi_dot = 0.0_wp
+      real(wp) :: x1 = 0.0_wp, y1 = 0.0_wp, x1dot = 0.0_wp, y1dot = 0.0_wp
+      real(wp) :: c7 = 1.0_wp, s7 = 0.0_wp, c8 = 1.0_wp, s8 = 0.0_wp
+      real(wp) :: th7dot = 0.0_wp, th8dot = 0.0_wp
+      real(wp) :: vc(2) = 0.0_wp
+      real(wp) :: knee(2) = 0.0_wp, knee_dot(2) = 0.0_wp   !< knee, interior
+   end type seat_frame_t
+
+   !> Where a leg line crosses the vertical x = x_e (the front edge): its
+   !! height h there, the rate of h (interior), its slope tan phi, and the
+   !! gradient dh/dz. The material point of the leg at the crossing carries a
+   !! force normal to the line (A-S1).
+   type :: leg_line_t
+      integer :: seg = seg_thigh
+      real(wp) :: h = 0.0_wp, h_dot = 0.0_wp, tan_phi = 0.0_wp
+      real(wp) :: dh(n_dof) = 0.0_wp
+   end type leg_line_t
+
+   !> What the seat remembers between accepted steps (figure 12 as
+   !! reconstructed in docs/seat.md): the case, whether the leg rests on the
+   !! front edge, the direction the hip slides in (+1, -1; 0 within the dead
+   !! band xi), the spring constant of case B (chosen at the switch, A-S4),
+   !! and the energy the switches moved out of the stored energy.
+   type :: seat_memory_t
+      integer :: case = case_a
+      logical :: leg_on = .true.
+      integer :: slip = 0
+      real(wp) :: k_hat = 0.0_wp
+      real(wp) :: e_switch = 0.0_wp
+   end type seat_memory_t
+
+contains
+
+   !> The interior frame at st (the start of C.4; vehicle state in st%vehicle).
+   pure function seat_frame(st, l7) result(fr)
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: l7
+      type(seat_frame_t) :: fr
+      real(wp) :: dx, dy, dvx, dvy
+      associate (v => st%vehicle)
+         fr%c_phi = cos(v%pos(3))
+         fr%s_phi = sin(v%pos(3))
+         fr%phi_dot = v%vel(3)
+         dx = st%z(hip_x) - v%pos(1)
+         dy = st%z(hip_y) - v%pos(2)
+         dvx = st%zdot(hip_x) - v%vel(1)
+         dvy = st%zdot(hip_y) - v%vel(2)
+         ! C.4: x_1 = R(Phi)(X_h - x_c), and its rate in the rotating frame
+         fr%x1 = dx*fr%c_phi - dy*fr%s_phi
+         fr%y1 = dx*fr%s_phi + dy*fr%c_phi
+         fr%x1dot = dvx*fr%c_phi - dvy*fr%s_phi - fr%y1*fr%phi_dot
+         fr%y1dot = dvx*fr%s_phi + dvy*fr%c_phi + fr%x1*fr%phi_dot
+         fr%vc = [v%vel(1)*fr%c_phi - v%vel(2)*fr%s_phi, v%vel(1)*fr%s_phi + v%vel(2)*fr%c_phi]
+      end associate
+      ! Theta_i = alpha_i + Phi (section B)
+      fr%c7 = st%c(7)*fr%c_phi - st%s(7)*fr%s_phi
+      fr%s7 = st%s(7)*fr%c_phi + st%c(7)*fr%s_phi
+      fr%c8 = st%c(8)*fr%c_phi - st%s(8)*fr%s_phi
+      fr%s8 = st%s(8)*fr%c_phi + st%c(8)*fr%s_phi
+      fr%th7dot = st%zdot(7) + fr%phi_dot
+      fr%th8dot = st%zdot(8) + fr%phi_dot
+      fr%knee = [fr%x1 + l7*fr%c7, fr%y1 + l7*fr%s7]
+      fr%knee_dot = [fr%x1dot - l7*fr%th7dot*fr%s7, fr%y1dot + l7*fr%th7dot*fr%c7]
+   end function seat_frame
+
+   !> Figure 11: the front edge (at x = x_e) lies under the thigh when z <=
+   !! L_7 cos Theta_7 (an adult), else under the shank (a child).
+   pure integer function leg_branch(fr, x_e)
+      type(seat_frame_t), intent(in) :: fr
+      real(wp), intent(in) :: x_e
+      if (x_e <= fr%knee(1)) then
+         leg_branch = seg_thigh
+      else
+         leg_branch = seg_shank
+      end if
+   end function leg_branch
+
+   !> The leg rests on the front edge: the segment over it is no steeper
+   !! than max_leg_slope and, for the shank, the foot reaches past the edge.
+   pure logical function leg_rests(fr, x_e, l8)
+      type(seat_frame_t), intent(in) :: fr
+      real(wp), intent(in) :: x_e, l8
+      if (leg_branch(fr, x_e) == seg_thigh) then
+         leg_rests = fr%c7 >= cos(max_leg_slope) .and. x_e >= fr%x1
+      else
+         leg_rests = fr%c8 >= cos(max_leg_slope) .and. x_e - fr%knee(1) <= l8*fr%c8
+      end if
+   end function leg_rests
+
+   !> The leg line of segment seg (7 thigh from the hip, 8 shank from the
+   !! knee) at angle phi = Theta_seg + omega, offset by r from the joint to
+   !! the side of its underside (r = omega = 0: the centre line of C.4.d;
+   !! r, omega: the common tangent of two arcs, A-NB), where it crosses x = x_e.
+   !! With r = omega = 0 its height is y_1 + y_z and dh/dz is d y_1/dz + the
+   !! printed partials of y_z: for the thigh z sec^2 Theta_7, 0, -cos Phi tan
+   !! Theta_7, sin Phi tan Theta_7; for the shank L_7(cos Theta_7 + sin Theta_7
+   !! tan Theta_8), (z - L_7 cos Theta_7) sec^2 Theta_8, -cos Phi tan Theta_8,
+   !! sin Phi tan Theta_8 (C.4.d, verified in errata-forces.md).
+   pure function leg_line(fr, seg, x_e, r, omega, l7) result(ln)
+      type(seat_frame_t), intent(in) :: fr
+      integer, intent(in) :: seg
+      real(wp), intent(in) :: x_e, r, omega, l7
+      type(leg_line_t) :: ln
+      real(wp) :: cp, sp, j(2), jdot(2), b(2), sec2, phidot
+      ln%seg = seg
+      if (seg == seg_thigh) then
+         cp = fr%c7*cos(omega) - fr%s7*sin(omega)
+         sp = fr%s7*cos(omega) + fr%c7*sin(omega)
+         j = [fr%x1, fr%y1]
+         jdot = [fr%x1dot, fr%y1dot]
+         phidot = fr%th7dot
+      else
+         cp = fr%c8*cos(omega) - fr%s8*sin(omega)
+         sp = fr%s8*cos(omega) + fr%c8*sin(omega)
+         j = fr%knee
+         jdot = fr%knee_dot
+         phidot = fr%th8dot
+      end if
+      ! a numerical guard only: figure 12's logic (leg_rests, on accepted
+      ! steps) lifts the leg off the edge long before the line is this steep
+      cp = max(cp, 1.0e-3_wp)
+      ln%tan_phi = sp/cp
+      sec2 = 1.0_wp + ln%tan_phi**2
+      b = j + r*[sp, -cp]
+      ln%h = b(2) + (x_e - b(1))*ln%tan_phi
+      ! rate in the interior frame; the offset r turns with the segment and
+      ! drops out (d/dphi of b_y - b_x tan phi is 0)
+      ln%h_dot = jdot(2) - jdot(1)*ln%tan_phi + (x_e - b(1))*sec2*phidot
+      ln%dh = 0.0_wp
+      ln%dh(seg) = (x_e - b(1))*sec2
+      if (seg == seg_shank) ln%dh(seg_thigh) = l7*(fr%c7 + fr%s7*ln%tan_phi)
+      ! d(x_1, y_1)/dx_h = (cos Phi, sin Phi), d/dy_h = (-sin Phi, cos Phi)
+      ln%dh(hip_x) = fr%s_phi - ln%tan_phi*fr%c_phi
+      ln%dh(hip_y) = fr%c_phi + ln%tan_phi*fr%s_phi
+   end function leg_line
+
+   !> Add the generalized forces of a force f (interior components) applied
+   !! at the hip: S_9, S_10 (C.4.d; the hip does not move with the alpha_i).
+   pure subroutine add_hip_force(fr, f, b)
+      type(seat_frame_t), intent(in) :: fr
+      real(wp), intent(in) :: f(2)
+      real(wp), intent(inout) :: b(n_dof)
+      b(hip_x) = b(hip_x) + f(1)*fr%c_phi + f(2)*fr%s_phi
+      b(hip_y) = b(hip_y) - f(1)*fr%s_phi + f(2)*fr%c_phi
+   end subroutine add_hip_force
+
+   !> C.4.d friction at the hip: f = mu (F_s + F'_s) sgn x_1' while the hip
+   !! slides (slip = sgn x_1', decided on accepted steps), zero within the
+   !! dead band (A-S4); the force on the body is -f along the interior x (A-f).
+   pure real(wp) function hip_friction(mu, n, slip) result(f)
+      real(wp), intent(in) :: mu, n
+      integer, intent(in) :: slip
+      f = mu*max(n, 0.0_wp)*real(slip, wp)
+   end function hip_friction
+
+   !> The direction the hip slides in: sgn x_1' once |x_1'| reaches xi, 0
+   !! below it and at x_1' = 0 whatever xi (as the joints, D-16).
+   pure integer function slip_of(xi, x1dot)
+      real(wp), intent(in) :: xi, x1dot
+      slip_of = 0
+      if (abs(x1dot) >= xi .and. abs(x1dot) > 0.0_wp) slip_of = int(sign(1.0_wp, x1dot))
+   end function slip_of
+
+   !> The power that the vehicle delivers through a seat force f (on the
+   !! body, interior components) acting at the interior point p: f . R u,
+   !! u the velocity of the vehicle's material point at p, R u = R c' +
+   !! Phi' (p_y, -p_x) (docs/seat.md, "Energy").
+   pure real(wp) function vehicle_power(fr, f, p)
+      type(seat_frame_t), intent(in) :: fr
+      real(wp), intent(in) :: f(2), p(2)
+      vehicle_power = f(1)*(fr%vc(1) + fr%phi_dot*p(2)) + f(2)*(fr%vc(2) - fr%phi_dot*p(1))
+   end function vehicle_power
+
+   !> Figure 12 (reconstructed): off the seat when the hip has passed the
+   !! front edge (z < 0), case B within z-hat of it, case A behind.
+   pure integer function seat_case(z, z_hat)
+      real(wp), intent(in) :: z, z_hat
+      if (z < 0.0_wp) then
+         seat_case = case_off
+      else if (z <= z_hat) then
+         seat_case = case_b
+      else
+         seat_case = case_a
+      end if
+   end function seat_case
+end module seat_geometry

@@ -1,0 +1,320 @@
+!> Report C.4.d, the present seat (figures 11 and 12, reconstructed in
+!! docs/seat.md): a linear spring s at the front edge acting on the thigh
+!! (adult) or the shank (child), a third-order spring beta_1..beta_3 and a
+!! damper c_s at the hip, friction at the hip f = mu (F_s + F'_s) sgn x_1',
+!! and within z-hat of the front edge a linear hip spring whose constant is
+!! that of the hip at the switch (A-S4). Off the seat when z < 0.
+!!
+!! Forces (interior components, on the body):
+!!   hip         (-f, F_s)                 F_s = beta(d) + c_s d' >= 0, d = -y_1 (A-S3)
+!!   front edge  F'_s (-tan phi, 1)        F'_s = s (y_zo - y_1 - y_z) >= 0, normal
+!!               at the leg line's crossing of x = z_o (A-S1), y_zo = z_o tan gamma_o (A-S2)
+!! and S_7..S_10 are their virtual work: the printed S_7..S_10 of C.4.d.
+!!
+!! Energy (docs/seat.md): stored = sum beta_m d^{m+1}/(m+1) (no 1/2, E6-1;
+!! case B 1/2 k d^2) + 1/2 s (front compression)^2, a potential whose
+!! gradient the clipped springs are; dissipated = the integral of the damper's
+!! and the friction's power (auxiliary quantity 1) + what the switches of
+!! figure 12 took from the springs; supplied = the integral of the power of
+!! the seat forces at the vehicle's material points (auxiliary quantity 2).
+module seat_springs
+   use kinds, only: wp, deg
+   use strings, only: num
+   use model, only: n_dof, n_seg, hip_x, hip_y, seat_section_t, body_section_t
+   use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
+      energy_supplied, n_energy_kinds
+   use output_series, only: output_series_t, series_new, column
+   use body_kinematics, only: point_state_t, segment_cg_state
+   use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
+      seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, case_off, case_a, case_b
+   implicit none
+   private
+
+   public :: seat_springs_t, seat_springs_effect, springs_state_t, springs_state, static_loads
+
+   type, extends(effect_t) :: seat_springs_t
+      type(seat_section_t) :: p
+      real(wp) :: l7 = 0.0_wp, l8 = 0.0_wp
+      real(wp) :: y_zo = 0.0_wp                 !< z_o tan gamma_o (A-S2)
+      real(wp) :: w_pred = 0.0_wp, fps_pred = 0.0_wp  !< static loads of the initial posture
+      type(seat_memory_t) :: mem
+   contains
+      procedure :: add_forces => springs_add_forces
+      procedure :: accept => springs_accept
+      procedure :: energy => springs_energy
+      procedure :: outputs => springs_outputs
+      procedure :: output_values => springs_output_values
+      procedure :: describe => springs_describe
+   end type seat_springs_t
+
+   !> The seat at one state: figure 12's quantities, forces and powers.
+   type :: springs_state_t
+      type(seat_frame_t) :: fr
+      type(leg_line_t) :: ln
+      integer :: case = case_a
+      logical :: leg = .false.
+      real(wp) :: z = 0.0_wp, d = 0.0_wp, d_dot = 0.0_wp
+      real(wp) :: f_el = 0.0_wp, f_s = 0.0_wp, delta_e = 0.0_wp, fp_s = 0.0_wp, f = 0.0_wp
+      real(wp) :: e_hip = 0.0_wp, e_edge = 0.0_wp
+      real(wp) :: dissipation = 0.0_wp, supply = 0.0_wp   !< rates
+   end type springs_state_t
+
+contains
+
+   !> The effect for seat p, body, gravity g and the initial state (alpha_0
+   !! in z0, pitch phi0): figure 12's memory starts from the initial posture.
+   function seat_springs_effect(p, body, g, z0, phi0) result(e)
+      type(seat_section_t), intent(in) :: p
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: g, z0(n_dof), phi0
+      type(seat_springs_t) :: e
+      type(body_state_t) :: st
+      type(seat_frame_t) :: fr
+      e%name = 'seat'
+      e%title = 'seat springs (C.4.d)'
+      e%p = p
+      e%l7 = body%length(7)
+      e%l8 = body%length(8)
+      e%y_zo = p%z0*tan(p%gamma0)
+      e%n_aux = 2
+      e%needs_vehicle = .true.
+      e%has_memory = .true.
+      e%has_energy = .true.
+      st = rest_state(z0, phi0)
+      fr = seat_frame(st, e%l7)
+      e%mem%case = seat_case(p%z0, p%z_hat)
+      e%mem%leg_on = e%mem%case /= case_off .and. leg_rests(fr, p%z0, e%l8)
+      e%mem%k_hat = secant(p%beta, 0.0_wp)
+      e%mem%slip = 0
+      call static_loads(body, g, z0, phi0, p%z0, e%w_pred, e%fps_pred)
+   end function seat_springs_effect
+
+   !> The body at rest at z0 in a vehicle at rest at pitch phi0.
+   pure function rest_state(z0, phi0) result(st)
+      real(wp), intent(in) :: z0(n_dof), phi0
+      type(body_state_t) :: st
+      st%t = 0.0_wp
+      st%z = z0
+      st%zdot = 0.0_wp
+      st%c = cos(z0(1:n_seg))
+      st%s = sin(z0(1:n_seg))
+      st%vehicle%pos = [0.0_wp, 0.0_wp, phi0]
+      st%vehicle%vel = 0.0_wp
+      st%vehicle%acc = 0.0_wp
+   end function rest_state
+
+   !> The static loads on the hip and the front edge that hold the body, as
+   !! one rigid piece in the posture z0, in equilibrium under gravity
+   !! (vertical forces and moments about the hip; the horizontal component of
+   !! the front-edge force is left to the friction). What W_o and F'_so
+   !! should be for this occupant (A-S2); zero F'_so when the leg does not
+   !! rest on the edge.
+   subroutine static_loads(body, g, z0, phi0, x_e, w, fps)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: g, z0(n_dof), phi0, x_e
+      real(wp), intent(out) :: w, fps
+      type(body_state_t) :: st
+      type(seat_frame_t) :: fr
+      type(leg_line_t) :: ln
+      type(point_state_t) :: cg
+      real(wp) :: moment, zero10(n_dof), dx, dy
+      integer :: i
+      st = rest_state(z0, phi0)
+      fr = seat_frame(st, body%length(7))
+      zero10 = 0.0_wp
+      moment = 0.0_wp
+      do i = 1, n_seg
+         cg = segment_cg_state(body, z0, zero10, zero10, i)
+         dx = cg%x - z0(hip_x)
+         dy = cg%y - z0(hip_y)
+         ! gravity g (sin Phi, -cos Phi) in the interior frame; its moment about the hip
+         moment = moment - g*body%mass(i)*((dx*fr%c_phi - dy*fr%s_phi)*fr%c_phi + (dx*fr%s_phi + dy*fr%c_phi)*fr%s_phi)
+      end do
+      fps = 0.0_wp
+      if (leg_rests(fr, x_e, body%length(8))) then
+         ln = leg_line(fr, leg_branch(fr, x_e), x_e, 0.0_wp, 0.0_wp, body%length(7))
+         ! the moment about the hip of F'_s (-tan phi, 1) at the crossing is F'_s
+         ! times the sum of dh/d alpha over the leg (a rotation of the whole body)
+         fps = max(0.0_wp, -moment/sum(ln%dh(1:n_seg)))
+      end if
+      w = sum(body%mass)*g*fr%c_phi - fps
+   end subroutine static_loads
+
+   !> Case B's spring constant: the secant beta(d)/d of the hip polynomial at
+   !! the switch (A-S4), so that the hip force is continuous there; its limit
+   !! beta_1 for a hip that is not pressed in.
+   pure real(wp) function secant(beta, d)
+      real(wp), intent(in) :: beta(3), d
+      real(wp) :: dp
+      dp = max(d, 0.0_wp)
+      secant = beta(1) + dp*(beta(2) + dp*beta(3))
+   end function secant
+
+   !> Figure 12 (reconstructed) at state st with memory mem.
+   pure function springs_state(this, st, mem) result(s)
+      class(seat_springs_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      type(seat_memory_t), intent(in) :: mem
+      type(springs_state_t) :: s
+      real(wp) :: fe(2)
+      s%fr = seat_frame(st, this%l7)
+      s%case = mem%case
+      s%z = this%p%z0 - s%fr%x1                     ! C.4.d, z = z_o - x_1
+      s%d = -s%fr%y1                                ! hip compression (A-S3)
+      s%d_dot = -s%fr%y1dot
+      s%leg = mem%leg_on .and. mem%case /= case_off
+      if (mem%case == case_off) return
+      associate (beta => this%p%beta, d => s%d)
+         if (d > 0.0_wp) then
+            if (mem%case == case_a) then
+               ! C.4.d, sum beta_m d^m (A-S3) and its energy sum beta_m d^{m+1}/(m+1) (E6-1)
+               s%f_el = d*(beta(1) + d*(beta(2) + d*beta(3)))
+               s%e_hip = d**2*(beta(1)/2.0_wp + d*(beta(2)/3.0_wp + d*beta(3)/4.0_wp))
+            else
+               ! case B: the linear spring of the front region (A-S4)
+               s%f_el = mem%k_hat*d
+               s%e_hip = 0.5_wp*mem%k_hat*d**2
+            end if
+            ! with the damper c_s; a cushion never pulls
+            s%f_s = max(0.0_wp, s%f_el + this%p%c_s*s%d_dot)
+         end if
+      end associate
+      if (s%leg) then
+         ! the front-edge spring on the leg line at x = z_o (A-S1, A-S2)
+         s%ln = leg_line(s%fr, leg_branch(s%fr, this%p%z0), this%p%z0, 0.0_wp, 0.0_wp, this%l7)
+         s%delta_e = this%y_zo - s%ln%h
+         s%fp_s = this%p%s*max(s%delta_e, 0.0_wp)
+         s%e_edge = 0.5_wp*this%p%s*max(s%delta_e, 0.0_wp)**2
+      end if
+      ! C.4.d friction at the hip, A-S4, A-f
+      s%f = hip_friction(this%p%mu, s%f_s + s%fp_s, mem%slip)
+      ! dissipated: damper and the clip of the hip force, (F_s - beta(d)) d' >= 0; friction f x_1' >= 0
+      s%dissipation = (s%f_s - s%f_el)*s%d_dot + s%f*s%fr%x1dot
+      ! supplied by the vehicle: the seat forces at the vehicle's material points
+      fe = s%fp_s*[-s%ln%tan_phi, 1.0_wp]
+      s%supply = vehicle_power(s%fr, [-s%f, s%f_s], [s%fr%x1, s%fr%y1]) + &
+                 vehicle_power(s%fr, fe, [this%p%z0, s%ln%h])
+   end function springs_state
+
+   pure subroutine springs_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(seat_springs_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      type(springs_state_t) :: s
+      associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
+      end associate
+      s = springs_state(this, st, this%mem)
+      ! C.4.d: S_1..S_6 = 0; S_7, S_8 = F'_s dy_z/d alpha; S_9, S_10: the hip
+      ! forces (F_s, -f) rotated by Phi plus F'_s d(y_1 + y_z)/dx_h, /dy_h
+      call add_hip_force(s%fr, [-s%f, s%f_s], b)
+      b = b + s%fp_s*s%ln%dh
+      aux_rate(1) = s%dissipation
+      aux_rate(2) = s%supply
+   end subroutine springs_add_forces
+
+   !> Figure 12's decisions on an accepted step: the case (off, A, B), the
+   !! leg on the front edge, case B's spring constant, the hip sliding or
+   !! not; the stored energy a switch changes goes to the switching account,
+   !! and the stepper restarts (the right-hand side jumps only here, so no
+   !! step straddles a jump: docs/seat.md).
+   subroutine springs_accept(this, st, extra, aux, result)
+      class(seat_springs_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(accept_result_t), intent(inout) :: result
+      type(seat_memory_t) :: new
+      type(springs_state_t) :: before, after
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      before = springs_state(this, st, this%mem)
+      new = this%mem
+      new%case = seat_case(before%z, this%p%z_hat)
+      new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l8)
+      if (new%case == case_b .and. this%mem%case /= case_b) new%k_hat = secant(this%p%beta, before%d)
+      new%slip = 0
+      if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
+      if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip) return
+      after = springs_state(this, st, new)
+      new%e_switch = this%mem%e_switch + (before%e_hip + before%e_edge) - (after%e_hip + after%e_edge)
+      this%mem = new
+      result%restart = .true.
+   end subroutine springs_accept
+
+   pure subroutine springs_energy(this, st, extra, aux, e)
+      class(seat_springs_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      type(springs_state_t) :: s
+      associate (u1 => size(extra))
+      end associate
+      s = springs_state(this, st, this%mem)
+      e(energy_stored) = s%e_hip + s%e_edge
+      e(energy_dissipated) = aux(1) + this%mem%e_switch
+      e(energy_supplied) = aux(2)
+   end subroutine springs_energy
+
+   function springs_outputs(this) result(series)
+      class(seat_springs_t), intent(in) :: this
+      type(output_series_t), allocatable :: series(:)
+      associate (unused => this%name)
+      end associate
+      allocate (series(3))
+      series(1) = series_new('loads', 'SEAT LOADS (C.4.d)', 'seat forces on the body: F_s up at the hip, F''_s the ' &
+                             //'vertical and Fp_x the horizontal component of the front-edge force normal to the ' &
+                             //'leg (A-S1), f the friction magnitude (the force is -f along the interior x)', 2)
+      series(1)%col = [column('F_s', 'lb'), column('Fp_s', 'lb'), column('Fp_x', 'lb'), column('f', 'lb')]
+      series(2) = series_new('geometry', 'SEAT GEOMETRY (C.4.d, FIGURES 11-12)', 'case (0 off the seat, 1 A, 2 B: ' &
+                             //'within z-hat of the front edge), leg on the front edge (0 none, 7 thigh, 8 shank), ' &
+                             //'z = z_o - x_1, hip compression d = -y_1, front-edge compression y_zo - y_1 - y_z, ' &
+                             //'y_z, the spring constant of case B', 3)
+      series(2)%col = [column('case', '-'), column('leg', '-'), column('z', 'in'), column('d_hip', 'in'), &
+                       column('d_edge', 'in'), column('y_z', 'in'), column('k_hat', 'lb/in')]
+      series(3) = series_new('energy', 'SEAT ENERGIES (C.6)', 'stored in the hip and front-edge springs, ' &
+                             //'dissipated by the damper and friction, moved out of the springs by the switches ' &
+                             //'of figure 12, supplied by the vehicle through the seat', 3)
+      series(3)%col = [column('hip_spring', 'in*lb'), column('edge_spring', 'in*lb'), column('damp_frict', 'in*lb'), &
+                       column('switching', 'in*lb'), column('supplied', 'in*lb')]
+   end function springs_outputs
+
+   pure subroutine springs_output_values(this, item, st, extra, aux, values)
+      class(seat_springs_t), intent(in) :: this
+      integer, intent(in) :: item
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: values(:)
+      type(springs_state_t) :: s
+      integer :: leg
+      associate (u1 => size(extra))
+      end associate
+      s = springs_state(this, st, this%mem)
+      leg = 0
+      if (s%leg) leg = s%ln%seg
+      select case (item)
+      case (1)
+         values = [s%f_s, s%fp_s, -s%fp_s*s%ln%tan_phi, s%f]
+      case (2)
+         values = [real(s%case, wp), real(leg, wp), s%z, s%d, s%delta_e, s%ln%h - s%fr%y1, this%mem%k_hat]
+      case default
+         values = [s%e_hip, s%e_edge, aux(1), this%mem%e_switch, aux(2)]
+      end select
+   end subroutine springs_output_values
+
+   function springs_describe(this) result(text)
+      class(seat_springs_t), intent(in) :: this
+      character(len=:), allocatable :: text
+      text = trim(this%title)//': z_o '//r1(this%p%z0)//', z-hat '//r1(this%p%z_hat)//' in, gamma_o ' &
+             //r1(this%p%gamma0/deg)//' deg, mu '//r1(this%p%mu)//'; static loads W_o ' &
+             //r1(this%w_pred)//', F''_so '//r1(this%fps_pred)//' lb'
+      if (this%p%w0 > 0.0_wp .or. this%p%fps0 > 0.0_wp) text = text//' (deck '//r1(this%p%w0)//', '//r1(this%p%fps0)//')'
+      text = text(1:min(len(text), 128))
+   contains
+      function r1(x) result(t)
+         real(wp), intent(in) :: x
+         character(len=:), allocatable :: t
+         t = num(anint(10.0_wp*x)/10.0_wp)
+      end function r1
+   end function springs_describe
+end module seat_springs
