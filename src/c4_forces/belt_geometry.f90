@@ -29,7 +29,7 @@ module belt_geometry
 
    public :: belt_section_geometry_t, belt_kinematics_t, belt_body_t
    public :: belt_lap, belt_torso, lap_belt_geometry, torso_belt_geometry, belt_kinematics
-   public :: belt_body_from
+   public :: belt_body_from, belt_body_of_state
 
    !> Kinds of belt section.
    integer, parameter :: belt_lap = 1, belt_torso = 2
@@ -78,6 +78,42 @@ contains
       bb%length = length(1:2)
       bb%phi = phi
    end function belt_body_from
+
+   !> The belt data of the body at (z, z') in a vehicle at vpos = (x_c, y_c,
+   !! Phi) moving at vvel (the start of C.4): joints 1-3 from the hip along
+   !! L_1 and L_2 (section B), rotated into the interior frame, their rates
+   !! with the -y Phi', +x Phi' terms of the rotating frame. c, s: cos and
+   !! sin of alpha_1..alpha_8. The same as body_kinematics' joint_state and
+   !! to_interior (test_belts: test_body_data_matches_kinematics), without
+   !! their sines and cosines.
+   pure function belt_body_of_state(length, z, zdot, c, s, vpos, vvel) result(bb)
+      real(wp), intent(in) :: length(n_seg), z(n_dof), zdot(n_dof), c(n_seg), s(n_seg), vpos(3), vvel(3)
+      type(belt_body_t) :: bb
+      real(wp) :: p(2, 3), v(2, 3), cp, sp, dx, dy, dvx, dvy
+      integer :: k
+      p(:, 1) = [z(hip_x), z(hip_y)]
+      v(:, 1) = [zdot(hip_x), zdot(hip_y)]
+      do k = 1, 2
+         p(:, k + 1) = p(:, k) + length(k)*[c(k), s(k)]
+         v(:, k + 1) = v(:, k) + length(k)*zdot(k)*[-s(k), c(k)]
+      end do
+      cp = cos(vpos(3))
+      sp = sin(vpos(3))
+      do k = 1, 3
+         dx = p(1, k) - vpos(1)
+         dy = p(2, k) - vpos(2)
+         dvx = v(1, k) - vvel(1)
+         dvy = v(2, k) - vvel(2)
+         bb%joint(1, k) = dx*cp - dy*sp
+         bb%joint(2, k) = dx*sp + dy*cp
+         bb%joint_rate(1, k) = dvx*cp - dvy*sp - bb%joint(2, k)*vvel(3)
+         bb%joint_rate(2, k) = dvx*sp + dvy*cp + bb%joint(1, k)*vvel(3)
+      end do
+      bb%theta = z(1:3) + vpos(3)          ! theta_i = alpha_i + Phi (section B)
+      bb%theta_rate = zdot(1:3) + vvel(3)
+      bb%length = length(1:2)
+      bb%phi = vpos(3)
+   end function belt_body_of_state
 
    !> C.2 for the lap belt (j = 1): the anchor at ℓ'_0 from the initial hip
    !! in the direction −e(φ'_0) (φ'_0 points from the anchor to the hip:
