@@ -561,14 +561,14 @@ contains
 
       t(g_beltoptions)%name = 'BELTOPTIONS'
       t(g_beltoptions)%title = 'Belt options (C.4.e, section A)'
-      t(g_beltoptions)%note = 'COUPLING: INDEPENDENT, every section its own tension (the report''s phase two); ' &
+      t(g_beltoptions)%note = 'COUPLING: SEPARATE, every section its own tension (the report''s phase two); ' &
          //'TORSO, the two torso sections one tension (the webbing slides over the chest); ALL, the three ' &
          //'sections one tension (one webbing sliding through buckle and D-ring: the deformations add). ' &
          //'LAPSIDES = 2 gives the lap belt''s two sides their own anchorages (*BELTS 1 and 4), each ' &
          //'carrying half of the lap belt''s law. ITER bounds the iterations of the shared-deflection ' &
          //'search (belt and abdomen or chest in series); a search that does not converge ends the run.'
       call set_fields(t(g_beltoptions), [ &
-         word_field('COUPLING', 'INDEPENDENT|TORSO|ALL', blank_default, 'sections sharing one tension'), &
+         word_field('COUPLING', 'SEPARATE|TORSO|ALL', blank_default, 'sections sharing one tension'), &
          int_field('LAPSIDES', blank_default, 1, 1, 2, 'lap belt sides modelled: 1 lumped, 2 each its own'), &
          int_field('ITER', blank_default, 60, 1, 1000, 'iteration limit of the shared deflection')])
       t(g_beltoptions)%field(1)%default = real(1, wp)

@@ -180,7 +180,7 @@ module model
    !! of the report): each its own (the report's phase two), the two torso
    !! sections one, all three one.
    integer, parameter :: coupling_independent = 1, coupling_torso = 2, coupling_all = 3
-   character(len=12), parameter :: coupling_name(3) = [character(len=12) :: 'INDEPENDENT', 'TORSO', 'ALL']
+   character(len=12), parameter :: coupling_name(3) = [character(len=12) :: 'SEPARATE', 'TORSO', 'ALL']
 
    !> The belts' geometry (Table 2, C.2) and options. Lengths in, angles rad.
    type :: belts_section_t

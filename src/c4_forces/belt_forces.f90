@@ -330,7 +330,7 @@ contains
       class(belt_effect_t), intent(in) :: this
       type(output_series_t), allocatable :: series(:)
       integer :: k, c
-      character(len=:), allocatable :: t
+      character(len=:), allocatable :: t, l
       t = upper(trim(this%title))
       allocate (series(5))
       series(out_force) = series_new('force', t//': TENSION', 'tension F of each section (lb), the force ' &
@@ -347,10 +347,9 @@ contains
       series(out_energy) = series_new('energy', t//': ENERGIES', 'per section: stored and dissipated energy ' &
                                       //'of the webbing and of the body surface (C.6, E6-2); per chain: the ' &
                                       //'work supplied by the vehicle through the anchorages', 3)
-      allocate (series(out_force)%col(0), series(out_angle)%col(0), series(out_deformation)%col(0), &
-                series(out_rate)%col(0), series(out_energy)%col(0))
       do k = 1, this%n_sections
-         associate (l => trim(this%label(k)))
+         l = trim(this%label(k))
+         block
             series(out_force)%col = [series(out_force)%col, column(l, 'lb')]
             series(out_angle)%col = [series(out_angle)%col, column(l, 'rad', 'deg', 1.0_wp/deg)]
             series(out_deformation)%col = [series(out_deformation)%col, column(l//'_nominal', 'in'), &
@@ -360,7 +359,7 @@ contains
             series(out_energy)%col = [series(out_energy)%col, column(l//'_belt_ce', 'in*lb'), &
                                       column(l//'_belt_de', 'in*lb'), column(l//'_body_ce', 'in*lb'), &
                                       column(l//'_body_de', 'in*lb')]
-         end associate
+         end block
       end do
       do c = 1, this%n_chains
          series(out_energy)%col = [series(out_energy)%col, &
