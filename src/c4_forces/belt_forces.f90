@@ -29,6 +29,13 @@
 !!
 !! Memory (figure 18: cycle, turning point, residual deformation of every
 !! element) changes only in accept, from the accepted state.
+!!
+!! Each chain integrates one more auxiliary quantity: the unknown of its
+!! shared-deflection search (the first element's deformation, or the force
+!! when three or more elements share it), whose rate the split gives. It is
+!! only the search's start: from it one or two Newton steps reach the
+!! tolerance, where the bracket's ends would take several; the forces do not
+!! depend on it (docs/belts.md 3).
 module belt_forces
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: wp, deg
@@ -157,7 +164,7 @@ contains
       e%n_aux = 0
       do c = 1, e%n_chains
          e%chain(c)%aux_offset = e%n_aux
-         e%n_aux = e%n_aux + n_loading_aux*e%chain(c)%n_elements + 1
+         e%n_aux = e%n_aux + n_loading_aux*e%chain(c)%n_elements + 2   ! elements, supplied, start
          do j = 1, e%chain(c)%n_elements
             e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%chain(c)%law(j))
          end do
@@ -218,10 +225,12 @@ contains
       end subroutine add_chain
    end function belt_effect
 
-   !> Kinematics and splits of every section and chain at a state.
-   pure function belt_section_state(this, st) result(bs)
+   !> Kinematics and splits of every section and chain at a state (aux: the
+   !! effect's auxiliary quantities, for the searches' starts).
+   pure function belt_section_state(this, st, aux) result(bs)
       class(belt_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: aux(:)
       type(belt_state_t) :: bs
       type(belt_body_t) :: bb
       integer :: k, c, q
@@ -238,39 +247,58 @@ contains
                bs%s_dot(c) = bs%s_dot(c) + bs%kin(k)%delta_rate
                bs%g(:, c) = bs%g(:, c) + bs%kin(k)%gradient
             end do
-            call chain_split(ch%n_elements, ch%law, ch%mem, bs%s(c), bs%s_dot(c), this%max_iter, bs%split(c))
+            call chain_split(ch%n_elements, ch%law, ch%mem, bs%s(c), bs%s_dot(c), this%max_iter, bs%split(c), &
+                             aux(ch%aux_offset + n_loading_aux*ch%n_elements + 2))
          end associate
       end do
    end function belt_section_state
 
    !> B = -F sum_j d(delta_j)/dz per chain (C.4.e, BE-1), and the rates of the
    !! auxiliary quantities: per element W, E_abs, D_v (E6-2), per chain the
-   !! supplied work F (s' - g . z'). A split that fails makes its rates NaN:
-   !! the system reports the evaluation as failed, with failure_text.
+   !! supplied work F (s' - g . z') and the search's start. A split that
+   !! fails makes its rates NaN: the system reports the evaluation as
+   !! failed, with failure_text. (Written out rather than through
+   !! belt_section_state: it runs at every evaluation.)
    pure subroutine belt_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
       class(belt_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: extra_rate(:), aux_rate(:)
-      type(belt_state_t) :: bs
-      integer :: c, n, a
-      real(wp) :: f
-      associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
+      type(belt_body_t) :: bb
+      type(belt_kinematics_t) :: kin
+      type(chain_split_t) :: sp
+      real(wp) :: s, s_dot, g(n_dof), f
+      integer :: c, n, a, q
+      associate (u1 => size(extra), u2 => size(extra_rate))
       end associate
-      bs = belt_section_state(this, st)
+      bb = belt_body_of_state(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel)
       do c = 1, this%n_chains
-         n = this%chain(c)%n_elements
-         a = this%chain(c)%aux_offset
-         if (bs%split(c)%status /= split_ok) then
-            aux_rate(a + 1:a + n_loading_aux*n + 1) = ieee_value(0.0_wp, ieee_quiet_nan)
-            cycle
-         end if
-         f = bs%split(c)%force
-         b = b - f*bs%g(:, c)
-         aux_rate(a + 1:a + n_loading_aux*n) = reshape(bs%split(c)%aux_rate(:, 1:n), [n_loading_aux*n])
-         ! the work of the moving anchorages: F times the deformation rate at fixed z
-         aux_rate(a + n_loading_aux*n + 1) = f*(bs%s_dot(c) - dot_product(bs%g(:, c), st%zdot))
+         associate (ch => this%chain(c))
+            ! the chain's deformation: its sections' nominal deformations less their slack
+            s = -ch%slack
+            s_dot = 0.0_wp
+            g = 0.0_wp
+            do q = 1, ch%n_sections
+               kin = belt_kinematics(this%geom(ch%section(q)), bb, angle=.false.)
+               s = s + kin%delta
+               s_dot = s_dot + kin%delta_rate
+               g = g + kin%gradient
+            end do
+            n = ch%n_elements
+            a = ch%aux_offset
+            call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, aux(a + n_loading_aux*n + 2))
+            if (sp%status /= split_ok) then
+               aux_rate(a + 1:a + n_loading_aux*n + 2) = ieee_value(0.0_wp, ieee_quiet_nan)
+               cycle
+            end if
+            f = sp%force
+            b = b - f*g
+            aux_rate(a + 1:a + n_loading_aux*n) = reshape(sp%aux_rate(:, 1:n), [n_loading_aux*n])
+            ! the work of the moving anchorages: F times the deformation rate at fixed z
+            aux_rate(a + n_loading_aux*n + 1) = f*(s_dot - dot_product(g, st%zdot))
+            aux_rate(a + n_loading_aux*n + 2) = sp%guess_rate
+         end associate
       end do
    end subroutine belt_add_forces
 
@@ -285,9 +313,9 @@ contains
       type(belt_state_t) :: bs
       integer :: c, i
       logical :: changed
-      associate (u1 => size(extra) + size(aux))
+      associate (u1 => size(extra))
       end associate
-      bs = belt_section_state(this, st)
+      bs = belt_section_state(this, st, aux)
       do c = 1, this%n_chains
          if (bs%split(c)%status /= split_ok) cycle
          associate (ch => this%chain(c))
@@ -389,7 +417,7 @@ contains
       associate (u1 => size(extra))
       end associate
       values = 0.0_wp
-      bs = belt_section_state(this, st)
+      bs = belt_section_state(this, st, aux)
       do k = 1, this%n_sections
          c = this%chain_of(k)
          q = this%position(k)
@@ -451,10 +479,10 @@ contains
       character(len=:), allocatable :: text
       type(belt_state_t) :: bs
       integer :: c
-      associate (u1 => size(extra) + size(aux))
+      associate (u1 => size(extra))
       end associate
       text = ''
-      bs = belt_section_state(this, st)
+      bs = belt_section_state(this, st, aux)
       do c = 1, this%n_chains
          if (bs%split(c)%status == split_ok) cycle
          text = trim(this%title)//', '//trim(this%label(this%chain(c)%section(1)))//': ' &

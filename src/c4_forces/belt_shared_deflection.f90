@@ -76,16 +76,20 @@ module belt_shared_deflection
       logical :: loading = .false.  !< on a loading branch (E_abs counts while x' > 0)
    end type branch_point_t
 
-   !> A chain's split at one state.
+   !> A chain's split at one state. The arrays are defined for the chain's
+   !! n elements only (chain_split sets them; no default initialization,
+   !! which would cost as much as a split at every evaluation).
    type :: chain_split_t
       integer :: status = split_ok
       integer :: region = region_slack
       integer :: iterations = 0              !< force evaluations of the search
       real(wp) :: force = 0.0_wp             !< F, the chain's force (every element carries it)
       real(wp) :: branch = 0.0_wp            !< F_b, its rate-independent part
-      real(wp) :: x(max_chain) = 0.0_wp      !< element deformations
-      real(wp) :: rate(max_chain) = 0.0_wp   !< their rates
-      real(wp) :: aux_rate(n_loading_aux, max_chain) = 0.0_wp  !< W', E_abs', D_v' per element
+      real(wp) :: guess = 0.0_wp             !< the unknown of the search: x_1 (two elements) or F_b
+      real(wp) :: guess_rate = 0.0_wp        !< its rate, for a start value integrated with the motion
+      real(wp) :: x(max_chain)               !< element deformations
+      real(wp) :: rate(max_chain)            !< their rates
+      real(wp) :: aux_rate(n_loading_aux, max_chain)  !< W', E_abs', D_v' per element
    end type chain_split_t
 
    !> A bracketed, safeguarded Newton search for the root of a
@@ -167,6 +171,46 @@ contains
 
    ! --- one element --------------------------------------------------------
 
+   !> F_e(d) and dF_e/dd of a curve at once (the value as loading_curves'
+   !! curve_elastic_force computes it, the right derivative; 0 and 0 for
+   !! d <= 0): one search of a table for both.
+   pure subroutine curve_value_slope(c, d, f, k)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: d
+      real(wp), intent(out) :: f, k
+      integer :: n, lo, hi, mid
+      f = 0.0_wp
+      k = 0.0_wp
+      if (.not. d > 0.0_wp) return
+      select case (c%form)
+      case (curve_polynomial)
+         ! Tables 2, 4: F_e = sum sigma_n d**n and its derivative (Horner)
+         do n = c%order, 1, -1
+            k = k*d + f + c%sigma(n)
+            f = (f + c%sigma(n))*d
+         end do
+      case (curve_table)
+         lo = 1
+         hi = size(c%defl)
+         if (d >= c%defl(hi)) then
+            lo = hi - 1
+         else
+            do while (hi - lo > 1)
+               mid = (lo + hi)/2
+               if (c%defl(mid) <= d) then
+                  lo = mid
+               else
+                  hi = mid
+               end if
+            end do
+         end if
+         k = (c%force(lo + 1) - c%force(lo))/(c%defl(lo + 1) - c%defl(lo))
+         f = c%force(lo) + k*(d - c%defl(lo))
+      end select
+      f = max(f, 0.0_wp)
+      k = max(k, 0.0_wp)
+   end subroutine curve_value_slope
+
    !> dF_e/dd of a curve (right derivative; 0 for d <= 0).
    pure real(wp) function curve_slope(c, d) result(k)
       type(loading_curve_t), intent(in) :: c
@@ -213,9 +257,7 @@ contains
       if (law%elastic .or. .not. mem%unloading .or. x >= mem%delta_max) then
          ! the loading curve of cycle n: F_e(x - eps_n)
          bp%loading = .true.
-         bp%force = curve_elastic_force(law%curve, x - mem%eps)
-         bp%slope = curve_slope(law%curve, x - mem%eps)
-         if (.not. bp%force > 0.0_wp) bp%slope = max(bp%slope, 0.0_wp)
+         call curve_value_slope(law%curve, x - mem%eps, bp%force, bp%slope)
       else if (law%plastic .or. .not. x > mem%delta_zero) then
          bp%loading = .false.
          bp%force = 0.0_wp
@@ -226,8 +268,7 @@ contains
          span = mem%delta_max - mem%delta_zero
          dm = mem%delta_max - mem%eps
          xi = (x - mem%delta_zero)/span
-         fe = curve_elastic_force(law%curve, xi*dm)
-         se = curve_slope(law%curve, xi*dm)
+         call curve_value_slope(law%curve, xi*dm, fe, se)
          if (mem%p > 0.0_wp) then
             xp = xi**mem%p
             bp%force = fe*xp
@@ -283,18 +324,25 @@ contains
    !! deformation s (slack taken out) and its rate s_dot. max_iter bounds the
    !! force evaluations of each search; a search that does not converge
    !! gives status split_no_convergence (and the forces of the last iterate),
-   !! one that meets a value that is not finite split_not_finite.
-   pure subroutine chain_split(n, law, mem, s, s_dot, max_iter, split)
+   !! one that meets a value that is not finite split_not_finite. guess: a
+   !! start for the search's unknown (split%guess of a nearby state, e.g.
+   !! integrated with the motion from split%guess_rate); the result does not
+   !! depend on it beyond the tolerance, only the number of iterations does.
+   pure subroutine chain_split(n, law, mem, s, s_dot, max_iter, split, guess)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
       real(wp), intent(in) :: s, s_dot
       integer, intent(in) :: max_iter
       type(chain_split_t), intent(out) :: split
+      real(wp), intent(in), optional :: guess
       real(wp) :: z(max_chain), zsum, slope(max_chain), w(max_chain), fv(max_chain), fv_chain, lambda
       logical :: loading(max_chain)
       integer :: i
 
+      split%x(1:n) = 0.0_wp
+      split%rate(1:n) = 0.0_wp
+      split%aux_rate(:, 1:n) = 0.0_wp
       if (.not. (ieee_is_finite(s) .and. ieee_is_finite(s_dot))) then
          split%status = split_not_finite
          return
@@ -312,6 +360,10 @@ contains
          split%region = region_unloaded
          split%x(1:n) = s*z(1:n)/zsum
          split%rate(1:n) = s_dot*z(1:n)/zsum
+         if (n < 3) then
+            split%guess = split%x(1)
+            split%guess_rate = split%rate(1)
+         end if
          return
       end if
 
@@ -326,15 +378,25 @@ contains
          end associate
          split%iterations = 1
       case (2)
-         call pair_split(law, mem, s, z, max_iter, split, slope, loading)
+         call pair_split(law, mem, s, z, max_iter, split, slope, loading, guess)
       case default
-         call chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading)
+         call chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess)
       end select
       if (split%status /= split_ok) return
 
       ! the rate split: x_i' = w_i s', the compliances' shares
       call rate_weights(n, slope, w)
       split%rate(1:n) = w(1:n)*s_dot
+      if (n < 3) then
+         split%guess = split%x(1)
+         split%guess_rate = split%rate(1)
+      else
+         ! dF_b/dt = k_i x_i' (any element with a slope; 0 when all are flat)
+         split%guess = split%branch
+         split%guess_rate = 0.0_wp
+         i = maxloc(slope(1:n), 1)
+         if (slope(i) > min_slope) split%guess_rate = slope(i)*split%rate(i)
+      end if
       ! the chain's rate term: the weighted mean of the elements' at their rates
       do i = 1, n
          fv(i) = curve_rate_force(law(i)%curve, split%rate(i))
@@ -375,7 +437,7 @@ contains
    !> Two elements: x_1 = e in [z_1, s - z_2] where g(e) = F_1(e) - F_2(s - e)
    !! = 0, g' = k_1 + k_2 >= 0 (g(z_1) < 0 < g(s - z_2)). First point: the
    !! secant through the bracket's ends (exact for linear branches).
-   pure subroutine pair_split(law, mem, s, z, max_iter, split, slope, loading)
+   pure subroutine pair_split(law, mem, s, z, max_iter, split, slope, loading, guess)
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
       real(wp), intent(in) :: s, z(:)
@@ -383,17 +445,26 @@ contains
       type(chain_split_t), intent(inout) :: split
       real(wp), intent(out) :: slope(:)
       logical, intent(out) :: loading(:)
+      real(wp), intent(in), optional :: guess
       type(root_search_t) :: r
       type(branch_point_t) :: b1, b2
       real(wp) :: lo, hi, f2_lo, f1_hi, x0, f_low, f_high
       lo = z(1)
       hi = s - z(2)
-      b2 = branch_at(law(2), mem(2), s - lo)
-      b1 = branch_at(law(1), mem(1), hi)
-      f2_lo = b2%force
-      f1_hi = b1%force
-      x0 = 0.5_wp*(lo + hi)
-      if (f2_lo + f1_hi > 0.0_wp) x0 = lo + (hi - lo)*f2_lo/(f2_lo + f1_hi)
+      split%iterations = 0
+      if (present(guess)) then
+         ! a start from a nearby state: the bracket's signs are known
+         ! (g(z_1) < 0 < g(s - z_2)), no need to evaluate its ends
+         x0 = guess
+      else
+         b2 = branch_at(law(2), mem(2), s - lo)
+         b1 = branch_at(law(1), mem(1), hi)
+         f2_lo = b2%force
+         f1_hi = b1%force
+         x0 = 0.5_wp*(lo + hi)
+         if (f2_lo + f1_hi > 0.0_wp) x0 = lo + (hi - lo)*f2_lo/(f2_lo + f1_hi)
+         split%iterations = 2
+      end if
       call root_begin(r, lo, hi, x0, defl_tol*s, force_tol, max_iter)
       do
          b1 = branch_at(law(1), mem(1), r%x)
@@ -401,7 +472,7 @@ contains
          call root_update(r, b1%force - b2%force, b1%slope + b2%slope, max(b1%force, b2%force))
          if (r%state /= root_running) exit
       end do
-      split%iterations = r%iterations + 2
+      split%iterations = split%iterations + r%iterations
       if (r%state == root_not_finite) then
          split%status = split_not_finite
          return
@@ -431,7 +502,7 @@ contains
    !! deformation at force F (each an inner search on [z_i, s - sum z + z_i]),
    !! h' = sum 1/k_i. Where the bracket closes on a flat branch or a jump,
    !! the deformations are interpolated between its ends so that they add up.
-   pure subroutine chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading)
+   pure subroutine chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
@@ -440,6 +511,7 @@ contains
       type(chain_split_t), intent(inout) :: split
       real(wp), intent(out) :: slope(:)
       logical, intent(out) :: loading(:)
+      real(wp), intent(in), optional :: guess
       type(root_search_t) :: r
       real(wp) :: x_max(max_chain), secant(max_chain), f_max(max_chain), f_hi, f0, h, dh, x(max_chain)
       real(wp) :: x_lo(max_chain), x_hi(max_chain), h_lo, h_hi, theta
@@ -455,7 +527,8 @@ contains
       split%iterations = n
       f_hi = maxval(f_max(1:n))
       ! first point: the secants in series
-      f0 = (s - sum(z(1:n)))/sum(1.0_wp/max(secant(1:n), tiny(1.0_wp)))
+      f0 = (s - sum(z(1:n)))/sum(1.0_wp/max(secant(1:n), min_slope))
+      if (present(guess)) f0 = guess
       call root_begin(r, 0.0_wp, f_hi, f0, defl_tol*f_hi, defl_tol, max_iter)
       do
          call deformations_at(r%x, x, h, dh, status, split%iterations)
@@ -508,7 +581,7 @@ contains
                xs(k) = z(k)
                b = branch_at(law(k), mem(k), z(k))
             else
-               call root_begin(q, z(k), x_max(k), z(k) + f/max(secant(k), tiny(1.0_wp)), defl_tol*s, &
+               call root_begin(q, z(k), x_max(k), z(k) + f/max(secant(k), min_slope), defl_tol*s, &
                                force_tol, max_iter)
                do
                   b = branch_at(law(k), mem(k), q%x)
