@@ -121,8 +121,11 @@ contains
       integer, intent(in) :: max_iter
       r%lo = lo
       r%hi = hi
-      r%x = min(max(x0, lo), hi)
-      if (.not. (r%x >= lo .and. r%x <= hi)) r%x = 0.5_wp*(lo + hi)   ! x0 NaN
+      if (ieee_is_finite(x0)) then
+         r%x = min(max(x0, lo), hi)
+      else
+         r%x = 0.5_wp*(lo + hi)      ! no start (NaN, infinite): the middle
+      end if
       r%step_old = hi - lo
       r%step = hi - lo
       r%x_tol = x_tol
