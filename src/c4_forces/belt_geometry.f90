@@ -196,7 +196,7 @@ contains
       if (g%kind == belt_lap) then
          u = bb%joint(1, 1) - g%anchor(1)
          v = bb%joint(2, 1) - g%anchor(2)
-         d = hypot(u, v)
+         d = sqrt(u**2 + v**2)   ! (lengths are bounded: equations_of_motion's range guard)
          k%wrapped = d > g%h
          if (k%wrapped) then
             k%phi = asin(g%h/d) + atan2(v, u)     ! C.4.e φ_1, with atan2 (BE-2)
@@ -229,7 +229,7 @@ contains
       end if
       u = p(1) - g%anchor(1)
       v = p(2) - g%anchor(2)
-      d = hypot(u, v)
+      d = sqrt(u**2 + v**2)
       k%phi = 0.0_wp
       if (with_angle .or. g%kind == belt_lap) k%phi = atan2(v, u)   ! C.4.e φ_j, atan2 (BE-2)
       e = [u, v]/d                                 ! e(φ_j)
