@@ -143,7 +143,7 @@ contains
             e%title = 'torso belt (C.4.e)'
             call add_section(2)
             call add_section(3)
-            if (bt%coupling == coupling_torso) then
+            if (bt%coupling == coupling_torso) then      ! one tension in both torso sections (D-B3)
                e%title = 'torso belt, one tension (C.4.e)'
                call add_chain([1, 2])
             else
@@ -208,14 +208,14 @@ contains
                e%position(k) = q
                ch%slack = ch%slack + m%belts%slack(j)
                factor = 1.0_wp
-               if (two_sides .and. (j == 1 .or. j == belt_card_lap2)) factor = 0.5_wp
+               if (two_sides .and. (j == 1 .or. j == belt_card_lap2)) factor = 0.5_wp   ! each side half the law (D-B5)
                ch%n_elements = ch%n_elements + 1
                ch%webbing(q) = ch%n_elements
                jl = j
                if (j == belt_card_lap2) jl = 1          ! the lap belt's second side: the lap law
                ch%law(ch%n_elements) = scaled_law(belt_law(m%loading, jl), factor)
                l = merge(material_abdomen, material_chest, j == 1 .or. j == belt_card_lap2)
-               if (m%loading%material_curve(l) > 0) then
+               if (m%loading%material_curve(l) > 0) then       ! else the body is rigid (D-B6)
                   ch%n_elements = ch%n_elements + 1
                   ch%body(q) = ch%n_elements
                   ch%law(ch%n_elements) = scaled_law(material_law(m%materials, m%loading, l), factor)
@@ -275,7 +275,7 @@ contains
       bb = belt_body_of_state(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel)
       do c = 1, this%n_chains
          associate (ch => this%chain(c))
-            ! the chain's deformation: its sections' nominal deformations less their slack
+            ! the chain's deformation: its sections' nominal deformations less their slack (D-B1)
             s = -ch%slack
             s_dot = 0.0_wp
             g = 0.0_wp
@@ -295,9 +295,9 @@ contains
             f = sp%force
             b = b - f*g
             aux_rate(a + 1:a + n_loading_aux*n) = reshape(sp%aux_rate(:, 1:n), [n_loading_aux*n])
-            ! the work of the moving anchorages: F times the deformation rate at fixed z
+            ! the work of the moving anchorages: F times the deformation rate at fixed z (D-B4)
             aux_rate(a + n_loading_aux*n + 1) = f*(s_dot - dot_product(g, st%zdot))
-            aux_rate(a + n_loading_aux*n + 2) = sp%guess_rate
+            aux_rate(a + n_loading_aux*n + 2) = sp%guess_rate     ! the search's start (D-B7)
          end associate
       end do
    end subroutine belt_add_forces

@@ -92,7 +92,7 @@ module belt_shared_deflection
       real(wp) :: aux_rate(n_loading_aux, max_chain)  !< W', E_abs', D_v' per element
    end type chain_split_t
 
-   !> A bracketed, safeguarded Newton search for the root of a
+   !> (D-B8) A bracketed, safeguarded Newton search for the root of a
    !! nondecreasing function g on [lo, hi] with g(lo) <= 0 <= g(hi), by
    !! reverse communication: the caller evaluates g and g' at x and calls
    !! root_update until state /= root_running. A Newton step is taken when
@@ -350,7 +350,7 @@ contains
          split%status = split_not_finite
          return
       end if
-      ! slack, or no element: no force (a belt carries no compression)
+      ! slack, or no element: no force (a belt carries no compression; D-B1)
       if (.not. s > 0.0_wp .or. n < 1) return
 
       do i = 1, n
@@ -387,7 +387,7 @@ contains
       end select
       if (split%status /= split_ok) return
 
-      ! the rate split: x_i' = w_i s', the compliances' shares
+      ! the rate split: x_i' = w_i s', the compliances' shares (D-B2)
       call rate_weights(n, slope, w)
       split%rate(1:n) = w(1:n)*s_dot
       if (n < 3) then
@@ -400,7 +400,7 @@ contains
          i = maxloc(slope(1:n), 1)
          if (slope(i) > min_slope) split%guess_rate = slope(i)*split%rate(i)
       end if
-      ! the chain's rate term: the weighted mean of the elements' at their rates
+      ! the chain's rate term: the weighted mean of the elements' at their rates (D-B2)
       do i = 1, n
          fv(i) = curve_rate_force(law(i)%curve, split%rate(i))
       end do
