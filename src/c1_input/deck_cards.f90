@@ -13,7 +13,7 @@
 module deck_cards
    use kinds, only: wp, deg, g_std
    use loading_curves, only: max_order
-   use model, only: max_curves, n_belt_section
+   use model, only: max_curves, n_belt_section, n_belt_card
    implicit none
    private
 
@@ -28,6 +28,7 @@ module deck_cards
    public :: g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials, n_groups
    public :: g_loadpoly, g_loadrate, g_loadtable, g_beltloading
    public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
+   public :: g_belts, g_beltoptions
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -55,7 +56,9 @@ module deck_cards
    integer, parameter :: g_loadpoly = 20, g_loadrate = 21, g_loadtable = 22, g_beltloading = 23
    !> The seat, C.4.d (docs/seat.md).
    integer, parameter :: g_seat = 24, g_seatsprings = 25, g_seatbeam = 26, g_seatbeaminit = 27, g_seatbeams = 28
-   integer, parameter :: n_groups = 28
+   !> Belts (C.4.e, Table 2; docs/belts.md).
+   integer, parameter :: g_belts = 29, g_beltoptions = 30
+   integer, parameter :: n_groups = 30
 
    !> One field of a card.
    type :: field_spec_t
@@ -209,8 +212,8 @@ contains
 
       t(g_options)%name = 'OPTIONS'
       t(g_options)%title = 'Program options (C.1)'
-      t(g_options)%note = 'NBELT is read and checked for the belt issue to come: this version models no ' &
-         //'belts (NBELT must be 0). NLOAD selects the loading curves the deck gives: *LOADPOLY (1) or ' &
+      t(g_options)%note = 'NBELT selects the belts (C.4.e): their geometry is *BELTS, their loading ' &
+         //'*BELTLOADING, their options *BELTOPTIONS. NLOAD selects the loading curves the deck gives: *LOADPOLY (1) or ' &
          //'*LOADTABLE (2). NEND = 2 needs contact surfaces, which this version does not model yet.'
       call set_fields(t(g_options), [ &
          int_field('NBODY', blank_default, 1, 1, 3, 'occupant: 1 driver, 2 front-seat passenger, 3 rear-seat passenger'), &
@@ -450,6 +453,7 @@ contains
          int_field('CURVE', blank_default, 0, 0, max_curves, 'loading curve k (0: none)')])
 
       call loading_groups(t)
+      call belt_groups(t)
 
       call seat_groups(t)
 
@@ -613,5 +617,46 @@ contains
          real_field('XSC', 'in', one, blank_default, zero, -100.0_wp, 100.0_wp, 'cushion line point x''''_sc'), &
          real_field('YSC', 'in', one, blank_absent, zero, -100.0_wp, 100.0_wp, 'cushion line point y''''_sc')])
    end subroutine seat_groups
+
+   !> The belt groups (C.4.e, Table 2, C.2; docs/belts.md).
+   pure subroutine belt_groups(t)
+      type(group_spec_t), intent(inout) :: t(:)
+      real(wp), parameter :: big = 1.0e12_wp, zero = 0.0_wp, one_ = 1.0_wp
+
+      t(g_belts)%name = 'BELTS'
+      t(g_belts)%title = 'Belt geometry, Table 2 (C.4.e, C.2)'
+      t(g_belts)%layout = layout_indexed
+      t(g_belts)%max_index = n_belt_card
+      t(g_belts)%index_name = 'section j'
+      t(g_belts)%note = 'j: 1 lap belt, 2 torso belt at H along the centre torso from the lower-spine joint, ' &
+         //'3 torso belt at H along the upper torso from the upper-spine joint, 4 the lap belt''s second ' &
+         //'side (*BELTOPTIONS LAPSIDES = 2). The lap belt wraps the hip at radius H; its anchor lies ' &
+         //'LPRIME from the initial hip, PHIPRIME the direction from anchor to hip; its free length and ' &
+         //'angle follow (C.2, errata C2-2, C2-3). A torso section runs straight from its anchor to its ' &
+         //'belt point: LENGTH is their initial distance, PHI the direction from anchor to point (C2-1). ' &
+         //'Angles from the interior horizontal, counter-clockwise. A section carries load once its ' &
+         //'deformation exceeds SLACK. NBELT says which sections are used; *BELTLOADING their loading.'
+      call set_fields(t(g_belts), [ &
+         real_field('H', 'in', one_, blank_required, zero, zero, big, 'h_j: lap wrap radius, torso point distance'), &
+         real_field('LENGTH', 'in', one_, blank_absent, zero, zero, big, 'l_j0: torso anchor to belt point', .true.), &
+         real_field('PHI', 'deg', deg, blank_absent, zero, -360.0_wp, 360.0_wp, 'phi_j0: torso, anchor -> belt point'), &
+         real_field('LPRIME', 'in', one_, blank_absent, zero, zero, big, 'l''_0: lap anchor to initial hip', .true.), &
+         real_field('PHIPRIME', 'deg', deg, blank_absent, zero, -360.0_wp, 360.0_wp, 'phi''_0: lap, anchor -> hip'), &
+         real_field('SLACK', 'in', one_, blank_default, zero, zero, big, 'Delta_j: slack')])
+
+      t(g_beltoptions)%name = 'BELTOPTIONS'
+      t(g_beltoptions)%title = 'Belt options (C.4.e, section A)'
+      t(g_beltoptions)%note = 'COUPLING: SEPARATE, every section its own tension (the report''s phase two); ' &
+         //'TORSO, the two torso sections one tension (the webbing slides over the chest); ALL, the three ' &
+         //'sections one tension (one webbing sliding through buckle and D-ring: the deformations add). ' &
+         //'LAPSIDES = 2 gives the lap belt''s two sides their own anchorages (*BELTS 1 and 4), each ' &
+         //'carrying half of the lap belt''s law. ITER bounds the iterations of the shared-deflection ' &
+         //'search (belt and abdomen or chest in series); a search that does not converge ends the run.'
+      call set_fields(t(g_beltoptions), [ &
+         word_field('COUPLING', 'SEPARATE|TORSO|ALL', blank_default, 'sections sharing one tension'), &
+         int_field('LAPSIDES', blank_default, 1, 1, 2, 'lap belt sides modelled: 1 lumped, 2 each its own'), &
+         int_field('ITER', blank_default, 60, 1, 1000, 'iteration limit of the shared deflection')])
+      t(g_beltoptions)%field(1)%default = real(1, wp)
+   end subroutine belt_groups
 
 end module deck_cards

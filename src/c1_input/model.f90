@@ -20,6 +20,8 @@ module model
    public :: materials_section_t, loading_section_t, max_curves, n_belt_section
    public :: seat_section_t
    public :: seat_none, seat_springs, seat_rigid_beam, seat_beams, seat_form_name
+   public :: belts_section_t, n_belt_card, belt_card_lap2, coupling_independent, coupling_torso, coupling_all
+   public :: coupling_name, nbelt_lap, nbelt_torso
    public :: solver_structured, solver_dense, solver_name, astart_euler, astart_rk4, astart_name
 
    integer, parameter :: n_seg = 8     !< body segments (Table 5)
@@ -202,6 +204,30 @@ module model
       real(wp) :: x_sc = 0.0_wp, y_sc = 0.0_wp
    end type seat_section_t
 
+   !> *BELTS cards: the sections of Table 2 (j = 1 lap, 2 torso on the centre
+   !! torso, 3 torso on the upper torso) and card 4, the lap belt's second
+   !! side when *BELTOPTIONS LAPSIDES = 2 (docs/belts.md).
+   integer, parameter :: n_belt_card = 4, belt_card_lap2 = 4
+   !> How the sections share their tension (*BELTOPTIONS COUPLING; section A
+   !! of the report): each its own (the report's phase two), the two torso
+   !! sections one, all three one.
+   integer, parameter :: coupling_independent = 1, coupling_torso = 2, coupling_all = 3
+   character(len=12), parameter :: coupling_name(3) = [character(len=12) :: 'SEPARATE', 'TORSO', 'ALL']
+
+   !> The belts' geometry (Table 2, C.2) and options. Lengths in, angles rad.
+   type :: belts_section_t
+      logical :: given(n_belt_card) = .false.        !< the deck has the card
+      real(wp) :: h(n_belt_card) = 0.0_wp            !< h_j: wrap radius (lap), distance along the centre line (torso)
+      real(wp) :: length0(n_belt_card) = 0.0_wp      !< l_j0, torso sections (the lap belt's is computed, C2-2)
+      real(wp) :: phi0(n_belt_card) = 0.0_wp         !< phi_j0, torso sections, anchor -> belt point
+      real(wp) :: length_anchor(n_belt_card) = 0.0_wp  !< l'_0, lap belt: anchor to initial hip
+      real(wp) :: phi_anchor(n_belt_card) = 0.0_wp   !< phi'_0, lap belt: direction anchor -> initial hip
+      real(wp) :: slack(n_belt_card) = 0.0_wp        !< Delta_j
+      integer :: coupling = coupling_independent
+      integer :: lap_sides = 1
+      integer :: max_iter = 60                       !< iteration limit of the shared-deflection searches
+   end type belts_section_t
+
    !> The vehicle (C.1, C.3): constants, initial motion, time tables.
    type :: vehicle_section_t
       real(wp) :: mass = 0.0_wp, inertia = 0.0_wp
@@ -236,6 +262,7 @@ module model
       type(injury_section_t) :: injury
       type(materials_section_t) :: materials
       type(loading_section_t) :: loading
+      type(belts_section_t) :: belts
       type(vehicle_section_t) :: vehicle
       type(environment_section_t) :: environment
       type(end_tests_section_t) :: end_tests
@@ -244,4 +271,17 @@ module model
       type(string_t), allocatable :: warnings(:)
    end type model_t
 
+contains
+
+   !> NBELT (C.1) calls for the lap belt: 1 or 3.
+   pure logical function nbelt_lap(nbelt)
+      integer, intent(in) :: nbelt
+      nbelt_lap = nbelt == 1 .or. nbelt == 3
+   end function nbelt_lap
+
+   !> NBELT (C.1) calls for the torso belt: 2 or 3.
+   pure logical function nbelt_torso(nbelt)
+      integer, intent(in) :: nbelt
+      nbelt_torso = nbelt == 2 .or. nbelt == 3
+   end function nbelt_torso
 end module model

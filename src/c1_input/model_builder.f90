@@ -13,7 +13,7 @@ module model_builder
       g_stopcurve, g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates, &
       g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials, &
       g_loadpoly, g_loadrate, g_loadtable, g_beltloading, g_seat, g_seatsprings, g_seatbeam, &
-      g_seatbeaminit, g_seatbeams
+      g_seatbeaminit, g_seatbeams, g_belts, g_beltoptions
    use deck_reader, only: deck_t, group_t, card_t
    use deck_fields, only: card_value, card_int, card_given, group_value, group_int, single_card, default_value, &
       group_given
@@ -25,7 +25,9 @@ module model_builder
       materials_section_t, &
       environment_section_t, end_tests_section_t, n_seg, n_joint, n_arc, joint_partner, &
       form_cubic, form_table, nint_adams, nint_rk4, nend_contact, loading_section_t, max_curves, &
-      seat_none, seat_springs, seat_rigid_beam, seat_beams, seat_form_name
+      seat_none, seat_springs, seat_rigid_beam, seat_beams, seat_form_name, &
+      belts_section_t, n_belt_card, n_belt_section, belt_card_lap2, coupling_torso, coupling_all, &
+      nbelt_lap, nbelt_torso
    use text_io, only: string_t
    use loading_curves, only: loading_curve_t, curve_polynomial, curve_table, curve_is_defined, &
       curve_check, max_order
@@ -55,6 +57,7 @@ contains
       call build_injury(deck, m%injury, err)
       call build_materials(deck, m%materials)
       call build_loading(deck, m%options%nload, m%materials, m%loading, m%warnings, err)
+      call build_belts(deck, m%options%nbelt, m%body, m%loading, m%belts, m%warnings, err)
       call build_vehicle(deck, m%vehicle, err)
       m%environment = environment_section_t(group_value(deck, g_gravity, 'G'))
       m%end_tests = end_tests_section_t(group_value(deck, g_endtests, 'VREST'), &
@@ -78,8 +81,6 @@ contains
       o%nint = group_int(deck, g_options, 'NINT')
       if (.not. single_card(deck, g_options)) return
       c = deck%group(g_options)%card(1)
-      if (o%nbelt /= 0) call problem(deck, err, c, 'field NBELT = '//itoa(o%nbelt) &
-         //': belt forces (report C.4.e) are not implemented in this version; use 0')
       if (o%nend == nend_contact) call problem(deck, err, c, 'field NEND = 2: the ' &
          //'undesired-contact test needs contact surfaces (C.4.f), not implemented in this version')
       if (o%nbody /= 1) call append_string(m%warnings, located(deck, c, 'NBODY = '//itoa(o%nbody) &
@@ -614,6 +615,127 @@ contains
          p%gamma0 = q(bq_gamma0)
       end associate
    end subroutine build_rigid_beam
+
+   !> *BELTS and *BELTOPTIONS (Table 2, C.2, C.4.e; docs/belts.md): the
+   !! geometry of each section, the options, and what single fields cannot
+   !! check: which fields each kind of section takes, the lap anchor outside
+   !! the wrap, the belt points on their segments, the cards and loading the
+   !! sections NBELT calls for, the options that go together.
+   subroutine build_belts(deck, nbelt, body, ld, bt, warnings, err)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: nbelt
+      type(body_section_t), intent(in) :: body
+      type(loading_section_t), intent(in) :: ld
+      type(belts_section_t), intent(out) :: bt
+      type(string_t), allocatable, intent(inout) :: warnings(:)
+      type(error_t), intent(inout) :: err
+      character(len=:), allocatable :: where
+      logical :: used(n_belt_card)
+      type(card_t) :: c
+      integer :: k, j
+
+      bt%coupling = group_int(deck, g_beltoptions, 'COUPLING')
+      bt%lap_sides = group_int(deck, g_beltoptions, 'LAPSIDES')
+      bt%max_iter = group_int(deck, g_beltoptions, 'ITER')
+      used = [nbelt_lap(nbelt), nbelt_torso(nbelt), nbelt_torso(nbelt), nbelt_lap(nbelt) .and. bt%lap_sides == 2]
+
+      associate (g => deck%group(g_belts))
+         do k = 1, g%n
+            c = g%card(k)
+            j = c%index
+            where = '*BELTS section '//itoa(j)
+            bt%given(j) = .true.
+            bt%h(j) = card_value(deck, g_belts, c, 'H')
+            bt%length0(j) = card_value(deck, g_belts, c, 'LENGTH')
+            bt%phi0(j) = card_value(deck, g_belts, c, 'PHI')
+            bt%length_anchor(j) = card_value(deck, g_belts, c, 'LPRIME')
+            bt%phi_anchor(j) = card_value(deck, g_belts, c, 'PHIPRIME')
+            bt%slack(j) = card_value(deck, g_belts, c, 'SLACK')
+            if (j == 1 .or. j == belt_card_lap2) then
+               ! the lap belt: its free length and angle follow from l'_0, phi'_0 (C.2, C2-2, C2-3)
+               call forbid('LENGTH', 'the lap belt''s free length is computed from LPRIME and PHIPRIME ' &
+                           //'(C.2, errata C2-2)')
+               call forbid('PHI', 'the lap belt''s angle is computed from LPRIME and PHIPRIME (C.2, errata C2-3)')
+               call need('LPRIME', 'the lap belt''s anchor lies LPRIME from the initial hip')
+               call need('PHIPRIME', 'PHIPRIME is the direction from the lap belt''s anchor to the initial hip')
+               if (card_given(deck, g_belts, c, 'LPRIME') .and. .not. bt%length_anchor(j) > bt%h(j)) &
+                  call problem(deck, err, c, where//', fields LPRIME and H: LPRIME = '//num(bt%length_anchor(j)) &
+                  //' in must exceed the wrap radius H = '//num(bt%h(j))//' in (the anchor lies outside ' &
+                  //'the circle the belt wraps; figure 17)')
+            else
+               call forbid('LPRIME', 'LPRIME belongs to the lap belt (sections 1 and 4)')
+               call forbid('PHIPRIME', 'PHIPRIME belongs to the lap belt (sections 1 and 4)')
+               call need('LENGTH', 'LENGTH is the initial distance from the anchor to the belt point (C.2)')
+               call need('PHI', 'PHI is the direction from the anchor to the belt point (C.2)')
+               ! the belt point on its segment: section 2 below the upper-spine joint, 3 below the neck
+               if (bt%h(j) > body%length(j)) then
+                  if (j == 2) then
+                     where = where//', field H: H = '//num(bt%h(j))//' in lies beyond the upper-spine joint (L2 = '
+                  else
+                     where = where//', field H: H = '//num(bt%h(j))//' in lies beyond the neck (L3 = '
+                  end if
+                  call problem(deck, err, c, where//num(body%length(j))//' in) on the segment that carries the belt')
+               end if
+            end if
+         end do
+      end associate
+
+      if (nbelt == 0) then
+         if (deck%group(g_belts)%present .or. deck%group(g_beltoptions)%present) &
+            call warn_at(g_belts, '*BELTS and *BELTOPTIONS are not used: NBELT = 0 (*OPTIONS)')
+         return
+      end if
+      ! the sections NBELT calls for need their cards and their loading
+      do j = 1, n_belt_card
+         if (.not. used(j)) then
+            if (bt%given(j)) call warn_at(g_belts, '*BELTS section '//itoa(j)//' is not used (NBELT = '// &
+                                          itoa(nbelt)//', LAPSIDES = '//itoa(bt%lap_sides)//')')
+            cycle
+         end if
+         if (.not. bt%given(j)) then
+            where = 'section '//itoa(j)//' is needed by NBELT = '//itoa(nbelt)//' (*OPTIONS)'
+            if (j == belt_card_lap2) where = where//' and LAPSIDES = 2 (*BELTOPTIONS)'
+            call problem_at(deck, err, g_belts, where//': give its card')
+         end if
+         ! card 4, the lap belt's second side, takes the lap belt's loading
+         if (ld%belt_curve(min(j, n_belt_section)) < 1 .and. j <= n_belt_section) &
+            call problem_at(deck, err, g_beltloading, 'section '//itoa(j) &
+            //' is used (NBELT = '//itoa(nbelt)//'): give its loading (CURVE, G, R)')
+      end do
+      c%source = 0
+      if (single_card(deck, g_beltoptions)) c = deck%group(g_beltoptions)%card(1)
+      if (bt%coupling == coupling_torso .and. .not. nbelt_torso(nbelt)) call problem(deck, err, c, &
+         '*BELTOPTIONS field COUPLING = TORSO: the torso sections share a tension, but NBELT = '//itoa(nbelt) &
+         //' uses no torso belt')
+      if (bt%coupling == coupling_all .and. nbelt /= 3) call problem(deck, err, c, '*BELTOPTIONS field ' &
+         //'COUPLING = ALL: the three sections share a tension, but NBELT = '//itoa(nbelt)//' does not use all three')
+      if (bt%coupling == coupling_all .and. bt%lap_sides == 2) call problem(deck, err, c, '*BELTOPTIONS fields ' &
+         //'COUPLING and LAPSIDES: with COUPLING = ALL the lap belt is one section (LAPSIDES = 1)')
+      if (bt%lap_sides == 2 .and. .not. nbelt_lap(nbelt)) call problem(deck, err, c, '*BELTOPTIONS field ' &
+         //'LAPSIDES = 2: NBELT = '//itoa(nbelt)//' uses no lap belt')
+   contains
+      !> A field this kind of section does not take.
+      subroutine forbid(name, why)
+         character(len=*), intent(in) :: name, why
+         if (card_given(deck, g_belts, c, name)) call problem(deck, err, c, where//', field '//name//': leave it ' &
+            //'blank: '//why)
+      end subroutine forbid
+      !> A field this kind of section needs.
+      subroutine need(name, why)
+         character(len=*), intent(in) :: name, why
+         if (.not. card_given(deck, g_belts, c, name)) call problem(deck, err, c, where//', field '//name// &
+            ': required: '//why)
+      end subroutine need
+      subroutine warn_at(gid, message)
+         integer, intent(in) :: gid
+         character(len=*), intent(in) :: message
+         type(card_t) :: header
+         header%source = deck%group(gid)%source
+         header%line = deck%group(gid)%line
+         if (.not. deck%group(gid)%present) header%source = 0
+         call append_string(warnings, located(deck, header, message))
+      end subroutine warn_at
+   end subroutine build_belts
 
    !> Vehicle constants, initial motion and its time tables (C.1, C.3).
    subroutine build_vehicle(deck, v, err)

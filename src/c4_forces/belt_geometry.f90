@@ -29,7 +29,7 @@ module belt_geometry
 
    public :: belt_section_geometry_t, belt_kinematics_t, belt_body_t
    public :: belt_lap, belt_torso, lap_belt_geometry, torso_belt_geometry, belt_kinematics
-   public :: belt_body_from
+   public :: belt_body_from, belt_body_of_state
 
    !> Kinds of belt section.
    integer, parameter :: belt_lap = 1, belt_torso = 2
@@ -52,6 +52,8 @@ module belt_geometry
       real(wp) :: theta(3), theta_rate(3)
       real(wp) :: length(2)        !< L_1, L_2
       real(wp) :: phi              !< the vehicle's pitch Φ
+      real(wp) :: ct(3), st(3)     !< cos θ_i, sin θ_i
+      real(wp) :: cphi, sphi       !< cos Φ, sin Φ
    end type belt_body_t
 
    !> A section's state: direction, deformation, rate, gradient.
@@ -77,7 +79,51 @@ contains
       bb%theta_rate = zdot(1:3) + phi_rate
       bb%length = length(1:2)
       bb%phi = phi
+      bb%ct = cos(bb%theta)
+      bb%st = sin(bb%theta)
+      bb%cphi = cos(phi)
+      bb%sphi = sin(phi)
    end function belt_body_from
+
+   !> The belt data of the body at (z, z') in a vehicle at vpos = (x_c, y_c,
+   !! Phi) moving at vvel (the start of C.4): joints 1-3 from the hip along
+   !! L_1 and L_2 (section B), rotated into the interior frame, their rates
+   !! with the -y Phi', +x Phi' terms of the rotating frame. c, s: cos and
+   !! sin of alpha_1..alpha_8. The same as body_kinematics' joint_state and
+   !! to_interior (test_belts: test_body_data_matches_kinematics), without
+   !! their sines and cosines.
+   pure function belt_body_of_state(length, z, zdot, c, s, vpos, vvel) result(bb)
+      real(wp), intent(in) :: length(n_seg), z(n_dof), zdot(n_dof), c(n_seg), s(n_seg), vpos(3), vvel(3)
+      type(belt_body_t) :: bb
+      real(wp) :: p(2, 3), v(2, 3), cp, sp, dx, dy, dvx, dvy
+      integer :: k
+      p(:, 1) = [z(hip_x), z(hip_y)]
+      v(:, 1) = [zdot(hip_x), zdot(hip_y)]
+      do k = 1, 2
+         p(:, k + 1) = p(:, k) + length(k)*[c(k), s(k)]
+         v(:, k + 1) = v(:, k) + length(k)*zdot(k)*[-s(k), c(k)]
+      end do
+      cp = cos(vpos(3))
+      sp = sin(vpos(3))
+      do k = 1, 3
+         dx = p(1, k) - vpos(1)
+         dy = p(2, k) - vpos(2)
+         dvx = v(1, k) - vvel(1)
+         dvy = v(2, k) - vvel(2)
+         bb%joint(1, k) = dx*cp - dy*sp
+         bb%joint(2, k) = dx*sp + dy*cp
+         bb%joint_rate(1, k) = dvx*cp - dvy*sp - bb%joint(2, k)*vvel(3)
+         bb%joint_rate(2, k) = dvx*sp + dvy*cp + bb%joint(1, k)*vvel(3)
+      end do
+      bb%theta = z(1:3) + vpos(3)          ! theta_i = alpha_i + Phi (section B)
+      bb%theta_rate = zdot(1:3) + vvel(3)
+      bb%length = length(1:2)
+      bb%phi = vpos(3)
+      bb%cphi = cp
+      bb%sphi = sp
+      bb%ct = c(1:3)*cp - s(1:3)*sp        ! cos(alpha_i + Phi)
+      bb%st = s(1:3)*cp + c(1:3)*sp
+   end function belt_body_of_state
 
    !> C.2 for the lap belt (j = 1): the anchor at ℓ'_0 from the initial hip
    !! in the direction −e(φ'_0) (φ'_0 points from the anchor to the hip:
@@ -130,23 +176,27 @@ contains
       length = hypot(e(1), e(2))
    end function lap_length
 
-   !> φ_j, δ_j, δ̇_j and ∂δ_j/∂z of one section (C.4.e).
-   pure function belt_kinematics(g, bb) result(k)
+   !> φ_j, δ_j, δ̇_j and ∂δ_j/∂z of one section (C.4.e). angle = .false.
+   !! skips φ_j of a torso section (its direction is used without it; the
+   !! effect asks for φ_j only for its outputs).
+   pure function belt_kinematics(g, bb, angle) result(k)
       type(belt_section_geometry_t), intent(in) :: g
       type(belt_body_t), intent(in) :: bb
+      logical, intent(in), optional :: angle
       type(belt_kinematics_t) :: k
-      real(wp) :: dp_dz(2, n_dof), dth_dz(n_dof), p(2), p_rate(2), e(2), u, v, d, wrap, length
+      real(wp) :: dp_dz(2, n_dof), p(2), p_rate(2), e(2), u, v, d, wrap, length, r, cr, ts(2)
       integer :: s
+      logical :: with_angle
 
+      with_angle = .true.
+      if (present(angle)) with_angle = angle
       s = g%segment
       call point_jacobian(bb, s, dp_dz)          ! the proximal joint of segment s
-      dth_dz = 0.0_wp
-      dth_dz(s) = 1.0_wp                          ! ∂θ_s/∂α_s
 
       if (g%kind == belt_lap) then
          u = bb%joint(1, 1) - g%anchor(1)
          v = bb%joint(2, 1) - g%anchor(2)
-         d = hypot(u, v)
+         d = sqrt(u**2 + v**2)   ! (lengths are bounded: equations_of_motion's range guard)
          k%wrapped = d > g%h
          if (k%wrapped) then
             k%phi = asin(g%h/d) + atan2(v, u)     ! C.4.e φ_1, with atan2 (BE-2)
@@ -155,30 +205,38 @@ contains
          end if
          if (k%wrapped) then
             ! δ_1 = √(u²+v²−h_1²) − ℓ_10 + h_1 [φ_1 − θ_1 + π/2]; its derivative
-            ! is the tangent direction against the hip's motion minus h_1 dθ_1
+            ! is the tangent direction against the hip's motion minus h_1 dθ_1;
+            ! e(φ_1) is (u, v)/d turned by asin(h_1/d)
             length = sqrt(d**2 - g%h**2) + g%h*wrap
-            e = [cos(k%phi), sin(k%phi)]
+            r = g%h/d
+            cr = sqrt(1.0_wp - r**2)
+            e = [u*cr - v*r, v*cr + u*r]/d
             k%delta = length - g%length0
             k%delta_rate = dot_product(e, bb%joint_rate(:, 1)) - g%h*bb%theta_rate(1)   ! C.4.e δ̇_1
-            k%gradient = matmul(e, dp_dz) - g%h*dth_dz
+            k%gradient = matmul(e, dp_dz)
+            k%gradient(s) = k%gradient(s) - g%h    ! − h_1 ∂θ_1/∂α_1
             return
          end if
          ! straight from the anchor to E = hip + h_1 e(θ_1)
-         p = bb%joint(:, 1) + g%h*[cos(bb%theta(1)), sin(bb%theta(1))]
-         p_rate = bb%joint_rate(:, 1) + g%h*bb%theta_rate(1)*[-sin(bb%theta(1)), cos(bb%theta(1))]
+         ts = [-bb%st(1), bb%ct(1)]
+         p = bb%joint(:, 1) + g%h*[bb%ct(1), bb%st(1)]
+         p_rate = bb%joint_rate(:, 1) + g%h*bb%theta_rate(1)*ts
       else
          ! C.4.e: u_j = x_j + h_j cos θ_j − (anchor x), v_j likewise
-         p = bb%joint(:, s) + g%h*[cos(bb%theta(s)), sin(bb%theta(s))]
-         p_rate = bb%joint_rate(:, s) + g%h*bb%theta_rate(s)*[-sin(bb%theta(s)), cos(bb%theta(s))]
+         ts = [-bb%st(s), bb%ct(s)]
+         p = bb%joint(:, s) + g%h*[bb%ct(s), bb%st(s)]
+         p_rate = bb%joint_rate(:, s) + g%h*bb%theta_rate(s)*ts
       end if
       u = p(1) - g%anchor(1)
       v = p(2) - g%anchor(2)
-      d = hypot(u, v)
-      k%phi = atan2(v, u)                          ! C.4.e φ_j, atan2 (BE-2)
-      e = [cos(k%phi), sin(k%phi)]
+      d = sqrt(u**2 + v**2)
+      k%phi = 0.0_wp
+      if (with_angle .or. g%kind == belt_lap) k%phi = atan2(v, u)   ! C.4.e φ_j, atan2 (BE-2)
+      e = [u, v]/d                                 ! e(φ_j)
       k%delta = d - g%length0                      ! δ_j = √(u_j² + v_j²) − ℓ_j0
       k%delta_rate = dot_product(e, p_rate)        ! = ẋ_j cos φ_j + ẏ_j sin φ_j + h_j θ̇_j sin(φ_j − θ_j)
-      k%gradient = matmul(e, dp_dz) + g%h*dot_product(e, [-sin(bb%theta(s)), cos(bb%theta(s))])*dth_dz
+      k%gradient = matmul(e, dp_dz)
+      k%gradient(s) = k%gradient(s) + g%h*dot_product(e, ts)
    end function belt_kinematics
 
    !> ∂(interior position of the proximal joint of segment s)/∂z, s = 1..3:
@@ -190,10 +248,10 @@ contains
       real(wp), intent(out) :: dp_dz(2, n_dof)
       integer :: k
       dp_dz = 0.0_wp
-      dp_dz(:, hip_x) = [cos(bb%phi), sin(bb%phi)]      ! R(Φ) e_x
-      dp_dz(:, hip_y) = [-sin(bb%phi), cos(bb%phi)]     ! R(Φ) e_y
+      dp_dz(:, hip_x) = [bb%cphi, bb%sphi]      ! R(Φ) e_x
+      dp_dz(:, hip_y) = [-bb%sphi, bb%cphi]     ! R(Φ) e_y
       do k = 1, s - 1
-         dp_dz(:, k) = bb%length(k)*[-sin(bb%theta(k)), cos(bb%theta(k))]
+         dp_dz(:, k) = bb%length(k)*[-bb%st(k), bb%ct(k)]
       end do
    end subroutine point_jacobian
 end module belt_geometry

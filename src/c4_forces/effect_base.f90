@@ -93,6 +93,7 @@ module effect_base
       procedure :: output_values => effect_output_values
       procedure :: describe => effect_describe
       procedure :: initial_extra => effect_initial_extra
+      procedure :: failure_text => effect_failure_text
    end type effect_t
 
    !> An effect in a list.
@@ -170,6 +171,20 @@ contains
       end associate
       extra = 0.0_wp
    end subroutine effect_initial_extra
+
+   !> Why an evaluation at this state gave rates that are not finite, when
+   !! the effect knows ('' by default): the system asks when an evaluation
+   !! fails, for the failure message (an effect whose internal solve cannot
+   !! converge says so here; add_forces itself cannot return an error).
+   pure function effect_failure_text(this, st, extra, aux) result(text)
+      class(effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      character(len=:), allocatable :: text
+      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux))
+      end associate
+      text = ''
+   end function effect_failure_text
 
    !> One line for the listing: what the effect acts on.
    function effect_describe(this) result(text)

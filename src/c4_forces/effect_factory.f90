@@ -4,7 +4,7 @@
 !! (docs/architecture.md, rule 2). Adding an effect is one line here.
 module effect_factory
    use kinds, only: wp
-   use model, only: model_t, n_joint, n_dof, seat_none
+   use model, only: model_t, n_joint, n_dof, seat_none, nbelt_lap, nbelt_torso, coupling_all
    use preliminary, only: body_constants_t
    use effect_base, only: effect_t, effect_slot_t
    use centrifugal, only: centrifugal_effect
@@ -15,6 +15,7 @@ module effect_factory
    use joint_dislocation, only: joint_dislocation_effect
    use joint_restraints, only: restraint_is_active
    use seat_forces, only: seat_effect
+   use belt_forces, only: belt_effect, belt_part_lap, belt_part_torso, belt_part_all
    implicit none
    private
 
@@ -41,6 +42,9 @@ contains
          call add(joint_stops_effect(m%joints%restraint))                               ! C.4.c, fig. 9
       call add(joint_dislocation_effect(m%joints%restraint))                            ! C.4.c, fig. 10
       if (m%seat%form /= seat_none) call add(seat_effect(m, z0))                        ! C.4.d
+      if (m%options%nbelt > 0 .and. m%belts%coupling == coupling_all) call add(belt_effect(m, belt_part_all)) ! C.4.e
+      if (nbelt_lap(m%options%nbelt) .and. m%belts%coupling /= coupling_all) call add(belt_effect(m, belt_part_lap))
+      if (nbelt_torso(m%options%nbelt) .and. m%belts%coupling /= coupling_all) call add(belt_effect(m, belt_part_torso))
    contains
       subroutine add(e)
          class(effect_t), intent(in) :: e

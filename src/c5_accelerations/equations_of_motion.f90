@@ -150,8 +150,39 @@ contains
          end associate
       end do
       ! every rate: z'', and the effects' extra and auxiliary quantities
-      if (.not. all(ieee_is_finite(dydt))) status = rhs_not_finite
+      if (.not. all(ieee_is_finite(dydt))) then
+         status = rhs_not_finite
+         call explain_not_finite(this, t, y)
+      end if
    end subroutine system_rhs
+
+   !> After an evaluation that gave rates that are not finite: the first
+   !! effect that can say why (effect_t%failure_text) sets failure_detail.
+   subroutine explain_not_finite(sys, t, y)
+      type(crash_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t, y(:)
+      type(body_state_t) :: st
+      character(len=:), allocatable :: why
+      integer :: o, k, xo, ao
+      if (allocated(sys%failure_detail)) deallocate (sys%failure_detail)
+      do o = 1, size(sys%occupants)
+         associate (occ => sys%occupants(o))
+            call occupant_state(occ, t, y, st)
+            st%vehicle = vehicle_state_at(sys%vm, t)
+            do k = 1, size(occ%effects)
+               xo = occ%extra_offset(k)
+               ao = occ%aux_offset(k)
+               associate (e => occ%effects(k)%e)
+                  why = e%failure_text(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux))
+               end associate
+               if (len(why) > 0) then
+                  sys%failure_detail = trim(occ%label)//': '//why
+                  return
+               end if
+            end do
+         end associate
+      end do
+   end subroutine explain_not_finite
 
    !> The occupant's coordinates and rates are finite and within the bounds
    !! of any physical state (NaN fails every comparison); if not, say which

@@ -108,14 +108,16 @@ contains
       end function energy_summary
    end subroutine registry_build
 
-   !> An effect's energy column: its name, with the kind when it has several.
+   !> An effect's energy column: its name, with the kind when it has several
+   !! (then at most ten characters, which the listing shows: lap_b_stor,
+   !! lap_b_diss, lap_b_supp, not three columns headed LAP_BELT_S).
    pure function energy_column_name(name, has, kind) result(s)
       character(len=*), intent(in) :: name
       logical, intent(in) :: has(n_energy_kinds)
       integer, intent(in) :: kind
       character(len=:), allocatable :: s
       if (count(has) > 1) then
-         s = name(1:min(len_trim(name), 9))//'_'//energy_kind_name(kind)(1:6)
+         s = name(1:min(len_trim(name), 5))//'_'//energy_kind_name(kind)(1:4)
       else
          s = trim(name)
       end if

@@ -91,7 +91,8 @@ contains
       type(model_t) :: m
       type(run_summary_t) :: res
       type(error_t) :: run_err, io_err
-      type(case_sink_t) :: sink
+      ! on the heap: it holds the model, which outgrows the stack's static limit
+      type(case_sink_t), allocatable :: sink
       type(output_file_t) :: h5_file
       type(string_t), allocatable :: notes(:)
       integer :: o
@@ -105,7 +106,7 @@ contains
          end if
       end if
       if (err%failed() .or. req%check_only) return
-      allocate (notes(0))
+      allocate (notes(0), sink)
 
       ! outputs are written under temporary names and put in place of their
       ! targets at the end (output_files); nothing is created before the

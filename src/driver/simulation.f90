@@ -10,7 +10,7 @@ module simulation
    use strings, only: num
    use model, only: model_t, n_dof, n_joint, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state, &
-      rhs_status_text, rhs_diverged
+      rhs_status_text, rhs_diverged, rhs_not_finite
    use occupant, only: occupant_state
    use vehicle_motion, only: vehicle_state_at
    use ode_system, only: stepper_t, step_ok, step_rhs_failed, step_status_text
@@ -308,7 +308,8 @@ contains
          why = step_status_text(code)
          if (code == step_rhs_failed) then
             why = why//' at t = '//num(sys%last_t)//' s: '//rhs_status_text(stepper%rhs_status)
-            if (stepper%rhs_status == rhs_diverged .and. allocated(sys%failure_detail)) &
+            if ((stepper%rhs_status == rhs_diverged .or. stepper%rhs_status == rhs_not_finite) &
+                .and. allocated(sys%failure_detail)) &
                why = why//' ('//sys%failure_detail//')'
          end if
          summary%failure = 'integration stopped after t = '//num(t)//' s: '//why

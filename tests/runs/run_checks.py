@@ -95,11 +95,18 @@ if "hsri2d: warning: the energy balance failed" not in p.stderr:
 for problem in listing_problems("spin_on.lst"):
     fail("the spun head with EBFAIL = CONTINUE: " + problem)
 
-# 2. every shipped deck, and with NOUT = 3: 132 columns, no asterisks
-write("nout3.deck", "*OPTIONS\n" + card(1, 0, 1, 1, 3, 2))
+# 2. every shipped deck, and with NOUT = 3 (its own *OPTIONS card, NOUT set to 3): 132 columns,
+# no asterisks
+def nout3_options(path):
+    lines = open(path).read().splitlines()
+    header = next(i for i, l in enumerate(lines) if l.upper().startswith("*OPTIONS"))
+    data = next(l for l in lines[header + 1:] if l.strip() and not l.startswith("$"))
+    data = data.ljust(72)
+    return "*OPTIONS\n" + data[:42] + "%10d" % 3 + data[52:].rstrip() + "\n"
 for deck in sorted(os.listdir(decks)):
     if not deck.endswith(".deck"):
         continue
+    write("nout3.deck", nout3_options(os.path.join(decks, deck)))
     for extra in ([], ["nout3.deck"]):
         out = deck + ("_nout3" if extra else "") + ".lst"
         p = run(os.path.join(decks, deck), *extra, "-o", out)

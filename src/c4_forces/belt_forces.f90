@@ -1,0 +1,493 @@
+!> Report C.4.e, the belt forces B of b = C - G + J + S + B + Q: a lap belt
+!! wrapping the hip (j = 1) and a torso belt acting at two points of the
+!! torso centre lines (j = 2 on the centre torso, j = 3 on the upper
+!! torso), as NBELT (*OPTIONS) calls for them (docs/belts.md).
+!!
+!! For each section the geometry (belt_geometry: C.4.e, C.2 with C2-1..C2-3,
+!! BE-2, A-B1) gives the nominal deformation delta_j, its rate and its
+!! gradient. The sections form chains that each carry one tension
+!! (*BELTOPTIONS COUPLING): every section alone (the report's phase two), the
+!! two torso sections together, or all three. A chain's deformation is the
+!! sum of its sections' delta_j less their slack Delta_j; it is shared
+!! between the webbing of each section and the body surface under it - the
+!! abdomen (material 11) under the lap belt, the chest (material 12) under
+!! the torso belt - by belt_shared_deflection, each element with its own
+!! recurrent-loading memory (figure 18). A material without a loading
+!! curve is rigid: the webbing then takes the whole deformation.
+!!
+!! Generalized forces: B = -F sum_j d(delta_j)/dz over the chain's sections
+!! (erratum BE-1: the printed B_2, B_3 are not this).
+!!
+!! Energies (C.6 with E6-2): each element's W, E_abs, D_v are integrated
+!! (auxiliary quantities), its stored CE = W - DE and dissipated DE = (1 -
+!! R) E_abs + D_v; and the work the vehicle supplies through the belt,
+!! integrated with the rate F (s' - g . z'), g = sum_j d(delta_j)/dz: the
+!! part of the chain's deformation rate that the moving anchorages make
+!! (the vehicle's motion at fixed z). Its difference from F s' is B . z',
+!! the power of the belt on the body, so body kinetic energy + stored +
+!! dissipated - supplied stays constant (docs/belts.md 5).
+!!
+!! Memory (figure 18: cycle, turning point, residual deformation of every
+!! element) changes only in accept, from the accepted state.
+!!
+!! Each chain integrates one more auxiliary quantity: the unknown of its
+!! shared-deflection search (the first element's deformation, or the force
+!! when three or more elements share it), whose rate the split gives. It is
+!! only the search's start: from it one or two Newton steps reach the
+!! tolerance, where the bracket's ends would take several; the forces do not
+!! depend on it (docs/belts.md 3).
+module belt_forces
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use kinds, only: wp, deg
+   use strings, only: num, itoa
+   use model, only: model_t, n_dof, n_seg, belt_card_lap2, coupling_torso
+   use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
+      energy_supplied, n_energy_kinds
+   use output_series, only: output_series_t, series_new, column
+   use belt_geometry, only: belt_section_geometry_t, belt_kinematics_t, belt_body_t, &
+      lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state
+   use recurrent_loading, only: recurrent_law_t, loading_memory_t, belt_law, material_law, recurrent_accept, &
+      recurrent_energies, recurrent_is_elastic, n_loading_aux
+   use belt_shared_deflection, only: max_chain, chain_split_t, chain_split, chain_split_text, split_ok, scaled_law
+   implicit none
+   private
+
+   public :: belt_effect_t, belt_chain_t, belt_effect, belt_part_lap, belt_part_torso, belt_part_all
+   public :: belt_section_state, belt_state_t, max_belt_sections
+   public :: out_force, out_angle, out_deformation, out_rate, out_energy
+
+   !> Which belts an effect holds (the factory builds one effect per part).
+   integer, parameter :: belt_part_lap = 1, belt_part_torso = 2, belt_part_all = 3
+   !> Sections of one effect at most (the lap belt's two sides and the torso's two).
+   integer, parameter :: max_belt_sections = 4
+   !> The body materials under the belts (Table 4).
+   integer, parameter :: material_abdomen = 11, material_chest = 12
+   !> The effect's output series (item numbers).
+   integer, parameter :: out_force = 1, out_angle = 2, out_deformation = 3, out_rate = 4, out_energy = 5
+
+   !> Sections carrying one tension, and the elements in series along them.
+   type :: belt_chain_t
+      integer :: n_sections = 0
+      integer :: section(3) = 0              !< the effect's sections in this chain
+      integer :: n_elements = 0
+      type(recurrent_law_t) :: law(max_chain)
+      type(loading_memory_t) :: mem(max_chain)
+      integer :: webbing(3) = 0              !< element of each section's webbing
+      integer :: body(3) = 0                 !< element of the body under each section (0: rigid)
+      real(wp) :: slack = 0.0_wp             !< sum of the sections' Delta_j
+      integer :: aux_offset = 0              !< its first auxiliary quantity in the effect's
+   end type belt_chain_t
+
+   type, extends(effect_t) :: belt_effect_t
+      integer :: n_sections = 0
+      type(belt_section_geometry_t) :: geom(max_belt_sections)
+      integer :: card(max_belt_sections) = 0          !< j of its *BELTS card
+      integer :: chain_of(max_belt_sections) = 0
+      integer :: position(max_belt_sections) = 0      !< its place in its chain
+      character(len=8) :: label(max_belt_sections) = ' '
+      integer :: n_chains = 0
+      type(belt_chain_t) :: chain(max_belt_sections)
+      real(wp) :: length(n_seg) = 0.0_wp              !< segment lengths (L_1, L_2 place joints 2, 3)
+      integer :: max_iter = 60
+   contains
+      procedure :: add_forces => belt_add_forces
+      procedure :: accept => belt_accept
+      procedure :: energy => belt_energy
+      procedure :: outputs => belt_outputs
+      procedure :: output_values => belt_output_values
+      procedure :: describe => belt_describe
+      procedure :: failure_text => belt_failure_text
+   end type belt_effect_t
+
+   !> Everything about the effect's sections at one state (for accept and outputs).
+   type :: belt_state_t
+      type(belt_kinematics_t) :: kin(max_belt_sections)
+      type(chain_split_t) :: split(max_belt_sections)
+      real(wp) :: s(max_belt_sections) = 0.0_wp, s_dot(max_belt_sections) = 0.0_wp  !< per chain
+      real(wp) :: g(n_dof, max_belt_sections) = 0.0_wp                            !< per chain
+   end type belt_state_t
+
+contains
+
+   !> The belts of `part` as the model describes them (NBELT, *BELTS,
+   !! *BELTLOADING, *BELTOPTIONS, *MATERIALS 11 and 12): their geometry fixed
+   !! at t = 0 from the initial position (C.2), their chains and laws.
+   function belt_effect(m, part) result(e)
+      type(model_t), intent(in) :: m
+      integer, intent(in) :: part
+      type(belt_effect_t) :: e
+      real(wp) :: joint0(2, 3), theta0(3)
+      integer :: k, c, j
+      logical :: two_sides
+
+      associate (bt => m%belts, th => m%body%theta0, ln => m%body%length)
+         ! the initial interior position of joints 1-3: the hip at the origin (C.1)
+         theta0 = th(1:3)
+         joint0(:, 1) = 0.0_wp
+         joint0(:, 2) = joint0(:, 1) + ln(1)*[cos(th(1)), sin(th(1))]
+         joint0(:, 3) = joint0(:, 2) + ln(2)*[cos(th(2)), sin(th(2))]
+         e%length = ln
+         e%max_iter = bt%max_iter
+         two_sides = bt%lap_sides == 2
+         select case (part)
+         case (belt_part_lap)
+            e%name = 'lap_belt'
+            e%title = 'lap belt (C.4.e)'
+            call add_section(1)
+            if (two_sides) call add_section(belt_card_lap2)
+            do k = 1, e%n_sections
+               call add_chain([k])
+            end do
+         case (belt_part_torso)
+            e%name = 'torso_belt'
+            e%title = 'torso belt (C.4.e)'
+            call add_section(2)
+            call add_section(3)
+            if (bt%coupling == coupling_torso) then      ! one tension in both torso sections (D-B3)
+               e%title = 'torso belt, one tension (C.4.e)'
+               call add_chain([1, 2])
+            else
+               call add_chain([1])
+               call add_chain([2])
+            end if
+         case default
+            e%name = 'belt'
+            e%title = 'lap and torso belt, one tension (C.4.e)'
+            call add_section(1)
+            call add_section(2)
+            call add_section(3)
+            call add_chain([1, 2, 3])
+         end select
+      end associate
+      e%needs_vehicle = .true.
+      e%has_energy = .true.
+      e%n_aux = 0
+      do c = 1, e%n_chains
+         e%chain(c)%aux_offset = e%n_aux
+         e%n_aux = e%n_aux + n_loading_aux*e%chain(c)%n_elements + 2   ! elements, supplied, start
+         do j = 1, e%chain(c)%n_elements
+            e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%chain(c)%law(j))
+         end do
+      end do
+   contains
+      !> Section j of the *BELTS cards: its geometry at t = 0 (C.2).
+      subroutine add_section(j)
+         integer, intent(in) :: j
+         integer :: k
+         associate (bt => m%belts)
+            e%n_sections = e%n_sections + 1
+            k = e%n_sections
+            e%card(k) = j
+            if (j == 1 .or. j == belt_card_lap2) then
+               e%geom(k) = lap_belt_geometry(bt%h(j), bt%length_anchor(j), bt%phi_anchor(j), joint0(:, 1), theta0(1))
+               e%label(k) = 'lap'
+               if (two_sides) e%label(k) = trim(merge('lap_a', 'lap_b', j == 1))
+            else
+               e%geom(k) = torso_belt_geometry(j, bt%h(j), bt%length0(j), bt%phi0(j), joint0(:, j), theta0(j))
+               e%label(k) = 'torso'//itoa(j)
+            end if
+         end associate
+      end subroutine add_section
+
+      !> A chain of the effect's sections ks: per section its webbing (the
+      !! *BELTLOADING law; half of it for each of two lap sides) and, when the
+      !! material has a loading curve, the body surface under it.
+      subroutine add_chain(ks)
+         integer, intent(in) :: ks(:)
+         integer :: q, k, j, jl, l, c
+         real(wp) :: factor
+         e%n_chains = e%n_chains + 1
+         c = e%n_chains
+         associate (ch => e%chain(c))
+            ch%n_sections = size(ks)
+            do q = 1, size(ks)
+               k = ks(q)
+               j = e%card(k)
+               ch%section(q) = k
+               e%chain_of(k) = c
+               e%position(k) = q
+               ch%slack = ch%slack + m%belts%slack(j)
+               factor = 1.0_wp
+               if (two_sides .and. (j == 1 .or. j == belt_card_lap2)) factor = 0.5_wp   ! each side half the law (D-B5)
+               ch%n_elements = ch%n_elements + 1
+               ch%webbing(q) = ch%n_elements
+               jl = j
+               if (j == belt_card_lap2) jl = 1          ! the lap belt's second side: the lap law
+               ch%law(ch%n_elements) = scaled_law(belt_law(m%loading, jl), factor)
+               l = merge(material_abdomen, material_chest, j == 1 .or. j == belt_card_lap2)
+               if (m%loading%material_curve(l) > 0) then       ! else the body is rigid (D-B6)
+                  ch%n_elements = ch%n_elements + 1
+                  ch%body(q) = ch%n_elements
+                  ch%law(ch%n_elements) = scaled_law(material_law(m%materials, m%loading, l), factor)
+               end if
+            end do
+         end associate
+      end subroutine add_chain
+   end function belt_effect
+
+   !> Kinematics and splits of every section and chain at a state (aux: the
+   !! effect's auxiliary quantities, for the searches' starts).
+   pure function belt_section_state(this, st, aux) result(bs)
+      class(belt_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: aux(:)
+      type(belt_state_t) :: bs
+      type(belt_body_t) :: bb
+      integer :: k, c, q
+      bb = belt_body_of_state(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel)
+      do c = 1, this%n_chains
+         associate (ch => this%chain(c))
+            bs%s(c) = -ch%slack
+            bs%s_dot(c) = 0.0_wp
+            bs%g(:, c) = 0.0_wp
+            do q = 1, ch%n_sections
+               k = ch%section(q)
+               bs%kin(k) = belt_kinematics(this%geom(k), bb)
+               bs%s(c) = bs%s(c) + bs%kin(k)%delta
+               bs%s_dot(c) = bs%s_dot(c) + bs%kin(k)%delta_rate
+               bs%g(:, c) = bs%g(:, c) + bs%kin(k)%gradient
+            end do
+            call chain_split(ch%n_elements, ch%law, ch%mem, bs%s(c), bs%s_dot(c), this%max_iter, bs%split(c), &
+                             aux(ch%aux_offset + n_loading_aux*ch%n_elements + 2))
+         end associate
+      end do
+   end function belt_section_state
+
+   !> B = -F sum_j d(delta_j)/dz per chain (C.4.e, BE-1), and the rates of the
+   !! auxiliary quantities: per element W, E_abs, D_v (E6-2), per chain the
+   !! supplied work F (s' - g . z') and the search's start. A split that
+   !! fails makes its rates NaN: the system reports the evaluation as
+   !! failed, with failure_text. (Written out rather than through
+   !! belt_section_state: it runs at every evaluation.)
+   pure subroutine belt_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(belt_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      type(belt_body_t) :: bb
+      type(belt_kinematics_t) :: kin
+      type(chain_split_t) :: sp
+      real(wp) :: s, s_dot, g(n_dof), f
+      integer :: c, n, a, q
+      associate (u1 => size(extra), u2 => size(extra_rate))
+      end associate
+      bb = belt_body_of_state(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel)
+      do c = 1, this%n_chains
+         associate (ch => this%chain(c))
+            ! the chain's deformation: its sections' nominal deformations less their slack (D-B1)
+            s = -ch%slack
+            s_dot = 0.0_wp
+            g = 0.0_wp
+            do q = 1, ch%n_sections
+               kin = belt_kinematics(this%geom(ch%section(q)), bb, angle=.false.)
+               s = s + kin%delta
+               s_dot = s_dot + kin%delta_rate
+               g = g + kin%gradient
+            end do
+            n = ch%n_elements
+            a = ch%aux_offset
+            call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, aux(a + n_loading_aux*n + 2))
+            if (sp%status /= split_ok) then
+               aux_rate(a + 1:a + n_loading_aux*n + 2) = ieee_value(0.0_wp, ieee_quiet_nan)
+               cycle
+            end if
+            f = sp%force
+            b = b - f*g
+            aux_rate(a + 1:a + n_loading_aux*n) = reshape(sp%aux_rate(:, 1:n), [n_loading_aux*n])
+            ! the work of the moving anchorages: F times the deformation rate at fixed z (D-B4)
+            aux_rate(a + n_loading_aux*n + 1) = f*(s_dot - dot_product(g, st%zdot))
+            aux_rate(a + n_loading_aux*n + 2) = sp%guess_rate     ! the search's start (D-B7)
+         end associate
+      end do
+   end subroutine belt_add_forces
+
+   !> After an accepted step: every element's memory from its share of the
+   !! accepted deformation and rate (figure 18); a changed law restarts the
+   !! stepper.
+   subroutine belt_accept(this, st, extra, aux, result)
+      class(belt_effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(accept_result_t), intent(inout) :: result
+      type(belt_state_t) :: bs
+      integer :: c, i
+      logical :: changed
+      associate (u1 => size(extra))
+      end associate
+      bs = belt_section_state(this, st, aux)
+      do c = 1, this%n_chains
+         if (bs%split(c)%status /= split_ok) cycle
+         associate (ch => this%chain(c))
+            do i = 1, ch%n_elements
+               call recurrent_accept(ch%law(i), ch%mem(i), bs%split(c)%x(i), bs%split(c)%rate(i), changed)
+               result%restart = result%restart .or. changed
+            end do
+         end associate
+      end do
+   end subroutine belt_accept
+
+   !> Stored and dissipated energy of every element (E6-2), and the work
+   !! supplied by the vehicle.
+   pure subroutine belt_energy(this, st, extra, aux, e)
+      class(belt_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      real(wp) :: ce, de
+      integer :: c, i, a
+      associate (u1 => st%t, u2 => size(extra))
+      end associate
+      e = 0.0_wp
+      do c = 1, this%n_chains
+         associate (ch => this%chain(c))
+            a = ch%aux_offset
+            do i = 1, ch%n_elements
+               call recurrent_energies(ch%law(i), aux(a + n_loading_aux*(i - 1) + 1:a + n_loading_aux*i), ce, de)
+               e(energy_stored) = e(energy_stored) + ce
+               e(energy_dissipated) = e(energy_dissipated) + de
+            end do
+            e(energy_supplied) = e(energy_supplied) + aux(a + n_loading_aux*ch%n_elements + 1)
+         end associate
+      end do
+   end subroutine belt_energy
+
+   !> The effect's series: forces (NOUT 1), angles and deformations (2),
+   !! rates and energies (3).
+   function belt_outputs(this) result(series)
+      class(belt_effect_t), intent(in) :: this
+      type(output_series_t), allocatable :: series(:)
+      integer :: k, c
+      character(len=:), allocatable :: t, l
+      t = upper(trim(this%title))
+      allocate (series(5))
+      series(out_force) = series_new('force', t//': TENSION', 'tension F of each section (lb), the force ' &
+                                     //'its chain carries (C.4.e): webbing and body surface in series', 1)
+      series(out_angle) = series_new('angle', t//': ANGLE PHI', 'direction phi_j of each section, from its ' &
+                                     //'anchor to its belt or tangent point, from the interior horizontal ' &
+                                     //'(C.4.e, BE-2)', 2)
+      series(out_deformation) = series_new('deformation', t//': DEFORMATIONS', 'per section: nominal ' &
+                                           //'deformation delta_j (C.4.e), webbing elongation and body ' &
+                                           //'deflection (the shared deflection; they add up to delta_j less ' &
+                                           //'the slack once it is taken up)', 2)
+      series(out_rate) = series_new('rate', t//': DEFORMATION RATES', 'per section: the rates of the ' &
+                                    //'nominal deformation, the webbing elongation and the body deflection', 3)
+      series(out_energy) = series_new('energy', t//': ENERGIES', 'per section: stored and dissipated energy ' &
+                                      //'of the webbing and of the body surface (C.6, E6-2); per chain: the ' &
+                                      //'work supplied by the vehicle through the anchorages', 3)
+      do k = 1, this%n_sections
+         l = trim(this%label(k))
+         block
+            series(out_force)%col = [series(out_force)%col, column(l, 'lb')]
+            series(out_angle)%col = [series(out_angle)%col, column(l, 'rad', 'deg', 1.0_wp/deg)]
+            series(out_deformation)%col = [series(out_deformation)%col, column(l//'_nominal', 'in'), &
+                                           column(l//'_belt', 'in'), column(l//'_body', 'in')]
+            series(out_rate)%col = [series(out_rate)%col, column(l//'_nominal', 'in/s'), &
+                                    column(l//'_belt', 'in/s'), column(l//'_body', 'in/s')]
+            series(out_energy)%col = [series(out_energy)%col, column(l//'_belt_ce', 'in*lb'), &
+                                      column(l//'_belt_de', 'in*lb'), column(l//'_body_ce', 'in*lb'), &
+                                      column(l//'_body_de', 'in*lb')]
+         end block
+      end do
+      do c = 1, this%n_chains
+         series(out_energy)%col = [series(out_energy)%col, &
+                                   column(trim(this%label(this%chain(c)%section(1)))//'_supplied', 'in*lb')]
+      end do
+   contains
+      pure function upper(s) result(u)
+         character(len=*), intent(in) :: s
+         character(len=len(s)) :: u
+         integer :: i
+         u = s
+         do i = 1, len(s)
+            if (s(i:i) >= 'a' .and. s(i:i) <= 'z') u(i:i) = achar(iachar(s(i:i)) - 32)
+         end do
+      end function upper
+   end function belt_outputs
+
+   pure subroutine belt_output_values(this, item, st, extra, aux, values)
+      class(belt_effect_t), intent(in) :: this
+      integer, intent(in) :: item
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: values(:)
+      type(belt_state_t) :: bs
+      real(wp) :: ce, de
+      integer :: k, c, q, a, i, n
+      associate (u1 => size(extra))
+      end associate
+      values = 0.0_wp
+      bs = belt_section_state(this, st, aux)
+      do k = 1, this%n_sections
+         c = this%chain_of(k)
+         q = this%position(k)
+         associate (ch => this%chain(c), sp => bs%split(c))
+            select case (item)
+            case (out_force)
+               values(k) = sp%force
+            case (out_angle)
+               values(k) = bs%kin(k)%phi
+            case (out_deformation)
+               values(3*k - 2) = bs%kin(k)%delta
+               values(3*k - 1) = sp%x(ch%webbing(q))
+               if (ch%body(q) > 0) values(3*k) = sp%x(ch%body(q))
+            case (out_rate)
+               values(3*k - 2) = bs%kin(k)%delta_rate
+               values(3*k - 1) = sp%rate(ch%webbing(q))
+               if (ch%body(q) > 0) values(3*k) = sp%rate(ch%body(q))
+            case (out_energy)
+               a = ch%aux_offset
+               i = ch%webbing(q)
+               call recurrent_energies(ch%law(i), aux(a + n_loading_aux*(i - 1) + 1:a + n_loading_aux*i), ce, de)
+               values(4*k - 3:4*k - 2) = [ce, de]
+               i = ch%body(q)
+               if (i > 0) then
+                  call recurrent_energies(ch%law(i), aux(a + n_loading_aux*(i - 1) + 1:a + n_loading_aux*i), ce, de)
+                  values(4*k - 1:4*k) = [ce, de]
+               end if
+            end select
+         end associate
+      end do
+      if (item == out_energy) then
+         do c = 1, this%n_chains
+            n = this%chain(c)%n_elements
+            values(4*this%n_sections + c) = aux(this%chain(c)%aux_offset + n_loading_aux*n + 1)
+         end do
+      end if
+   end subroutine belt_output_values
+
+   !> One line for the listing: the sections, their anchors and chains.
+   function belt_describe(this) result(text)
+      class(belt_effect_t), intent(in) :: this
+      character(len=:), allocatable :: text
+      integer :: k, c
+      text = trim(this%title)//':'
+      do k = 1, this%n_sections
+         c = this%chain_of(k)
+         text = text//' '//trim(this%label(k))//' anchor ('//num(this%geom(k)%anchor(1))//', ' &
+                //num(this%geom(k)%anchor(2))//') in'
+         if (this%chain(c)%body(this%position(k)) == 0) text = text//' (body rigid)'
+         if (k < this%n_sections) text = text//';'
+      end do
+   end function belt_describe
+
+   !> Why the last evaluation at this state failed ('' when it did not).
+   pure function belt_failure_text(this, st, extra, aux) result(text)
+      class(belt_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      character(len=:), allocatable :: text
+      type(belt_state_t) :: bs
+      integer :: c
+      associate (u1 => size(extra))
+      end associate
+      text = ''
+      bs = belt_section_state(this, st, aux)
+      do c = 1, this%n_chains
+         if (bs%split(c)%status == split_ok) cycle
+         text = trim(this%title)//', '//trim(this%label(this%chain(c)%section(1)))//': ' &
+                //chain_split_text(bs%split(c), bs%s(c), bs%s_dot(c), this%max_iter)
+         return
+      end do
+   end function belt_failure_text
+end module belt_forces

@@ -1,0 +1,629 @@
+!> Report C.4.e, the shared deflection: "the nominal deformation is the sum
+!! of the actual belt elongation and the body deflection ... Thus the total
+!! deformation must be partitioned between the belt elongation and the body
+!! deflection, and likewise for the rate." (figure 19, lost; docs/belts.md 3).
+!!
+!! A belt section and the body surface under it are elements in series
+!! carrying one force: the webbing (its *BELTLOADING law) and the abdomen
+!! (material 11) or the chest (material 12), each a recurrent-loading law
+!! with its own memory (recurrent_loading). A *chain* is such a series: one
+!! section and its body surface (the report's independent sections), or,
+!! when several sections share one tension (*BELTOPTIONS COUPLING), every
+!! webbing section and body surface of the shared sections. Given the
+!! chain's total deformation s (the nominal deformations less the slack)
+!! and its rate, chain_split finds
+!!
+!! - the deformations x_i >= 0 of the elements, sum x_i = s, at which every
+!!   element's rate-independent branch carries the same force F_b (the
+!!   deformation split; a bracketed, safeguarded Newton iteration that ends
+!!   with a status, never silently);
+!! - their rates, the derivative of that split along the motion: x_i' =
+!!   w_i s', w_i = (1/k_i) / sum (1/k_j), k_i the slope of element i's
+!!   branch at x_i (the rate split: the elements' forces stay equal as s
+!!   changes, dF_b/dt = k_i x_i' for every i);
+!! - the chain's force F = F_b + F_v, F_v = sum w_i F_v,i(x_i'), the weighted
+!!   mean of the elements' rate terms: for linear rate terms it is the
+!!   series combination c = sum w_i**2 c_i, which is the low-frequency limit
+!!   of elements in series, and it dissipates exactly what each element's
+!!   own rate terms dissipate at its own rate (F_v s' = sum F_v,i x_i').
+!!   The total never pulls: F = max(0, F_b + F_v) while F_b > 0;
+!! - each element's auxiliary work rates (E6-2: W, E_abs, D_v; docs/
+!!   loading.md 4) at the common force, so that sum W_i' = F s' exactly:
+!!   the energy balance of C.6 does not depend on the solver's tolerance.
+!!
+!! Everything here is pure: the memories are read, never written
+!! (recurrent_accept changes them, after accepted steps, with the x_i and
+!! x_i' of the accepted state).
+module belt_shared_deflection
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use kinds, only: wp
+   use strings, only: num, itoa
+   use loading_curves, only: loading_curve_t, curve_polynomial, curve_table, curve_is_defined, &
+      curve_elastic_force, curve_rate_force
+   use recurrent_loading, only: recurrent_law_t, loading_memory_t, n_loading_aux, aux_work, aux_absorbed, &
+      aux_rate_work
+   implicit none
+   private
+
+   public :: max_chain, branch_point_t, branch_at, zero_extent, curve_slope, scaled_law
+   public :: chain_split_t, chain_split, chain_split_text
+   public :: split_ok, split_no_convergence, split_not_finite
+   public :: region_slack, region_unloaded, region_loaded
+   public :: root_search_t, root_begin, root_update, root_running, root_converged, root_failed, root_not_finite
+
+   !> Elements of one chain at most: three webbing sections and three body surfaces.
+   integer, parameter :: max_chain = 6
+
+   !> Outcome of a split.
+   integer, parameter :: split_ok = 0, split_no_convergence = 1, split_not_finite = 2
+   !> Where the chain is: slack (s <= 0), taken up but carrying no force
+   !! (within the elements' residual deformations), loaded.
+   integer, parameter :: region_slack = 0, region_unloaded = 1, region_loaded = 2
+
+   !> States of a root search.
+   integer, parameter :: root_running = 0, root_converged = 1, root_failed = 2, root_not_finite = 3
+
+   !> The relative tolerances of the splits: a force balance to 1e-12 of the
+   !! force, a deformation to 1e-14 of the chain's (a few ulps).
+   real(wp), parameter :: force_tol = 1.0e-12_wp, defl_tol = 1.0e-14_wp
+   !> A branch flatter than this (lb/in) is flat: its compliance is infinite.
+   real(wp), parameter :: min_slope = 1.0e-200_wp
+
+   !> An element's rate-independent branch at one deformation (figure 18).
+   type :: branch_point_t
+      real(wp) :: force = 0.0_wp    !< F_b, as recurrent_eval's branch
+      real(wp) :: slope = 0.0_wp    !< dF_b/dx (right derivative at kinks)
+      logical :: loading = .false.  !< on a loading branch (E_abs counts while x' > 0)
+   end type branch_point_t
+
+   !> A chain's split at one state. The arrays are defined for the chain's
+   !! n elements only (chain_split sets them; no default initialization,
+   !! which would cost as much as a split at every evaluation).
+   type :: chain_split_t
+      integer :: status = split_ok
+      integer :: region = region_slack
+      integer :: iterations = 0              !< force evaluations of the search
+      real(wp) :: force = 0.0_wp             !< F, the chain's force (every element carries it)
+      real(wp) :: branch = 0.0_wp            !< F_b, its rate-independent part
+      real(wp) :: guess = 0.0_wp             !< the unknown of the search: x_1 (two elements) or F_b
+      real(wp) :: guess_rate = 0.0_wp        !< its rate, for a start value integrated with the motion
+      real(wp) :: x(max_chain)               !< element deformations
+      real(wp) :: rate(max_chain)            !< their rates
+      real(wp) :: aux_rate(n_loading_aux, max_chain)  !< W', E_abs', D_v' per element
+   end type chain_split_t
+
+   !> (D-B8) A bracketed, safeguarded Newton search for the root of a
+   !! nondecreasing function g on [lo, hi] with g(lo) <= 0 <= g(hi), by
+   !! reverse communication: the caller evaluates g and g' at x and calls
+   !! root_update until state /= root_running. A Newton step is taken when
+   !! it stays inside the bracket and at least halves the step before last
+   !! (the rule of rtsafe), otherwise the bracket is bisected, so the search
+   !! cannot diverge; it converges when |g| <= g_tol*scale, when the bracket
+   !! or the step falls below x_tol, and fails after max_iter evaluations.
+   type :: root_search_t
+      real(wp) :: lo = 0.0_wp, hi = 0.0_wp
+      real(wp) :: x = 0.0_wp
+      real(wp) :: step = 0.0_wp, step_old = 0.0_wp
+      real(wp) :: x_tol = 0.0_wp, g_tol = 0.0_wp
+      real(wp) :: g = 0.0_wp            !< the last value of g
+      integer :: iterations = 0, max_iter = 0
+      integer :: state = root_running
+   end type root_search_t
+
+contains
+
+   ! --- the root search ----------------------------------------------------
+
+   !> Begin a search on [lo, hi] from x0 (moved into the bracket).
+   pure subroutine root_begin(r, lo, hi, x0, x_tol, g_tol, max_iter)
+      type(root_search_t), intent(out) :: r
+      real(wp), intent(in) :: lo, hi, x0, x_tol, g_tol
+      integer, intent(in) :: max_iter
+      r%lo = lo
+      r%hi = hi
+      if (ieee_is_finite(x0)) then
+         r%x = min(max(x0, lo), hi)
+      else
+         r%x = 0.5_wp*(lo + hi)      ! no start (NaN, infinite): the middle
+      end if
+      r%step_old = hi - lo
+      r%step = hi - lo
+      r%x_tol = x_tol
+      r%g_tol = g_tol
+      r%max_iter = max_iter
+      r%iterations = 0
+      r%state = root_running
+   end subroutine root_begin
+
+   !> The value g and slope dg (>= 0) at r%x; scale: the size of the terms
+   !! whose difference g is (for the relative test).
+   pure subroutine root_update(r, g, dg, scale)
+      type(root_search_t), intent(inout) :: r
+      real(wp), intent(in) :: g, dg, scale
+      real(wp) :: xn
+      r%iterations = r%iterations + 1
+      r%g = g
+      if (.not. (ieee_is_finite(g) .and. ieee_is_finite(dg) .and. ieee_is_finite(r%x))) then
+         r%state = root_not_finite
+         return
+      end if
+      if (abs(g) <= r%g_tol*scale .or. abs(r%step) <= r%x_tol) then
+         r%state = root_converged
+         return
+      end if
+      if (g < 0.0_wp) then
+         r%lo = r%x
+      else
+         r%hi = r%x
+      end if
+      if (r%hi - r%lo <= r%x_tol) then
+         r%state = root_converged
+         return
+      end if
+      if (r%iterations >= r%max_iter) then
+         r%state = root_failed
+         return
+      end if
+      xn = r%lo - 1.0_wp      ! (outside: bisect unless Newton gives better)
+      if (dg > 0.0_wp .and. dg < huge(1.0_wp)) xn = r%x - g/dg   ! huge: g jumps here
+      if (.not. (xn > r%lo .and. xn < r%hi .and. abs(xn - r%x) <= 0.5_wp*abs(r%step_old))) xn = 0.5_wp*(r%lo + r%hi)
+      r%step_old = r%step
+      r%step = xn - r%x
+      r%x = xn
+   end subroutine root_update
+
+   ! --- one element --------------------------------------------------------
+
+   !> F_e(d) and dF_e/dd of a curve at once (the value as loading_curves'
+   !! curve_elastic_force computes it, the right derivative; 0 and 0 for
+   !! d <= 0): one search of a table for both.
+   pure subroutine curve_value_slope(c, d, f, k)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: d
+      real(wp), intent(out) :: f, k
+      integer :: n, lo, hi, mid
+      f = 0.0_wp
+      k = 0.0_wp
+      if (.not. d > 0.0_wp) return
+      select case (c%form)
+      case (curve_polynomial)
+         ! Tables 2, 4: F_e = sum sigma_n d**n and its derivative (Horner)
+         do n = c%order, 1, -1
+            k = k*d + f + c%sigma(n)
+            f = (f + c%sigma(n))*d
+         end do
+      case (curve_table)
+         lo = 1
+         hi = size(c%defl)
+         if (d >= c%defl(hi)) then
+            lo = hi - 1
+         else
+            do while (hi - lo > 1)
+               mid = (lo + hi)/2
+               if (c%defl(mid) <= d) then
+                  lo = mid
+               else
+                  hi = mid
+               end if
+            end do
+         end if
+         k = (c%force(lo + 1) - c%force(lo))/(c%defl(lo + 1) - c%defl(lo))
+         f = c%force(lo) + k*(d - c%defl(lo))
+      end select
+      f = max(f, 0.0_wp)
+      k = max(k, 0.0_wp)
+   end subroutine curve_value_slope
+
+   !> dF_e/dd of a curve (right derivative; 0 for d <= 0).
+   pure real(wp) function curve_slope(c, d) result(k)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: d
+      integer :: n, lo, hi, mid
+      k = 0.0_wp
+      if (.not. d > 0.0_wp) return
+      select case (c%form)
+      case (curve_polynomial)
+         do n = c%order, 2, -1
+            k = (k + real(n, wp)*c%sigma(n))*d
+         end do
+         k = k + c%sigma(1)
+      case (curve_table)
+         ! the interval holding d (the last one beyond the table), as loading_curves
+         lo = 1
+         hi = size(c%defl)
+         if (d >= c%defl(hi)) then
+            lo = hi - 1
+         else
+            do while (hi - lo > 1)
+               mid = (lo + hi)/2
+               if (c%defl(mid) <= d) then
+                  lo = mid
+               else
+                  hi = mid
+               end if
+            end do
+         end if
+         k = (c%force(lo + 1) - c%force(lo))/(c%defl(lo + 1) - c%defl(lo))
+      end select
+      k = max(k, 0.0_wp)
+   end function curve_slope
+
+   !> The branch of figure 18 at deformation x with the memory as it stands:
+   !! the same selection and force as recurrent_loading's recurrent_eval
+   !! (test_branch_matches_recurrent_eval), with the slope.
+   pure function branch_at(law, mem, x) result(bp)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x
+      type(branch_point_t) :: bp
+      real(wp) :: xi, span, dm, fe, se, xp
+      if (law%elastic .or. .not. mem%unloading .or. x >= mem%delta_max) then
+         ! the loading curve of cycle n: F_e(x - eps_n)
+         bp%loading = .true.
+         call curve_value_slope(law%curve, x - mem%eps, bp%force, bp%slope)
+      else if (law%plastic .or. .not. x > mem%delta_zero) then
+         bp%loading = .false.
+         bp%force = 0.0_wp
+         bp%slope = 0.0_wp
+      else
+         ! the unloading curve F_e(xi d_max) xi**p, xi = (x - delta_0)/(delta_max - delta_0)
+         bp%loading = .false.
+         span = mem%delta_max - mem%delta_zero
+         dm = mem%delta_max - mem%eps
+         xi = (x - mem%delta_zero)/span
+         call curve_value_slope(law%curve, xi*dm, fe, se)
+         if (mem%p > 0.0_wp) then
+            xp = xi**mem%p
+            bp%force = fe*xp
+            bp%slope = (se*dm*xp + fe*mem%p*xp/xi)/span
+         else
+            bp%force = fe
+            bp%slope = se*dm/span
+         end if
+      end if
+   end function branch_at
+
+   !> The largest deformation at which the element's branch carries no
+   !! force (its residual deformation, and for a table that starts flat the
+   !! flat part): below it the element is slack.
+   pure real(wp) function zero_extent(law, mem) result(z)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp) :: zc
+      integer :: k
+      zc = 0.0_wp
+      if (law%curve%form == curve_table) then
+         do k = 1, size(law%curve%force)
+            if (law%curve%force(k) > 0.0_wp) exit
+            zc = law%curve%defl(k)
+         end do
+      end if
+      if (law%elastic .or. .not. mem%unloading) then
+         z = mem%eps + zc
+      else if (law%plastic) then
+         z = mem%delta_max
+      else
+         z = mem%delta_zero + (mem%delta_max - mem%delta_zero)*zc/(mem%delta_max - mem%eps)
+      end if
+   end function zero_extent
+
+   !> The law with its forces multiplied by factor (> 0): curve and rate
+   !! terms; G and R, and so every deformation of figure 18, unchanged.
+   !! One side of a lap belt whose two sides are given (D-B5) carries half
+   !! the lap belt's law.
+   pure function scaled_law(law, factor) result(s)
+      type(recurrent_law_t), intent(in) :: law
+      real(wp), intent(in) :: factor
+      type(recurrent_law_t) :: s
+      s = law
+      s%curve%sigma = factor*law%curve%sigma
+      s%curve%sigma_rate = factor*law%curve%sigma_rate
+      if (allocated(law%curve%force)) s%curve%force = factor*law%curve%force
+   end function scaled_law
+
+   ! --- a chain ------------------------------------------------------------
+
+   !> The split of a chain of n elements (laws and memories) at total
+   !! deformation s (slack taken out) and its rate s_dot. max_iter bounds the
+   !! force evaluations of each search; a search that does not converge
+   !! gives status split_no_convergence (and the forces of the last iterate),
+   !! one that meets a value that is not finite split_not_finite. guess: a
+   !! start for the search's unknown (split%guess of a nearby state, e.g.
+   !! integrated with the motion from split%guess_rate); the result does not
+   !! depend on it beyond the tolerance, only the number of iterations does.
+   pure subroutine chain_split(n, law, mem, s, s_dot, max_iter, split, guess)
+      integer, intent(in) :: n
+      type(recurrent_law_t), intent(in) :: law(:)
+      type(loading_memory_t), intent(in) :: mem(:)
+      real(wp), intent(in) :: s, s_dot
+      integer, intent(in) :: max_iter
+      type(chain_split_t), intent(out) :: split
+      real(wp), intent(in), optional :: guess
+      real(wp) :: z(max_chain), zsum, slope(max_chain), w(max_chain), fv(max_chain), fv_chain, lambda
+      logical :: loading(max_chain)
+      integer :: i
+
+      split%x(1:n) = 0.0_wp
+      split%rate(1:n) = 0.0_wp
+      split%aux_rate(:, 1:n) = 0.0_wp
+      if (.not. (ieee_is_finite(s) .and. ieee_is_finite(s_dot))) then
+         split%status = split_not_finite
+         return
+      end if
+      ! slack, or no element: no force (a belt carries no compression; D-B1)
+      if (.not. s > 0.0_wp .or. n < 1) return
+
+      do i = 1, n
+         z(i) = zero_extent(law(i), mem(i))
+      end do
+      zsum = sum(z(1:n))
+      if (s <= zsum) then
+         ! taken up within the residual deformations: no force; the deformation
+         ! is shared in proportion to them (continuous with the loaded split)
+         split%region = region_unloaded
+         split%x(1:n) = s*z(1:n)/zsum
+         split%rate(1:n) = s_dot*z(1:n)/zsum
+         if (n < 3) then
+            split%guess = split%x(1)
+            split%guess_rate = split%rate(1)
+         end if
+         return
+      end if
+
+      split%region = region_loaded
+      select case (n)
+      case (1)
+         split%x(1) = s
+         associate (bp => branch_at(law(1), mem(1), s))
+            split%branch = bp%force
+            slope(1) = bp%slope
+            loading(1) = bp%loading
+         end associate
+         split%iterations = 1
+      case (2)
+         call pair_split(law, mem, s, z, max_iter, split, slope, loading, guess)
+      case default
+         call chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess)
+      end select
+      if (split%status /= split_ok) return
+
+      ! the rate split: x_i' = w_i s', the compliances' shares (D-B2)
+      call rate_weights(n, slope, w)
+      split%rate(1:n) = w(1:n)*s_dot
+      if (n < 3) then
+         split%guess = split%x(1)
+         split%guess_rate = split%rate(1)
+      else
+         ! dF_b/dt = k_i x_i' (any element with a slope; 0 when all are flat)
+         split%guess = split%branch
+         split%guess_rate = 0.0_wp
+         i = maxloc(slope(1:n), 1)
+         if (slope(i) > min_slope) split%guess_rate = slope(i)*split%rate(i)
+      end if
+      ! the chain's rate term: the weighted mean of the elements' at their rates (D-B2)
+      do i = 1, n
+         fv(i) = curve_rate_force(law(i)%curve, split%rate(i))
+      end do
+      fv_chain = sum(w(1:n)*fv(1:n))
+      split%force = 0.0_wp
+      if (split%branch > 0.0_wp) split%force = max(0.0_wp, split%branch + fv_chain)
+      ! the clip scales every element's rate term alike (each keeps its sign)
+      lambda = 1.0_wp
+      if (abs(fv_chain) > 0.0_wp) lambda = (split%force - split%branch)/fv_chain
+      if (.not. split%branch > 0.0_wp) lambda = 0.0_wp
+      do i = 1, n
+         ! E6-2 per element (docs/loading.md 4): W' = (F_b + F_v,i) x', E_abs'
+         ! = F_b x' on a loading branch while x' > 0, D_v' = F_v,i x' >= 0
+         split%aux_rate(aux_work, i) = (split%branch + lambda*fv(i))*split%rate(i)
+         split%aux_rate(aux_absorbed, i) = 0.0_wp
+         if (loading(i) .and. split%rate(i) > 0.0_wp) split%aux_rate(aux_absorbed, i) = split%branch*split%rate(i)
+         split%aux_rate(aux_rate_work, i) = lambda*fv(i)*split%rate(i)
+      end do
+   end subroutine chain_split
+
+   !> w_i = (1/k_i)/sum(1/k_j); elements of zero slope (a flat branch) share
+   !! the whole rate equally.
+   pure subroutine rate_weights(n, slope, w)
+      integer, intent(in) :: n
+      real(wp), intent(in) :: slope(:)
+      real(wp), intent(out) :: w(:)
+      integer :: n_flat
+      n_flat = count(.not. slope(1:n) > min_slope)
+      if (n_flat > 0) then
+         w(1:n) = merge(1.0_wp/real(n_flat, wp), 0.0_wp, .not. slope(1:n) > min_slope)
+      else
+         w(1:n) = 1.0_wp/slope(1:n)
+         w(1:n) = w(1:n)/sum(w(1:n))
+      end if
+   end subroutine rate_weights
+
+   !> Two elements: x_1 = e in [z_1, s - z_2] where g(e) = F_1(e) - F_2(s - e)
+   !! = 0, g' = k_1 + k_2 >= 0 (g(z_1) < 0 < g(s - z_2)). First point: the
+   !! secant through the bracket's ends (exact for linear branches).
+   pure subroutine pair_split(law, mem, s, z, max_iter, split, slope, loading, guess)
+      type(recurrent_law_t), intent(in) :: law(:)
+      type(loading_memory_t), intent(in) :: mem(:)
+      real(wp), intent(in) :: s, z(:)
+      integer, intent(in) :: max_iter
+      type(chain_split_t), intent(inout) :: split
+      real(wp), intent(out) :: slope(:)
+      logical, intent(out) :: loading(:)
+      real(wp), intent(in), optional :: guess
+      type(root_search_t) :: r
+      type(branch_point_t) :: b1, b2
+      real(wp) :: lo, hi, f2_lo, f1_hi, x0, f_low, f_high
+      lo = z(1)
+      hi = s - z(2)
+      split%iterations = 0
+      if (present(guess)) then
+         ! a start from a nearby state: the bracket's signs are known
+         ! (g(z_1) < 0 < g(s - z_2)), no need to evaluate its ends
+         x0 = guess
+      else
+         b2 = branch_at(law(2), mem(2), s - lo)
+         b1 = branch_at(law(1), mem(1), hi)
+         f2_lo = b2%force
+         f1_hi = b1%force
+         x0 = 0.5_wp*(lo + hi)
+         if (f2_lo + f1_hi > 0.0_wp) x0 = lo + (hi - lo)*f2_lo/(f2_lo + f1_hi)
+         split%iterations = 2
+      end if
+      call root_begin(r, lo, hi, x0, defl_tol*s, force_tol, max_iter)
+      do
+         b1 = branch_at(law(1), mem(1), r%x)
+         b2 = branch_at(law(2), mem(2), s - r%x)
+         call root_update(r, b1%force - b2%force, b1%slope + b2%slope, max(b1%force, b2%force))
+         if (r%state /= root_running) exit
+      end do
+      split%iterations = split%iterations + r%iterations
+      if (r%state == root_not_finite) then
+         split%status = split_not_finite
+         return
+      end if
+      if (r%state == root_failed) split%status = split_no_convergence
+      split%x(1) = r%x
+      split%x(2) = s - r%x
+      split%branch = 0.5_wp*(b1%force + b2%force)
+      if (abs(b1%force - b2%force) > 1.0e3_wp*force_tol*max(b1%force, b2%force) .and. split%status == split_ok) then
+         ! the bracket closed on a jump of a branch (a plastic law at its
+         ! turning point): the force is the one both elements admit there
+         associate (a1 => branch_at(law(1), mem(1), r%lo), a2 => branch_at(law(2), mem(2), s - r%hi), &
+                    c1 => branch_at(law(1), mem(1), r%hi), c2 => branch_at(law(2), mem(2), s - r%lo))
+            f_low = max(a1%force, a2%force)
+            f_high = min(c1%force, c2%force)
+         end associate
+         split%branch = 0.5_wp*(f_low + max(f_low, f_high))
+      end if
+      slope(1) = b1%slope
+      slope(2) = b2%slope
+      loading(1) = b1%loading
+      loading(2) = b2%loading
+   end subroutine pair_split
+
+   !> Three or more elements (sections sharing one tension): the common force
+   !! F_b in (0, F_hi] with h(F) = sum x_i(F) - s = 0, x_i(F) the element's
+   !! deformation at force F (each an inner search on [z_i, s - sum z + z_i]),
+   !! h' = sum 1/k_i. Where the bracket closes on a flat branch or a jump,
+   !! the deformations are interpolated between its ends so that they add up.
+   pure subroutine chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess)
+      integer, intent(in) :: n
+      type(recurrent_law_t), intent(in) :: law(:)
+      type(loading_memory_t), intent(in) :: mem(:)
+      real(wp), intent(in) :: s, z(:)
+      integer, intent(in) :: max_iter
+      type(chain_split_t), intent(inout) :: split
+      real(wp), intent(out) :: slope(:)
+      logical, intent(out) :: loading(:)
+      real(wp), intent(in), optional :: guess
+      type(root_search_t) :: r
+      real(wp) :: x_max(max_chain), secant(max_chain), f_max(max_chain), f_hi, f0, h, dh, x(max_chain)
+      real(wp) :: x_lo(max_chain), x_hi(max_chain), h_lo, h_hi, theta
+      integer :: i, status
+      type(branch_point_t) :: bp
+
+      do i = 1, n
+         x_max(i) = s - sum(z(1:n)) + z(i)
+         bp = branch_at(law(i), mem(i), x_max(i))
+         f_max(i) = bp%force
+         secant(i) = f_max(i)/(x_max(i) - z(i))
+      end do
+      split%iterations = n
+      f_hi = maxval(f_max(1:n))
+      ! first point: the secants in series
+      f0 = (s - sum(z(1:n)))/sum(1.0_wp/max(secant(1:n), min_slope))
+      if (present(guess)) f0 = guess
+      call root_begin(r, 0.0_wp, f_hi, f0, defl_tol*f_hi, defl_tol, max_iter)
+      do
+         call deformations_at(r%x, x, h, dh, status, split%iterations)
+         if (status /= split_ok) then
+            split%status = status
+            return
+         end if
+         call root_update(r, h, dh, s)
+         if (r%state /= root_running) exit
+      end do
+      if (r%state == root_not_finite) then
+         split%status = split_not_finite
+         return
+      end if
+      if (r%state == root_failed) split%status = split_no_convergence
+      split%branch = r%x
+      if (abs(h) > 1.0e3_wp*defl_tol*s .and. split%status == split_ok) then
+         ! a flat branch or a jump: interpolate between the bracket's ends
+         call deformations_at(r%lo, x_lo, h_lo, dh, status, split%iterations)
+         if (status == split_ok) call deformations_at(r%hi, x_hi, h_hi, dh, status, split%iterations)
+         if (status /= split_ok) then
+            split%status = status
+            return
+         end if
+         theta = 0.0_wp
+         if (h_hi - h_lo > 0.0_wp) theta = min(1.0_wp, max(0.0_wp, -h_lo/(h_hi - h_lo)))
+         x(1:n) = x_lo(1:n) + theta*(x_hi(1:n) - x_lo(1:n))
+         split%branch = r%lo + theta*(r%hi - r%lo)
+      end if
+      split%x(1:n) = x(1:n)
+      do i = 1, n
+         bp = branch_at(law(i), mem(i), x(i))
+         slope(i) = bp%slope
+         loading(i) = bp%loading
+      end do
+   contains
+      !> x_i(F) for every element, h(F) = sum x_i - s and h'(F).
+      pure subroutine deformations_at(f, xs, hf, dhf, st, iterations)
+         real(wp), intent(in) :: f
+         real(wp), intent(out) :: xs(:), hf, dhf
+         integer, intent(out) :: st
+         integer, intent(inout) :: iterations
+         type(root_search_t) :: q
+         type(branch_point_t) :: b
+         integer :: k
+         st = split_ok
+         dhf = 0.0_wp
+         do k = 1, n
+            if (.not. f > 0.0_wp) then
+               xs(k) = z(k)
+               b = branch_at(law(k), mem(k), z(k))
+            else
+               call root_begin(q, z(k), x_max(k), z(k) + f/max(secant(k), min_slope), defl_tol*s, &
+                               force_tol, max_iter)
+               do
+                  b = branch_at(law(k), mem(k), q%x)
+                  call root_update(q, b%force - f, b%slope, f)
+                  if (q%state /= root_running) exit
+               end do
+               iterations = iterations + q%iterations
+               if (q%state == root_not_finite) then
+                  st = split_not_finite
+               else if (q%state == root_failed) then
+                  st = split_no_convergence
+               end if
+               xs(k) = q%x
+            end if
+            if (b%slope > min_slope .and. dhf < huge(1.0_wp)) then
+               dhf = dhf + 1.0_wp/b%slope
+            else
+               dhf = huge(1.0_wp)       ! a flat branch: h jumps at f
+            end if
+         end do
+         hf = sum(xs(1:n)) - s
+      end subroutine deformations_at
+   end subroutine chain_split_by_force
+
+   !> Why a split failed, for the failure message.
+   pure function chain_split_text(split, s, s_dot, max_iter) result(text)
+      type(chain_split_t), intent(in) :: split
+      real(wp), intent(in) :: s, s_dot
+      integer, intent(in) :: max_iter
+      character(len=:), allocatable :: text
+      select case (split%status)
+      case (split_no_convergence)
+         text = 'the shared deflection did not converge within '//itoa(max_iter)//' iterations ' &
+                //'(*BELTOPTIONS ITER) at the deformation '//num(s)//' in, rate '//num(s_dot)//' in/s'
+      case (split_not_finite)
+         text = 'the shared deflection met a value that is not finite (deformation '//num(s)//' in, rate ' &
+                //num(s_dot)//' in/s)'
+      case default
+         text = ''
+      end select
+   end function chain_split_text
+end module belt_shared_deflection
