@@ -20,6 +20,7 @@ contains
       type(string_t), allocatable :: lines(:)
       type(group_spec_t), allocatable :: t(:)
       integer :: g, k
+      allocate (t(n_groups))
       t = card_table()
       allocate (lines(0))
       call put([character(len=100) :: '# Deck format', '', &
