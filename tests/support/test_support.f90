@@ -1,6 +1,13 @@
 !> Helpers shared by the tests: models built from card images (the same
 !! path a user's deck takes), a small deterministic random generator, and
 !! an independent kinetic-energy function written from section B.
+!!
+!! Two built-in decks: the program's default deck (decks/default.deck, the
+!! belted driver on the spring seat in the sled pulse) and the body-only
+!! deck (decks/body_only.deck, the default deck before the seat and belts:
+!! the body alone in the pulse). Tests of the free body - energy
+!! conservation, momentum invariants, convergence orders, two occupants,
+!! failures - build on the body-only deck.
 module test_support
    use kinds, only: wp
    use error_handling, only: error_t
@@ -9,11 +16,12 @@ module test_support
    use model_builder, only: build_model
    use model, only: model_t
    use default_deck, only: default_deck_lines
+   use body_only_deck, only: body_only_deck_lines
    implicit none
    private
 
    public :: default_model, model_from_cards, model_with_changes, rng_t, kinetic_energy_section_b
-   public :: cards_of_default
+   public :: cards_of_default, body_only_model, body_only_with_changes, cards_of_body_only
 
    !> A linear congruential generator: the same numbers on every machine.
    type :: rng_t
@@ -38,19 +46,52 @@ contains
       lines = default_deck_lines()
    end function cards_of_default
 
+   !> The model of the body-only deck (decks/body_only.deck): the default
+   !! occupant alone in the default pulse, no seat, no belts.
+   function body_only_model() result(m)
+      type(model_t) :: m
+      type(error_t) :: err
+      call model_from_lines(body_only_deck_lines(), m, err)
+      if (err%failed()) error stop 'the body-only deck does not parse'
+   end function body_only_model
+
+   !> The body-only deck's card images.
+   function cards_of_body_only() result(lines)
+      type(string_t), allocatable :: lines(:)
+      lines = body_only_deck_lines()
+   end function cards_of_body_only
+
    !> A model from the default deck followed by extra card groups (which
    !! replace the default's groups of the same kind).
    subroutine model_with_changes(cards, m, err)
       character(len=*), intent(in) :: cards(:)
       type(model_t), intent(out) :: m
       type(error_t), intent(inout) :: err
+      call model_from_base(default_deck_lines(), 'default', cards, m, err)
+   end subroutine model_with_changes
+
+   !> A model from the body-only deck followed by extra card groups (which
+   !! replace its groups of the same kind).
+   subroutine body_only_with_changes(cards, m, err)
+      character(len=*), intent(in) :: cards(:)
+      type(model_t), intent(out) :: m
+      type(error_t), intent(inout) :: err
+      call model_from_base(body_only_deck_lines(), 'body_only', cards, m, err)
+   end subroutine body_only_with_changes
+
+   subroutine model_from_base(base, base_name, cards, m, err)
+      type(string_t), intent(in) :: base(:)
+      character(len=*), intent(in) :: base_name
+      character(len=*), intent(in) :: cards(:)
+      type(model_t), intent(out) :: m
+      type(error_t), intent(inout) :: err
       type(deck_t) :: deck
       call deck_init(deck)
-      call deck_add_lines(deck, 'default', '', default_deck_lines(), err)
+      call deck_add_lines(deck, base_name, '', base, err)
       call deck_add_lines(deck, 'changes', '', to_strings(cards), err)
       call deck_finish(deck, err)
       if (.not. err%failed()) call build_model(deck, m, err)
-   end subroutine model_with_changes
+   end subroutine model_from_base
 
    !> A model from card images alone.
    subroutine model_from_cards(cards, m, err)
