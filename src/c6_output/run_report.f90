@@ -6,13 +6,19 @@
 !! DTPRINT are); the summary at the end (maxima and when they occurred,
 !! injuries, the end of the run, the energy balance, the cost).
 module run_report
-   use kinds, only: wp, deg, g_std, i8
+   use kinds, only: wp, deg, g_std, i8, pi
    use strings, only: itoa
    use model, only: model_t, n_seg, n_joint, n_injury, n_arc, joint_partner, segment_name, &
       joint_name, arc_name, form_name, form_table, integrator_name, end_option_name, nint_adams, &
-      astart_name, solver_name, material_name
+      astart_name, solver_name, material_name, seat_none, seat_springs, seat_rigid_beam, seat_beams, &
+      seat_form_name, n_belt_card, belt_card_lap2, coupling_name, nbelt_lap, nbelt_torso
    use deck_reader, only: deck_t, echo_bad, echo_header
-   use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text
+   use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text, g_seat, g_seatbeaminit, &
+      g_seatbeams
+   use deck_fields, only: group_given
+   use belt_geometry, only: belt_section_geometry_t, lap_belt_geometry
+   use seat_beam_statics, only: n_beam_quantities, beam_quantity_name, bq_a, bq_ap, bq_w0, bq_fhps0, &
+      bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    use error_handling, only: error_t, error_set, exit_io
    use listing, only: listing_t
    use loading_curves, only: curve_is_defined, curve_polynomial, curve_table
@@ -95,7 +101,7 @@ contains
       class(listing_sink_t), intent(inout) :: this
       call write_banner(this%lst, this%deck, this%m, this%version)
       call write_deck_echo(this%lst, this%deck)
-      call write_parameters(this%lst, this%m)
+      call write_parameters(this%lst, this%m, this%deck)
    end subroutine write_head
 
    subroutine sink_record(this, frame, err)
@@ -259,10 +265,12 @@ contains
       s = name//':'//itoa(line)
    end function source_line
 
-   !> Tables 1-6 of the report, as the run uses them.
-   subroutine write_parameters(lst, m)
+   !> Tables 1-6 of the report, as the run uses them, with the seat's
+   !! parameters (C.1) and Table 2 for the belts.
+   subroutine write_parameters(lst, m, deck)
       type(listing_t), intent(inout) :: lst
       type(model_t), intent(in) :: m
+      type(deck_t), intent(in) :: deck
       character(len=132) :: line
       integer :: i
 
@@ -346,6 +354,8 @@ contains
       end if
 
       call write_loading_curves(lst, m)
+      call write_seat(lst, m, deck)
+      call write_belts(lst, m)
 
       associate (b => m%body)
          call lst%heading('TABLE 1 - CONTACT ARCS', 13)
@@ -411,12 +421,16 @@ contains
                   call lst%put(line)
                end if
             case (curve_table)
-               call lst%put('  curve'//fixed(real(k, wp), 4, 0)//': table of '//itoa(size(c%defl)) &
-                            //' points, deflection (in) : force (lb)')
+               write (line, '(a,i3,a)') '  curve', k, ': table of '//itoa(size(c%defl))//' points, deflection (in) : force (lb)'
+               call lst%put(line)
                do j = 1, size(c%defl), 5
                   write (line, '(9x,5(es10.3,a,es10.3,2x))') (c%defl(n), ':', c%force(n), n=j, min(j + 4, size(c%defl)))
                   call lst%put(line)
                end do
+               if (any(c%sigma_rate > 0.0_wp)) then
+                  write (line, '(a,5es11.3)') '             rate terms', c%sigma_rate
+                  call lst%put(line)
+               end if
             end select
          end associate
       end do
@@ -429,6 +443,315 @@ contains
             //itoa(m%loading%belt_curve(k)))
       end do
    end subroutine write_loading_curves
+
+   !> The seat's parameters (C.1: "the present seat parameters are c_s, s,
+   !! beta_1, beta_2, beta_3, z_o, z-hat, gamma_o, W_o and F'_so"; C.4.d for
+   !! the beam seats; docs/seat.md), one a line: symbol, meaning, unit, value
+   !! and the card field it comes from. Nothing when the deck has no seat.
+   subroutine write_seat(lst, m, deck)
+      type(listing_t), intent(inout) :: lst
+      type(model_t), intent(in) :: m
+      type(deck_t), intent(in) :: deck
+      character(len=*), parameter :: form_text(3) = [character(len=48) :: &
+         'the present seat (figures 11-12)', 'a rigid beam on springs (figures 15-16)', &
+         'a pair of non-rigid beams (figures 13-14)']
+      real(wp) :: q(n_beam_quantities)
+      integer :: j, n
+      associate (p => m%seat)
+         if (p%form == seat_none) return
+         n = merge(16, merge(29, 14, p%form == seat_rigid_beam), p%form == seat_springs)
+         call lst%heading('SEAT (C.1, C.4.d) - FORM '//trim(seat_form_name(p%form))//': '// &
+                          trim(form_text(p%form)), n)
+         call lst%put('  SYMBOL    PARAMETER                                UNIT             VALUE   FROM')
+         select case (p%form)
+         case (seat_springs)
+            call put_value('z_o', 'hip to front edge', 'in', p%z0, '*SEAT Z0')
+            call put_value('z-hat', 'front region (linear hip spring)', 'in', p%z_hat, '*SEAT ZHAT')
+            call put_angle('gamma_o', 'undeflected cushion angle', p%gamma0, '*SEAT GAMMA0')
+            call put_check('W_o', 'static load at the hip', 'W0')
+            call put_check('F''_so', 'static load on the front edge', 'FPS0')
+            call put_value('c_s', 'hip damper', 'lb*s/in', p%c_s, '*SEATSPRINGS CS')
+            call put_value('s', 'front-edge spring', 'lb/in', p%s, '*SEATSPRINGS S')
+            call put_value('beta_1', 'hip spring, coefficient of d', 'lb/in', p%beta(1), '*SEATSPRINGS BETA1')
+            call put_value('beta_2', 'hip spring, coefficient of d^2', 'lb/in^2', p%beta(2), '*SEATSPRINGS BETA2')
+            call put_value('beta_3', 'hip spring, coefficient of d^3', 'lb/in^3', p%beta(3), '*SEATSPRINGS BETA3')
+         case (seat_rigid_beam)
+            call put_value('z_o', 'hip to front edge', 'in', p%z0, '*SEAT Z0')
+            call put_value('c_s', 'rear support damper', 'lb*s/in', p%c_s, '*SEATSPRINGS CS')
+            call put_value('s', 'front support spring', 'lb/in', p%s, '*SEATSPRINGS S')
+            call put_value('beta_1', 'rear support, coefficient of d', 'lb/in', p%beta(1), '*SEATSPRINGS BETA1')
+            call put_value('beta_2', 'rear support, coefficient of d^2', 'lb/in^2', p%beta(2), '*SEATSPRINGS BETA2')
+            call put_value('beta_3', 'rear support, coefficient of d^3', 'lb/in^3', p%beta(3), '*SEATSPRINGS BETA3')
+            call put_value('m_s', 'beam mass', 'lb*s^2/in', p%m_s, '*SEATBEAM MS')
+            call put_value('I_s', 'beam moment of inertia', 'lb*in*s^2', p%i_s, '*SEATBEAM IS')
+            call put_value('y_gu', 'unloaded height of the beam''s CG', 'in', p%y_gu, '*SEATBEAM YGU')
+            call put_angle('gamma_u', 'unloaded beam angle', p%gamma_u, '*SEATBEAM GAMMAU')
+            call put_value('k_hip', 'hip contact stiffness', 'lb/in', p%k_hip, '*SEATBEAM KHIP')
+            call put_value('k_edge', 'leg contact stiffness at the front edge', 'lb/in', p%k_edge, '*SEATBEAM KEDGE')
+            call lst%put('  the ten quantities at t = 0: four given, six solved from the six initial relations (C.4.d)')
+            q = 0.0_wp
+            q([bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0]) = &
+               [p%a, p%a_prime, p%w0, p%fhps0, p%fs0, p%fps0, p%ds0, p%dz0, p%yg0, p%gamma0/deg]
+            do j = 1, n_beam_quantities
+               call put_quantity(j, q(j))
+            end do
+         case (seat_beams)
+            call put_value('z_o', 'hip to front edge', 'in', p%z0, '*SEAT Z0')
+            call put_angle('gamma_o', 'undeflected cushion angle', p%gamma0, '*SEAT GAMMA0')
+            call put_value('l', 'hip beam length (built in at both ends)', 'in', p%ell, '*SEATBEAMS L')
+            call put_value('k', 'cantilever length / l', '-', p%k_ratio, '*SEATBEAMS K')
+            call put_value('e_1', 'hip beam 3 E I', 'lb*in^2', p%e1, '*SEATBEAMS E1')
+            call put_value('e_2', 'cantilever 3 E I', 'lb*in^2', p%e2, '*SEATBEAMS E2')
+            call put_value('x''''_sc', 'a point of the cushion line, x', 'in', p%x_sc, '*SEATBEAMS XSC')
+            if (group_given(deck, g_seatbeams, 'YSC')) then
+               call put_value('y''''_sc', 'a point of the cushion line, y', 'in', p%y_sc, '*SEATBEAMS YSC')
+            else
+               call put_value('y''''_sc', 'a point of the cushion line, y', 'in', p%y_sc, &
+                              'default: touches the hip arc at t = 0')
+            end if
+         end select
+         call put_value('mu', 'friction at the hip', '-', p%mu, '*MATERIALS 1 MU')
+         call put_value('xi', 'friction velocity limit', 'in/s', p%xi, '*MATERIALS 1 XI')
+      end associate
+   contains
+      subroutine put_value(symbol, meaning, unit, x, from)
+         character(len=*), intent(in) :: symbol, meaning, unit, from
+         real(wp), intent(in) :: x
+         character(len=12) :: value
+         write (value, '(es12.4)') x
+         call put_text(symbol, meaning, unit, value, from)
+      end subroutine put_value
+      subroutine put_angle(symbol, meaning, x, from)
+         character(len=*), intent(in) :: symbol, meaning, from
+         real(wp), intent(in) :: x
+         call put_text(symbol, meaning, 'deg', fixed(x/deg, 12, 3), from)
+      end subroutine put_angle
+      !> symbol (10 columns), meaning (41), unit (10), value (12), source.
+      subroutine put_text(symbol, meaning, unit, value, from)
+         character(len=*), intent(in) :: symbol, meaning, unit, value, from
+         character(len=10) :: c_symbol, c_unit
+         character(len=41) :: c_meaning
+         character(len=12) :: c_value
+         c_symbol = symbol
+         c_meaning = meaning
+         c_unit = unit
+         c_value = adjustr(value)
+         call lst%put('  '//c_symbol//c_meaning//c_unit//c_value//'   '//from)
+      end subroutine put_text
+      !> W_o or F'_so of the present seat: given on *SEAT as a check, or not.
+      subroutine put_check(symbol, meaning, field)
+         character(len=*), intent(in) :: symbol, meaning, field
+         if (group_given(deck, g_seat, field)) then
+            call put_value(symbol, meaning, 'lb', merge(m%seat%w0, m%seat%fps0, field == 'W0'), &
+                           '*SEAT '//field//' (a check: the statics are in C.2 below)')
+         else
+            call put_text(symbol, meaning, 'lb', 'not given', '*SEAT '//field//' (the statics are in C.2 below)')
+         end if
+      end subroutine put_check
+      !> One of the rigid beam's ten initial quantities, given or solved.
+      subroutine put_quantity(k, x)
+         integer, intent(in) :: k
+         real(wp), intent(in) :: x
+         character(len=*), parameter :: symbol(n_beam_quantities) = [character(len=10) :: &
+            'a', 'a''', 'W_o', 'F-hat''_so', 'F_so', 'F''_so', 'Delta_so', 'Delta_zo', 'y_go', 'gamma_o']
+         character(len=*), parameter :: meaning(n_beam_quantities) = [character(len=41) :: &
+            'front edge to rear support', 'front edge to beam CG', 'static load at the hip', &
+            'static leg load on the front edge', 'rear support force', 'front support force', &
+            'rear support deflection', 'front support deflection', 'height of the beam''s CG', 'beam angle']
+         character(len=*), parameter :: unit(n_beam_quantities) = [character(len=10) :: &
+            'in', 'in', 'lb', 'lb', 'lb', 'lb', 'in', 'in', 'in', 'deg']
+         integer :: gid
+         character(len=:), allocatable :: from
+         gid = g_seatbeaminit
+         if (any(k == [bq_w0, bq_fps0, bq_gamma0])) gid = g_seat
+         if (group_given(deck, gid, trim(beam_quantity_name(k)))) then
+            from = 'given: *'//trim(merge('SEAT        ', 'SEATBEAMINIT', gid == g_seat))//' '//trim(beam_quantity_name(k))
+         else
+            from = 'solved'
+         end if
+         if (k == bq_gamma0) then
+            call put_angle(symbol(k), meaning(k), x*deg, from)
+         else
+            call put_value(symbol(k), meaning(k), unit(k), x, from)
+         end if
+      end subroutine put_quantity
+   end subroutine write_seat
+
+   !> Table 2 of the report for the belts NBELT calls for: a column per
+   !! section j (1 lap belt, 2 lower torso, 3 upper torso; 4 the lap belt's
+   !! second side, LAPSIDES = 2), a row per parameter: h, l_o, phi_o, l'_o,
+   !! phi'_o, the slack, the loading (curve, G, R; the curves' sigma_n and
+   !! sigma_n+N are in the loading curves above) and the body surface under
+   !! the section; then how the sections share their tension.
+   subroutine write_belts(lst, m)
+      type(listing_t), intent(inout) :: lst
+      type(model_t), intent(in) :: m
+      character(len=*), parameter :: section_name(n_belt_card) = [character(len=16) :: &
+         '1. LAP BELT', '2. LOWER TORSO', '3. UPPER TORSO', '4. LAP, SIDE 2']
+      character(len=132) :: line
+      integer :: cols(n_belt_card), nc, j, k
+      logical :: used(n_belt_card)
+      real(wp) :: length10, phi10
+      associate (b => m%belts, ld => m%loading, nbelt => m%options%nbelt)
+         if (nbelt == 0) return
+         used = [nbelt_lap(nbelt), nbelt_torso(nbelt), nbelt_torso(nbelt), nbelt_lap(nbelt) .and. b%lap_sides == 2]
+         nc = count(used)
+         cols(1:nc) = pack([(j, j=1, n_belt_card)], used)
+         ! the lap belt's length and angle at t = 0 (C.2 with errata C2-2, C2-3)
+         length10 = 0.0_wp
+         phi10 = 0.0_wp
+         call lst%heading('TABLE 2 - BELTS (C.4.e, C.2): NBELT = '//itoa(nbelt), 17)
+         line = '  PARAMETER (SUBSCRIPT J)                             UNIT'
+         do k = 1, nc
+            line(col(k):col(k) + 13) = adjustr(section_name(cols(k))(1:14))
+         end do
+         call lst%put(line)
+         call put_row('h', 'wrap radius (lap); distance on the torso', 'in', b%h)
+         line = row_head('l_o', 'length at t = 0', 'in')
+         do k = 1, nc
+            j = cols(k)
+            if (is_lap(j)) then
+               call lap_initial(j, length10, phi10)
+               write (line(col(k):), '(es14.4,a)') length10, ' c'
+            else
+               write (line(col(k):), '(es14.4)') b%length0(j)
+            end if
+         end do
+         call lst%put(line)
+         line = row_head('phi_o', 'angle at t = 0, anchor to belt', 'deg')
+         do k = 1, nc
+            j = cols(k)
+            if (is_lap(j)) then
+               call lap_initial(j, length10, phi10)
+               line(col(k):) = fixed(phi10/deg, 14, 3)//' c'
+            else
+               line(col(k):) = fixed(b%phi0(j)/deg, 14, 3)
+            end if
+         end do
+         call lst%put(line)
+         line = row_head('l''_o', 'lap anchor to the initial hip', 'in')
+         do k = 1, nc
+            j = cols(k)
+            if (is_lap(j)) then
+               write (line(col(k):), '(es14.4)') b%length_anchor(j)
+            else
+               line(col(k):) = '             -'
+            end if
+         end do
+         call lst%put(line)
+         line = row_head('phi''_o', 'lap, anchor to the initial hip', 'deg')
+         do k = 1, nc
+            j = cols(k)
+            if (is_lap(j)) then
+               line(col(k):) = fixed(b%phi_anchor(j)/deg, 14, 3)
+            else
+               line(col(k):) = '             -'
+            end if
+         end do
+         call lst%put(line)
+         call put_row('Delta', 'slack', 'in', b%slack)
+         line = row_head('k', 'loading curve (N: its order)', '-')
+         do k = 1, nc
+            j = cols(k)
+            line(col(k):) = curve_text(ld%belt_curve(section(j)), b%lap_sides == 2 .and. is_lap(j))
+         end do
+         call lst%put(line)
+         call put_row('G', 'residual / maximum deformation', '-', ld%belt_g([1, 2, 3, 1]))
+         call put_row('R', 'energy conserved / absorbed', '-', ld%belt_r([1, 2, 3, 1]))
+         line = row_head('', 'body under the section (Table 4)', '-')
+         do k = 1, nc
+            j = cols(k)
+            line(col(k):) = body_text(merge(11, 12, is_lap(j)))
+         end do
+         call lst%put(line)
+         call lst%put('  c: computed (C.2 with errata C2-2, C2-3); sigma_n, sigma_n+N: the loading curves above')
+         if (b%lap_sides == 2) call lst%put('  the lap belt''s two sides: each carries half of the lap belt''s curve' &
+                                            //' and of the abdomen''s (docs/belts.md 4)')
+         call lst%put('  coupling '//trim(coupling_name(b%coupling))//': '//trim(coupling_text(b%coupling)) &
+                      //'   lap sides '//itoa(b%lap_sides)//'   iteration limit '//itoa(b%max_iter))
+      end associate
+   contains
+      pure logical function is_lap(j)
+         integer, intent(in) :: j
+         is_lap = j == 1 .or. j == belt_card_lap2
+      end function is_lap
+      !> The loading section (1-3) of card j.
+      pure integer function section(j)
+         integer, intent(in) :: j
+         section = merge(1, j, j == belt_card_lap2)
+      end function section
+      !> The first column of section column k.
+      pure integer function col(k)
+         integer, intent(in) :: k
+         col = 63 + 16*(k - 1)
+      end function col
+      !> symbol (10 columns), meaning (42), unit (8).
+      function row_head(symbol, meaning, unit) result(h)
+         character(len=*), intent(in) :: symbol, meaning, unit
+         character(len=132) :: h
+         character(len=10) :: c_symbol
+         character(len=42) :: c_meaning
+         character(len=8) :: c_unit
+         c_symbol = symbol
+         c_meaning = meaning
+         c_unit = unit
+         h = '  '//c_symbol//c_meaning//c_unit
+      end function row_head
+      subroutine put_row(symbol, meaning, unit, x)
+         character(len=*), intent(in) :: symbol, meaning, unit
+         real(wp), intent(in) :: x(n_belt_card)
+         integer :: kk
+         line = row_head(symbol, meaning, unit)
+         do kk = 1, nc
+            write (line(col(kk):), '(es14.4)') x(cols(kk))
+         end do
+         call lst%put(line)
+      end subroutine put_row
+      !> C.2 for lap card j: the free length with its wrap, and phi_10 =
+      !! phi'_0 + asin(h / l'_0), from the initial hip (the interior origin).
+      subroutine lap_initial(j, length, phi)
+         integer, intent(in) :: j
+         real(wp), intent(out) :: length, phi
+         type(belt_section_geometry_t) :: g
+         g = lap_belt_geometry(m%belts%h(j), m%belts%length_anchor(j), m%belts%phi_anchor(j), [0.0_wp, 0.0_wp], &
+                               m%body%theta0(1))
+         length = g%length0
+         phi = m%belts%phi_anchor(j) + asin(m%belts%h(j)/m%belts%length_anchor(j))
+         phi = modulo(phi + pi, 2.0_wp*pi) - pi
+      end subroutine lap_initial
+      function curve_text(kc, half) result(t)
+         integer, intent(in) :: kc
+         logical, intent(in) :: half
+         character(len=14) :: t
+         character(len=14) :: order
+         order = 'table'
+         if (m%loading%curve(kc)%form == curve_polynomial) order = 'N = '//itoa(m%loading%curve(kc)%order)
+         t = merge('half ', '     ', half)//itoa(kc)//', '//trim(order)
+         t = adjustr(t)
+      end function curve_text
+      function body_text(l) result(t)
+         integer, intent(in) :: l
+         character(len=14) :: t
+         if (m%loading%material_curve(l) > 0) then
+            t = itoa(l)//' '//trim(material_name(l))
+         else
+            t = itoa(l)//' rigid'
+         end if
+         t = adjustr(t)
+      end function body_text
+      function coupling_text(c) result(t)
+         integer, intent(in) :: c
+         character(len=:), allocatable :: t
+         select case (c)
+         case (1)
+            t = 'every section its own tension (the report''s phase two)'
+         case (2)
+            t = 'the two torso sections one tension'
+         case default
+            t = 'the three sections one tension'
+         end select
+      end function coupling_text
+   end subroutine write_belts
 
    subroutine write_pulse(lst, m)
       type(listing_t), intent(inout) :: lst
