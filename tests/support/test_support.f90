@@ -12,7 +12,7 @@ module test_support
    use kinds, only: wp
    use error_handling, only: error_t
    use text_io, only: string_t
-   use deck_reader, only: deck_t, deck_init, deck_add_lines, deck_finish
+   use deck_reader, only: deck_t, deck_init, deck_add_lines, deck_add_file, deck_finish
    use model_builder, only: build_model
    use model, only: model_t
    use default_deck, only: default_deck_lines
@@ -22,6 +22,7 @@ module test_support
 
    public :: default_model, model_from_cards, model_with_changes, rng_t, kinetic_energy_section_b
    public :: cards_of_default, body_only_model, body_only_with_changes, cards_of_body_only
+   public :: shipped_model
 
    !> A linear congruential generator: the same numbers on every machine.
    type :: rng_t
@@ -92,6 +93,27 @@ contains
       call deck_finish(deck, err)
       if (.not. err%failed()) call build_model(deck, m, err)
    end subroutine model_from_base
+
+   !> The model of a shipped deck (decks/<name>; the directory is the
+   !! environment variable HSRI2D_DECKS, which CMake sets for the unit
+   !! tests) followed by extra card groups, which replace the deck's groups
+   !! of the same kind.
+   subroutine shipped_model(name, cards, m, err)
+      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: cards(:)
+      type(model_t), intent(out) :: m
+      type(error_t), intent(inout) :: err
+      type(deck_t) :: deck
+      character(len=4096) :: dir
+      integer :: length, status
+      call get_environment_variable('HSRI2D_DECKS', dir, length, status)
+      if (status /= 0) dir = '../../../decks'    ! (from build/<config>/tests)
+      call deck_init(deck)
+      call deck_add_file(deck, trim(dir)//'/'//name, err)
+      if (size(cards) > 0) call deck_add_lines(deck, 'changes', '', to_strings(cards), err)
+      call deck_finish(deck, err)
+      if (.not. err%failed()) call build_model(deck, m, err)
+   end subroutine shipped_model
 
    !> A model from card images alone.
    subroutine model_from_cards(cards, m, err)
