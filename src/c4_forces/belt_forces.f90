@@ -37,7 +37,7 @@
 !! tolerance, where the bracket's ends would take several; the forces do not
 !! depend on it (docs/belts.md 3).
 module belt_forces
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
    use kinds, only: wp, deg
    use strings, only: num, itoa
    use model, only: model_t, n_dof, n_seg, belt_card_lap2, coupling_torso
@@ -269,7 +269,7 @@ contains
       type(belt_kinematics_t) :: kin
       type(chain_split_t) :: sp
       real(wp) :: s, s_dot, g(n_dof), f
-      integer :: c, n, a, q
+      integer :: c, n, a, q, i
       associate (u1 => size(extra), u2 => size(extra_rate))
       end associate
       bb = belt_body_of_state(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel)
@@ -294,7 +294,9 @@ contains
             end if
             f = sp%force
             b = b - f*g
-            aux_rate(a + 1:a + n_loading_aux*n) = reshape(sp%aux_rate(:, 1:n), [n_loading_aux*n])
+            do i = 1, n       ! (element by element: no temporary of a reshape)
+               aux_rate(a + n_loading_aux*(i - 1) + 1:a + n_loading_aux*i) = sp%aux_rate(:, i)
+            end do
             ! the work of the moving anchorages: F times the deformation rate at fixed z (D-B4)
             aux_rate(a + n_loading_aux*n + 1) = f*(s_dot - dot_product(g, st%zdot))
             aux_rate(a + n_loading_aux*n + 2) = sp%guess_rate     ! the search's start (D-B7)
@@ -304,23 +306,43 @@ contains
 
    !> After an accepted step: every element's memory from its share of the
    !! accepted deformation and rate (figure 18); a changed law restarts the
-   !! stepper.
+   !! stepper. An element's rate is x_i' = w_i s' with w_i >= 0 (0 when the
+   !! chain is slack), and its memory changes only at x_i' < 0 while it
+   !! loads, or x_i' /= 0 while it unloads (recurrent_accept): a chain that is
+   !! slack, or does not move, or lengthens while every element loads, keeps
+   !! its memories, and needs no split.
    subroutine belt_accept(this, st, extra, aux, result)
       class(belt_effect_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
-      type(belt_state_t) :: bs
-      integer :: c, i
+      type(belt_body_t) :: bb
+      type(belt_kinematics_t) :: kin
+      type(chain_split_t) :: sp
+      real(wp) :: s, s_dot
+      integer :: c, i, q, n
       logical :: changed
       associate (u1 => size(extra))
       end associate
-      bs = belt_section_state(this, st, aux)
+      bb = belt_body_of_state(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel)
       do c = 1, this%n_chains
-         if (bs%split(c)%status /= split_ok) cycle
          associate (ch => this%chain(c))
-            do i = 1, ch%n_elements
-               call recurrent_accept(ch%law(i), ch%mem(i), bs%split(c)%x(i), bs%split(c)%rate(i), changed)
+            s = -ch%slack
+            s_dot = 0.0_wp
+            do q = 1, ch%n_sections
+               kin = belt_kinematics(this%geom(ch%section(q)), bb, angle=.false.)
+               s = s + kin%delta
+               s_dot = s_dot + kin%delta_rate
+            end do
+            n = ch%n_elements
+            if (.not. s > 0.0_wp) cycle
+            if (.not. abs(s_dot) > 0.0_wp .and. ieee_is_finite(s_dot)) cycle
+            if (s_dot > 0.0_wp .and. .not. any(ch%mem(1:n)%unloading)) cycle
+            call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, &
+                             aux(ch%aux_offset + n_loading_aux*n + 2))
+            if (sp%status /= split_ok) cycle
+            do i = 1, n
+               call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), sp%rate(i), changed)
                result%restart = result%restart .or. changed
             end do
          end associate

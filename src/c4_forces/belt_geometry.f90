@@ -184,14 +184,13 @@ contains
       type(belt_body_t), intent(in) :: bb
       logical, intent(in), optional :: angle
       type(belt_kinematics_t) :: k
-      real(wp) :: dp_dz(2, n_dof), p(2), p_rate(2), e(2), u, v, d, wrap, length, r, cr, ts(2)
+      real(wp) :: p(2), p_rate(2), e(2), u, v, d, wrap, length, r, cr, ts(2)
       integer :: s
       logical :: with_angle
 
       with_angle = .true.
       if (present(angle)) with_angle = angle
       s = g%segment
-      call point_jacobian(bb, s, dp_dz)          ! the proximal joint of segment s
 
       if (g%kind == belt_lap) then
          u = bb%joint(1, 1) - g%anchor(1)
@@ -213,7 +212,7 @@ contains
             e = [u*cr - v*r, v*cr + u*r]/d
             k%delta = length - g%length0
             k%delta_rate = dot_product(e, bb%joint_rate(:, 1)) - g%h*bb%theta_rate(1)   ! C.4.e δ̇_1
-            k%gradient = matmul(e, dp_dz)
+            call joint_gradient(bb, s, e, k%gradient)
             k%gradient(s) = k%gradient(s) - g%h    ! − h_1 ∂θ_1/∂α_1
             return
          end if
@@ -235,23 +234,25 @@ contains
       e = [u, v]/d                                 ! e(φ_j)
       k%delta = d - g%length0                      ! δ_j = √(u_j² + v_j²) − ℓ_j0
       k%delta_rate = dot_product(e, p_rate)        ! = ẋ_j cos φ_j + ẏ_j sin φ_j + h_j θ̇_j sin(φ_j − θ_j)
-      k%gradient = matmul(e, dp_dz)
+      call joint_gradient(bb, s, e, k%gradient)
       k%gradient(s) = k%gradient(s) + g%h*dot_product(e, ts)
    end function belt_kinematics
 
-   !> ∂(interior position of the proximal joint of segment s)/∂z, s = 1..3:
-   !! the hip moves with x_h, y_h (rotated into the interior frame), joint 2
-   !! also with α_1 (L_1), joint 3 with α_1 and α_2 (section B).
-   pure subroutine point_jacobian(bb, s, dp_dz)
+   !> e . ∂(interior position of the proximal joint of segment s)/∂z, s =
+   !! 1..3: the hip moves with x_h, y_h (rotated into the interior frame),
+   !! joint 2 also with α_1 (L_1), joint 3 with α_1 and α_2 (section B).
+   !! Written out: the Jacobian has 2 + 2(s - 1) entries that are not zero.
+   pure subroutine joint_gradient(bb, s, e, grad)
       type(belt_body_t), intent(in) :: bb
       integer, intent(in) :: s
-      real(wp), intent(out) :: dp_dz(2, n_dof)
+      real(wp), intent(in) :: e(2)
+      real(wp), intent(out) :: grad(n_dof)
       integer :: k
-      dp_dz = 0.0_wp
-      dp_dz(:, hip_x) = [bb%cphi, bb%sphi]      ! R(Φ) e_x
-      dp_dz(:, hip_y) = [-bb%sphi, bb%cphi]     ! R(Φ) e_y
+      grad = 0.0_wp
+      grad(hip_x) = e(1)*bb%cphi + e(2)*bb%sphi       ! e . R(Φ) e_x
+      grad(hip_y) = e(1)*(-bb%sphi) + e(2)*bb%cphi    ! e . R(Φ) e_y
       do k = 1, s - 1
-         dp_dz(:, k) = bb%length(k)*[-bb%st(k), bb%ct(k)]
+         grad(k) = e(1)*(bb%length(k)*(-bb%st(k))) + e(2)*(bb%length(k)*bb%ct(k))
       end do
-   end subroutine point_jacobian
+   end subroutine joint_gradient
 end module belt_geometry
