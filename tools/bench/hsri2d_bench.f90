@@ -13,7 +13,8 @@
 !!
 !!   hsri2d_bench [--repeat N] [--run-only] [--at T] DECK [DECK ...]
 !!
-!! --run-only times the simulation alone (for a profiler: perf, callgrind);
+!! --run-only times the simulation alone, and nothing else (for a profiler:
+!! perf, callgrind);
 !! --at T measures the effects' costs at the state RK4 reaches at time T
 !! (the deck's DT; memories as at t = 0, so loading branches), e.g. where
 !! the belts carry load, rather than at the initial state.
@@ -121,6 +122,7 @@ program hsri2d_bench
             r%evaluations, r%stats%steps
       end associate
    end do
+   if (run_only) stop
    write (output_unit, '(a)') ''
    if (t_at > 0.0_wp) then
       write (output_unit, '(a)') '  CPU time of each effect''s add_forces and of the solve, per evaluation, at the state ' &
