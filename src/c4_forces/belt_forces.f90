@@ -45,7 +45,7 @@ module belt_forces
       energy_supplied, n_energy_kinds
    use output_series, only: output_series_t, series_new, column
    use belt_geometry, only: belt_section_geometry_t, belt_kinematics_t, belt_body_t, &
-      lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state
+      lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state, belt_body_fill, belt_section_add
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, belt_law, material_law, recurrent_accept, &
       recurrent_energies, recurrent_is_elastic, n_loading_aux
    use belt_shared_deflection, only: max_chain, chain_split_t, chain_split, chain_split_text, split_ok, scaled_law
@@ -88,6 +88,7 @@ module belt_forces
       integer :: n_chains = 0
       type(belt_chain_t) :: chain(max_belt_sections)
       real(wp) :: length(n_seg) = 0.0_wp              !< segment lengths (L_1, L_2 place joints 2, 3)
+      integer :: last_segment = 3                     !< the highest segment its sections lie on
       integer :: max_iter = 60
    contains
       procedure :: add_forces => belt_add_forces
@@ -159,6 +160,7 @@ contains
             call add_chain([1, 2, 3])
          end select
       end associate
+      e%last_segment = maxval(e%geom(1:e%n_sections)%segment)
       e%needs_vehicle = .true.
       e%has_energy = .true.
       e%n_aux = 0
@@ -266,13 +268,13 @@ contains
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: extra_rate(:), aux_rate(:)
       type(belt_body_t) :: bb
-      type(belt_kinematics_t) :: kin
       type(chain_split_t) :: sp
       real(wp) :: s, s_dot, g(n_dof), f
       integer :: c, n, a, q, i
       associate (u1 => size(extra), u2 => size(extra_rate))
       end associate
-      bb = belt_body_of_state(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel)
+      call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
+                          this%last_segment, bb)
       do c = 1, this%n_chains
          associate (ch => this%chain(c))
             ! the chain's deformation: its sections' nominal deformations less their slack (D-B1)
@@ -280,10 +282,7 @@ contains
             s_dot = 0.0_wp
             g = 0.0_wp
             do q = 1, ch%n_sections
-               kin = belt_kinematics(this%geom(ch%section(q)), bb, angle=.false.)
-               s = s + kin%delta
-               s_dot = s_dot + kin%delta_rate
-               g = g + kin%gradient
+               call belt_section_add(this%geom(ch%section(q)), bb, s, s_dot, g)
             end do
             n = ch%n_elements
             a = ch%aux_offset
@@ -317,22 +316,21 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
       type(belt_body_t) :: bb
-      type(belt_kinematics_t) :: kin
       type(chain_split_t) :: sp
-      real(wp) :: s, s_dot
+      real(wp) :: s, s_dot, g(n_dof)
       integer :: c, i, q, n
       logical :: changed
       associate (u1 => size(extra))
       end associate
-      bb = belt_body_of_state(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel)
+      call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
+                          this%last_segment, bb)
       do c = 1, this%n_chains
          associate (ch => this%chain(c))
             s = -ch%slack
             s_dot = 0.0_wp
+            g = 0.0_wp
             do q = 1, ch%n_sections
-               kin = belt_kinematics(this%geom(ch%section(q)), bb, angle=.false.)
-               s = s + kin%delta
-               s_dot = s_dot + kin%delta_rate
+               call belt_section_add(this%geom(ch%section(q)), bb, s, s_dot, g)
             end do
             n = ch%n_elements
             if (.not. s > 0.0_wp) cycle
