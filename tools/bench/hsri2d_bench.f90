@@ -16,8 +16,9 @@
 !! --run-only times the simulation alone, and nothing else (for a profiler:
 !! perf, callgrind);
 !! --at T measures the effects' costs at the state RK4 reaches at time T
-!! (the deck's DT; memories as at t = 0, so loading branches), e.g. where
-!! the belts carry load, rather than at the initial state.
+!! (the deck's DT; the effects' memories updated after each step, as the
+!! simulation does), e.g. where the belts carry load or unload, rather than
+!! at the initial state.
 program hsri2d_bench
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use kinds, only: wp
@@ -29,7 +30,7 @@ program hsri2d_bench
    use run_summary, only: run_summary_t
    use run_case_mod, only: run_request_t, run_case, read_case_deck
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state
-   use effect_base, only: body_state_t
+   use effect_base, only: body_state_t, accept_result_t
    use body_matrix, only: body_accelerations
    use model, only: n_dof
    use runge_kutta4, only: rk4_stepper_t
@@ -243,19 +244,37 @@ contains
       write (output_unit, '(a)') line
    end subroutine effect_costs
 
-   !> RK4 at step h from (t, y) to t_end, without accept (memories stay as
-   !! they are); line notes where it stopped if the run failed.
+   !> RK4 at step h from (t, y) to t_end, each effect with memory told of
+   !! every accepted step (as simulation's on_accepted, without its outputs
+   !! and end tests); line notes where it stopped if the run failed.
    subroutine advance_to(h, t_end, sys, t, y, line)
       real(wp), intent(in) :: h, t_end
       type(crash_system_t), intent(inout) :: sys
       real(wp), intent(inout) :: t, y(:)
       character(len=:), allocatable, intent(inout) :: line
       type(rk4_stepper_t) :: rk
-      integer :: status
+      type(accept_result_t) :: ar
+      type(body_state_t) :: st
+      integer :: status, q, k, xo, ao
       rk%h = h
       call rk%init(sys, t, y, status)
       do while (t < t_end .and. status == step_ok)
          call rk%advance(sys, t, y, t_end, status)
+         if (status /= step_ok) exit
+         st = system_body_state(sys, 1, t, y)
+         ar%restart = .false.
+         associate (occ => sys%occupants(1))
+            do q = 1, size(occ%remembering)
+               k = occ%remembering(q)
+               xo = occ%extra_offset(k)
+               ao = occ%aux_offset(k)
+               ar%n_events = 0
+               associate (e => occ%effects(k)%e)
+                  call e%accept(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), ar)
+               end associate
+            end do
+         end associate
+         if (ar%restart) call rk%restart(sys, t, y, status)
       end do
       if (status /= step_ok) line = line//' (stopped at t = '//number(t)//' s)'
    end subroutine advance_to
