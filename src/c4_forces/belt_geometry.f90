@@ -188,8 +188,8 @@ contains
    end function lap_length
 
    !> φ_j, δ_j, δ̇_j and ∂δ_j/∂z of one section (C.4.e). angle = .false.
-   !! skips φ_j of a torso section (its direction is used without it; the
-   !! effect asks for φ_j only for its outputs).
+   !! skips φ_j of a straight section (its direction is used without it;
+   !! the effect asks for φ_j only for its outputs).
    pure function belt_kinematics(g, bb, angle) result(k)
       type(belt_section_geometry_t), intent(in) :: g
       type(belt_body_t), intent(in) :: bb
@@ -216,9 +216,9 @@ contains
       s_dot = s_dot + delta_rate
    end subroutine belt_section_add
 
-   !> The section's φ_j (when with_angle, or for the lap belt, whose length
-   !! needs it; else 0), δ_j, δ̇_j, whether a lap belt wraps the hip, and
-   !! ∂δ_j/∂z added to grad, entry by entry.
+   !> The section's φ_j (when with_angle, or for a lap belt that wraps the
+   !! hip, whose length needs it; else 0), δ_j, δ̇_j, whether a lap belt
+   !! wraps the hip, and ∂δ_j/∂z added to grad, entry by entry.
    pure subroutine section_state(g, bb, with_angle, phi, delta, delta_rate, grad, wrapped)
       type(belt_section_geometry_t), intent(in) :: g
       type(belt_body_t), intent(in) :: bb
@@ -269,7 +269,7 @@ contains
       v = p(2) - g%anchor(2)
       d = sqrt(u**2 + v**2)
       phi = 0.0_wp
-      if (with_angle .or. g%kind == belt_lap) phi = atan2(v, u)   ! C.4.e φ_j, atan2 (BE-2)
+      if (with_angle) phi = atan2(v, u)   ! C.4.e φ_j, atan2 (BE-2); for the outputs only
       e = [u, v]/d                                 ! e(φ_j)
       delta = d - g%length0                        ! δ_j = √(u_j² + v_j²) − ℓ_j0
       delta_rate = dot_product(e, p_rate)          ! = ẋ_j cos φ_j + ẏ_j sin φ_j + h_j θ̇_j sin(φ_j − θ_j)
