@@ -298,36 +298,43 @@ contains
    end function branch_at
 
    !> branch_at with a table interval to try first (seg, see curve_value_slope).
+   !! (One evaluation of the curve, whichever the branch: the compiler can
+   !! then put it in line.)
    pure subroutine branch_eval(law, mem, x, seg, bp)
       type(recurrent_law_t), intent(in) :: law
       type(loading_memory_t), intent(in) :: mem
       real(wp), intent(in) :: x
       integer, intent(inout) :: seg
       type(branch_point_t), intent(out) :: bp
-      real(wp) :: xi, span, dm, fe, se, xp
+      real(wp) :: xi, span, dm, d, fe, se, xp
       if (law%elastic .or. .not. mem%unloading .or. x >= mem%delta_max) then
          ! the loading curve of cycle n: F_e(x - eps_n)
          bp%loading = .true.
-         call curve_value_slope(law%curve, x - mem%eps, bp%force, bp%slope, seg)
+         d = x - mem%eps
       else if (law%plastic .or. .not. x > mem%delta_zero) then
          bp%loading = .false.
          bp%force = 0.0_wp
          bp%slope = 0.0_wp
+         return
       else
          ! the unloading curve F_e(xi d_max) xi**p, xi = (x - delta_0)/(delta_max - delta_0)
          bp%loading = .false.
          span = mem%delta_max - mem%delta_zero
          dm = mem%delta_max - mem%eps
          xi = (x - mem%delta_zero)/span
-         call curve_value_slope(law%curve, xi*dm, fe, se, seg)
-         if (mem%p > 0.0_wp) then
-            xp = xi**mem%p
-            bp%force = fe*xp
-            bp%slope = (se*dm*xp + fe*mem%p*xp/xi)/span
-         else
-            bp%force = fe
-            bp%slope = se*dm/span
-         end if
+         d = xi*dm
+      end if
+      call curve_value_slope(law%curve, d, fe, se, seg)
+      if (bp%loading) then
+         bp%force = fe
+         bp%slope = se
+      else if (mem%p > 0.0_wp) then
+         xp = xi**mem%p
+         bp%force = fe*xp
+         bp%slope = (se*dm*xp + fe*mem%p*xp/xi)/span
+      else
+         bp%force = fe
+         bp%slope = se*dm/span
       end if
    end subroutine branch_eval
 
