@@ -203,7 +203,7 @@ contains
    end function belt_kinematics
 
    !> δ_j and δ̇_j of one section, added to a chain's s and s', and ∂δ_j/∂z
-   !! added to its gradient g: belt_kinematics without φ_j of a torso
+   !! added to its gradient g: belt_kinematics without φ_j of a straight
    !! section and without a result to copy (the effect's right-hand side).
    pure subroutine belt_section_add(geom, bb, s, s_dot, g)
       type(belt_section_geometry_t), intent(in) :: geom

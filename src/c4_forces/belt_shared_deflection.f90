@@ -208,14 +208,11 @@ contains
 
    !> The table interval lo (1 <= lo < n) holding d > 0, as loading_curves'
    !! table_interval: defl(lo) <= d < defl(lo + 1), the last one beyond the
-   !! table; hint (when 1 <= hint < n) is tried first. The interval is
-   !! counted without branches for tables of up to 16 points (a binary
-   !! search's branches cannot be predicted, and cost more than the count).
+   !! table; hint (when 1 <= hint < n) is tried first, else a binary search.
    pure integer function table_interval_from(defl, d, hint) result(lo)
       real(wp), intent(in) :: defl(:), d
       integer, intent(in) :: hint
-      integer, parameter :: short_table = 16
-      integer :: hi, mid, j
+      integer :: hi, mid
       hi = size(defl)
       if (hint >= 1 .and. hint < hi) then
          if (d >= defl(hint)) then
@@ -229,13 +226,6 @@ contains
          end if
       end if
       lo = 1
-      if (hi <= short_table) then
-         ! the points d passes (defl is increasing and defl(1) = 0 < d)
-         do j = 2, hi - 1
-            lo = lo + merge(1, 0, defl(j) <= d)
-         end do
-         return
-      end if
       if (d >= defl(hi)) then
          lo = hi - 1
          return
