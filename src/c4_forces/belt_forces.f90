@@ -37,7 +37,7 @@
 !! tolerance, where the bracket's ends would take several; the forces do not
 !! depend on it (docs/belts.md 3).
 module belt_forces
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
    use kinds, only: wp, deg
    use strings, only: num, itoa
    use model, only: model_t, n_dof, n_seg, belt_card_lap2, coupling_torso
@@ -45,7 +45,7 @@ module belt_forces
       energy_supplied, n_energy_kinds
    use output_series, only: output_series_t, series_new, column
    use belt_geometry, only: belt_section_geometry_t, belt_kinematics_t, belt_body_t, &
-      lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state
+      lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state, belt_body_fill, belt_section_add
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, belt_law, material_law, recurrent_accept, &
       recurrent_energies, recurrent_is_elastic, n_loading_aux
    use belt_shared_deflection, only: max_chain, chain_split_t, chain_split, chain_split_text, split_ok, scaled_law
@@ -88,6 +88,7 @@ module belt_forces
       integer :: n_chains = 0
       type(belt_chain_t) :: chain(max_belt_sections)
       real(wp) :: length(n_seg) = 0.0_wp              !< segment lengths (L_1, L_2 place joints 2, 3)
+      integer :: last_segment = 3                     !< the highest segment its sections lie on
       integer :: max_iter = 60
    contains
       procedure :: add_forces => belt_add_forces
@@ -159,6 +160,7 @@ contains
             call add_chain([1, 2, 3])
          end select
       end associate
+      e%last_segment = maxval(e%geom(1:e%n_sections)%segment)
       e%needs_vehicle = .true.
       e%has_energy = .true.
       e%n_aux = 0
@@ -266,13 +268,13 @@ contains
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: extra_rate(:), aux_rate(:)
       type(belt_body_t) :: bb
-      type(belt_kinematics_t) :: kin
       type(chain_split_t) :: sp
       real(wp) :: s, s_dot, g(n_dof), f
-      integer :: c, n, a, q
+      integer :: c, n, a, q, i
       associate (u1 => size(extra), u2 => size(extra_rate))
       end associate
-      bb = belt_body_of_state(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel)
+      call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
+                          this%last_segment, bb)
       do c = 1, this%n_chains
          associate (ch => this%chain(c))
             ! the chain's deformation: its sections' nominal deformations less their slack (D-B1)
@@ -280,10 +282,7 @@ contains
             s_dot = 0.0_wp
             g = 0.0_wp
             do q = 1, ch%n_sections
-               kin = belt_kinematics(this%geom(ch%section(q)), bb, angle=.false.)
-               s = s + kin%delta
-               s_dot = s_dot + kin%delta_rate
-               g = g + kin%gradient
+               call belt_section_add(this%geom(ch%section(q)), bb, s, s_dot, g)
             end do
             n = ch%n_elements
             a = ch%aux_offset
@@ -294,7 +293,9 @@ contains
             end if
             f = sp%force
             b = b - f*g
-            aux_rate(a + 1:a + n_loading_aux*n) = reshape(sp%aux_rate(:, 1:n), [n_loading_aux*n])
+            do i = 1, n       ! (element by element: no temporary of a reshape)
+               aux_rate(a + n_loading_aux*(i - 1) + 1:a + n_loading_aux*i) = sp%aux_rate(:, i)
+            end do
             ! the work of the moving anchorages: F times the deformation rate at fixed z (D-B4)
             aux_rate(a + n_loading_aux*n + 1) = f*(s_dot - dot_product(g, st%zdot))
             aux_rate(a + n_loading_aux*n + 2) = sp%guess_rate     ! the search's start (D-B7)
@@ -304,23 +305,42 @@ contains
 
    !> After an accepted step: every element's memory from its share of the
    !! accepted deformation and rate (figure 18); a changed law restarts the
-   !! stepper.
+   !! stepper. An element's rate is x_i' = w_i s' with w_i >= 0 (0 when the
+   !! chain is slack), and its memory changes only at x_i' < 0 while it
+   !! loads, or x_i' /= 0 while it unloads (recurrent_accept): a chain that is
+   !! slack, or does not move, or lengthens while every element loads, keeps
+   !! its memories, and needs no split.
    subroutine belt_accept(this, st, extra, aux, result)
       class(belt_effect_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
-      type(belt_state_t) :: bs
-      integer :: c, i
+      type(belt_body_t) :: bb
+      type(chain_split_t) :: sp
+      real(wp) :: s, s_dot, g(n_dof)
+      integer :: c, i, q, n
       logical :: changed
       associate (u1 => size(extra))
       end associate
-      bs = belt_section_state(this, st, aux)
+      call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
+                          this%last_segment, bb)
       do c = 1, this%n_chains
-         if (bs%split(c)%status /= split_ok) cycle
          associate (ch => this%chain(c))
-            do i = 1, ch%n_elements
-               call recurrent_accept(ch%law(i), ch%mem(i), bs%split(c)%x(i), bs%split(c)%rate(i), changed)
+            s = -ch%slack
+            s_dot = 0.0_wp
+            g = 0.0_wp
+            do q = 1, ch%n_sections
+               call belt_section_add(this%geom(ch%section(q)), bb, s, s_dot, g)
+            end do
+            n = ch%n_elements
+            if (.not. s > 0.0_wp) cycle
+            if (.not. abs(s_dot) > 0.0_wp .and. ieee_is_finite(s_dot)) cycle
+            if (s_dot > 0.0_wp .and. .not. any(ch%mem(1:n)%unloading)) cycle
+            call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, &
+                             aux(ch%aux_offset + n_loading_aux*n + 2))
+            if (sp%status /= split_ok) cycle
+            do i = 1, n
+               call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), sp%rate(i), changed)
                result%restart = result%restart .or. changed
             end do
          end associate

@@ -29,7 +29,7 @@ module belt_geometry
 
    public :: belt_section_geometry_t, belt_kinematics_t, belt_body_t
    public :: belt_lap, belt_torso, lap_belt_geometry, torso_belt_geometry, belt_kinematics
-   public :: belt_body_from, belt_body_of_state
+   public :: belt_body_from, belt_body_of_state, belt_body_fill, belt_section_add
 
    !> Kinds of belt section.
    integer, parameter :: belt_lap = 1, belt_torso = 2
@@ -95,17 +95,28 @@ contains
    pure function belt_body_of_state(length, z, zdot, c, s, vpos, vvel) result(bb)
       real(wp), intent(in) :: length(n_seg), z(n_dof), zdot(n_dof), c(n_seg), s(n_seg), vpos(3), vvel(3)
       type(belt_body_t) :: bb
+      call belt_body_fill(length, z, zdot, c, s, vpos, vvel, 3, bb)
+   end function belt_body_of_state
+
+   !> belt_body_of_state into bb, for joints and segments 1..last only (the
+   !! rest of bb is left as it was): an effect whose sections lie on
+   !! segments <= last reads no more (belt_kinematics reads joint s, and
+   !! segments 1..s, of a section on segment s).
+   pure subroutine belt_body_fill(length, z, zdot, c, s, vpos, vvel, last, bb)
+      real(wp), intent(in) :: length(n_seg), z(n_dof), zdot(n_dof), c(n_seg), s(n_seg), vpos(3), vvel(3)
+      integer, intent(in) :: last
+      type(belt_body_t), intent(inout) :: bb
       real(wp) :: p(2, 3), v(2, 3), cp, sp, dx, dy, dvx, dvy
       integer :: k
       p(:, 1) = [z(hip_x), z(hip_y)]
       v(:, 1) = [zdot(hip_x), zdot(hip_y)]
-      do k = 1, 2
+      do k = 1, last - 1
          p(:, k + 1) = p(:, k) + length(k)*[c(k), s(k)]
          v(:, k + 1) = v(:, k) + length(k)*zdot(k)*[-s(k), c(k)]
       end do
       cp = cos(vpos(3))
       sp = sin(vpos(3))
-      do k = 1, 3
+      do k = 1, last
          dx = p(1, k) - vpos(1)
          dy = p(2, k) - vpos(2)
          dvx = v(1, k) - vvel(1)
@@ -114,16 +125,16 @@ contains
          bb%joint(2, k) = dx*sp + dy*cp
          bb%joint_rate(1, k) = dvx*cp - dvy*sp - bb%joint(2, k)*vvel(3)
          bb%joint_rate(2, k) = dvx*sp + dvy*cp + bb%joint(1, k)*vvel(3)
+         bb%theta(k) = z(k) + vpos(3)          ! theta_i = alpha_i + Phi (section B)
+         bb%theta_rate(k) = zdot(k) + vvel(3)
+         bb%ct(k) = c(k)*cp - s(k)*sp          ! cos(alpha_i + Phi)
+         bb%st(k) = s(k)*cp + c(k)*sp
       end do
-      bb%theta = z(1:3) + vpos(3)          ! theta_i = alpha_i + Phi (section B)
-      bb%theta_rate = zdot(1:3) + vvel(3)
       bb%length = length(1:2)
       bb%phi = vpos(3)
       bb%cphi = cp
       bb%sphi = sp
-      bb%ct = c(1:3)*cp - s(1:3)*sp        ! cos(alpha_i + Phi)
-      bb%st = s(1:3)*cp + c(1:3)*sp
-   end function belt_body_of_state
+   end subroutine belt_body_fill
 
    !> C.2 for the lap belt (j = 1): the anchor at ℓ'_0 from the initial hip
    !! in the direction −e(φ'_0) (φ'_0 points from the anchor to the hip:
@@ -177,33 +188,60 @@ contains
    end function lap_length
 
    !> φ_j, δ_j, δ̇_j and ∂δ_j/∂z of one section (C.4.e). angle = .false.
-   !! skips φ_j of a torso section (its direction is used without it; the
-   !! effect asks for φ_j only for its outputs).
+   !! skips φ_j of a straight section (its direction is used without it;
+   !! the effect asks for φ_j only for its outputs).
    pure function belt_kinematics(g, bb, angle) result(k)
       type(belt_section_geometry_t), intent(in) :: g
       type(belt_body_t), intent(in) :: bb
       logical, intent(in), optional :: angle
       type(belt_kinematics_t) :: k
-      real(wp) :: dp_dz(2, n_dof), p(2), p_rate(2), e(2), u, v, d, wrap, length, r, cr, ts(2)
-      integer :: s
       logical :: with_angle
-
       with_angle = .true.
       if (present(angle)) with_angle = angle
-      s = g%segment
-      call point_jacobian(bb, s, dp_dz)          ! the proximal joint of segment s
+      k%gradient = 0.0_wp
+      call section_state(g, bb, with_angle, k%phi, k%delta, k%delta_rate, k%gradient, k%wrapped)
+   end function belt_kinematics
 
+   !> δ_j and δ̇_j of one section, added to a chain's s and s', and ∂δ_j/∂z
+   !! added to its gradient g: belt_kinematics without φ_j of a straight
+   !! section and without a result to copy (the effect's right-hand side).
+   pure subroutine belt_section_add(geom, bb, s, s_dot, g)
+      type(belt_section_geometry_t), intent(in) :: geom
+      type(belt_body_t), intent(in) :: bb
+      real(wp), intent(inout) :: s, s_dot, g(n_dof)
+      real(wp) :: phi, delta, delta_rate
+      logical :: wrapped
+      call section_state(geom, bb, .false., phi, delta, delta_rate, g, wrapped)
+      s = s + delta
+      s_dot = s_dot + delta_rate
+   end subroutine belt_section_add
+
+   !> The section's φ_j (when with_angle, or for a lap belt that wraps the
+   !! hip, whose length needs it; else 0), δ_j, δ̇_j, whether a lap belt
+   !! wraps the hip, and ∂δ_j/∂z added to grad, entry by entry.
+   pure subroutine section_state(g, bb, with_angle, phi, delta, delta_rate, grad, wrapped)
+      type(belt_section_geometry_t), intent(in) :: g
+      type(belt_body_t), intent(in) :: bb
+      logical, intent(in) :: with_angle
+      real(wp), intent(out) :: phi, delta, delta_rate
+      real(wp), intent(inout) :: grad(n_dof)
+      logical, intent(out) :: wrapped
+      real(wp) :: p(2), p_rate(2), e(2), u, v, d, wrap, length, r, cr, ts(2)
+      integer :: s
+
+      s = g%segment
+      wrapped = .true.
       if (g%kind == belt_lap) then
          u = bb%joint(1, 1) - g%anchor(1)
          v = bb%joint(2, 1) - g%anchor(2)
          d = sqrt(u**2 + v**2)   ! (lengths are bounded: equations_of_motion's range guard)
-         k%wrapped = d > g%h
-         if (k%wrapped) then
-            k%phi = asin(g%h/d) + atan2(v, u)     ! C.4.e φ_1, with atan2 (BE-2)
-            wrap = k%phi - bb%theta(1) + 0.5_wp*pi
-            k%wrapped = wrap >= 0.0_wp            ! A-B1: no negative wrap
+         wrapped = d > g%h
+         if (wrapped) then
+            phi = asin(g%h/d) + atan2(v, u)     ! C.4.e φ_1, with atan2 (BE-2)
+            wrap = phi - bb%theta(1) + 0.5_wp*pi
+            wrapped = wrap >= 0.0_wp            ! A-B1: no negative wrap
          end if
-         if (k%wrapped) then
+         if (wrapped) then
             ! δ_1 = √(u²+v²−h_1²) − ℓ_10 + h_1 [φ_1 − θ_1 + π/2]; its derivative
             ! is the tangent direction against the hip's motion minus h_1 dθ_1;
             ! e(φ_1) is (u, v)/d turned by asin(h_1/d)
@@ -211,10 +249,10 @@ contains
             r = g%h/d
             cr = sqrt(1.0_wp - r**2)
             e = [u*cr - v*r, v*cr + u*r]/d
-            k%delta = length - g%length0
-            k%delta_rate = dot_product(e, bb%joint_rate(:, 1)) - g%h*bb%theta_rate(1)   ! C.4.e δ̇_1
-            k%gradient = matmul(e, dp_dz)
-            k%gradient(s) = k%gradient(s) - g%h    ! − h_1 ∂θ_1/∂α_1
+            delta = length - g%length0
+            delta_rate = dot_product(e, bb%joint_rate(:, 1)) - g%h*bb%theta_rate(1)   ! C.4.e δ̇_1
+            call add_joint_gradient(bb, s, e, grad)
+            grad(s) = grad(s) - g%h    ! − h_1 ∂θ_1/∂α_1
             return
          end if
          ! straight from the anchor to E = hip + h_1 e(θ_1)
@@ -230,28 +268,30 @@ contains
       u = p(1) - g%anchor(1)
       v = p(2) - g%anchor(2)
       d = sqrt(u**2 + v**2)
-      k%phi = 0.0_wp
-      if (with_angle .or. g%kind == belt_lap) k%phi = atan2(v, u)   ! C.4.e φ_j, atan2 (BE-2)
+      phi = 0.0_wp
+      if (with_angle) phi = atan2(v, u)   ! C.4.e φ_j, atan2 (BE-2); for the outputs only
       e = [u, v]/d                                 ! e(φ_j)
-      k%delta = d - g%length0                      ! δ_j = √(u_j² + v_j²) − ℓ_j0
-      k%delta_rate = dot_product(e, p_rate)        ! = ẋ_j cos φ_j + ẏ_j sin φ_j + h_j θ̇_j sin(φ_j − θ_j)
-      k%gradient = matmul(e, dp_dz)
-      k%gradient(s) = k%gradient(s) + g%h*dot_product(e, ts)
-   end function belt_kinematics
+      delta = d - g%length0                        ! δ_j = √(u_j² + v_j²) − ℓ_j0
+      delta_rate = dot_product(e, p_rate)          ! = ẋ_j cos φ_j + ẏ_j sin φ_j + h_j θ̇_j sin(φ_j − θ_j)
+      call add_joint_gradient(bb, s, e, grad)
+      grad(s) = grad(s) + g%h*dot_product(e, ts)
+   end subroutine section_state
 
-   !> ∂(interior position of the proximal joint of segment s)/∂z, s = 1..3:
-   !! the hip moves with x_h, y_h (rotated into the interior frame), joint 2
-   !! also with α_1 (L_1), joint 3 with α_1 and α_2 (section B).
-   pure subroutine point_jacobian(bb, s, dp_dz)
+   !> Adds e . ∂(interior position of the proximal joint of segment s)/∂z
+   !! to grad, s = 1..3: the hip moves with x_h, y_h (rotated into the
+   !! interior frame), joint 2 also with α_1 (L_1), joint 3 with α_1 and α_2
+   !! (section B). Written out: the Jacobian has 2 + 2(s - 1) entries that
+   !! are not zero.
+   pure subroutine add_joint_gradient(bb, s, e, grad)
       type(belt_body_t), intent(in) :: bb
       integer, intent(in) :: s
-      real(wp), intent(out) :: dp_dz(2, n_dof)
+      real(wp), intent(in) :: e(2)
+      real(wp), intent(inout) :: grad(n_dof)
       integer :: k
-      dp_dz = 0.0_wp
-      dp_dz(:, hip_x) = [bb%cphi, bb%sphi]      ! R(Φ) e_x
-      dp_dz(:, hip_y) = [-bb%sphi, bb%cphi]     ! R(Φ) e_y
+      grad(hip_x) = grad(hip_x) + (e(1)*bb%cphi + e(2)*bb%sphi)       ! e . R(Φ) e_x
+      grad(hip_y) = grad(hip_y) + (e(1)*(-bb%sphi) + e(2)*bb%cphi)    ! e . R(Φ) e_y
       do k = 1, s - 1
-         dp_dz(:, k) = bb%length(k)*[-bb%st(k), bb%ct(k)]
+         grad(k) = grad(k) + (e(1)*(bb%length(k)*(-bb%st(k))) + e(2)*(bb%length(k)*bb%ct(k)))
       end do
-   end subroutine point_jacobian
+   end subroutine add_joint_gradient
 end module belt_geometry

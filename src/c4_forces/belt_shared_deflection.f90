@@ -176,12 +176,16 @@ contains
 
    !> F_e(d) and dF_e/dd of a curve at once (the value as loading_curves'
    !! curve_elastic_force computes it, the right derivative; 0 and 0 for
-   !! d <= 0): one search of a table for both.
-   pure subroutine curve_value_slope(c, d, f, k)
+   !! d <= 0): one search of a table for both. seg: the table interval to
+   !! try first (0: none), and on return the one used - a search's later
+   !! evaluations mostly fall in the interval of the one before, and the
+   !! interval holding d is unique, so the hint changes nothing but the cost.
+   pure subroutine curve_value_slope(c, d, f, k, seg)
       type(loading_curve_t), intent(in) :: c
       real(wp), intent(in) :: d
       real(wp), intent(out) :: f, k
-      integer :: n, lo, hi, mid
+      integer, intent(inout) :: seg
+      integer :: n, lo
       f = 0.0_wp
       k = 0.0_wp
       if (.not. d > 0.0_wp) return
@@ -193,26 +197,48 @@ contains
             f = (f + c%sigma(n))*d
          end do
       case (curve_table)
-         lo = 1
-         hi = size(c%defl)
-         if (d >= c%defl(hi)) then
-            lo = hi - 1
-         else
-            do while (hi - lo > 1)
-               mid = (lo + hi)/2
-               if (c%defl(mid) <= d) then
-                  lo = mid
-               else
-                  hi = mid
-               end if
-            end do
-         end if
+         lo = table_interval_from(c%defl, d, seg)
+         seg = lo
          k = (c%force(lo + 1) - c%force(lo))/(c%defl(lo + 1) - c%defl(lo))
          f = c%force(lo) + k*(d - c%defl(lo))
       end select
       f = max(f, 0.0_wp)
       k = max(k, 0.0_wp)
    end subroutine curve_value_slope
+
+   !> The table interval lo (1 <= lo < n) holding d > 0, as loading_curves'
+   !! table_interval: defl(lo) <= d < defl(lo + 1), the last one beyond the
+   !! table; hint (when 1 <= hint < n) is tried first, else a binary search.
+   pure integer function table_interval_from(defl, d, hint) result(lo)
+      real(wp), intent(in) :: defl(:), d
+      integer, intent(in) :: hint
+      integer :: hi, mid
+      hi = size(defl)
+      if (hint >= 1 .and. hint < hi) then
+         if (d >= defl(hint)) then
+            if (hint == hi - 1) then
+               lo = hint
+               return
+            else if (d < defl(hint + 1)) then
+               lo = hint
+               return
+            end if
+         end if
+      end if
+      lo = 1
+      if (d >= defl(hi)) then
+         lo = hi - 1
+         return
+      end if
+      do while (hi - lo > 1)
+         mid = (lo + hi)/2
+         if (defl(mid) <= d) then
+            lo = mid
+         else
+            hi = mid
+         end if
+      end do
+   end function table_interval_from
 
    !> dF_e/dd of a curve (right derivative; 0 for d <= 0).
    pure real(wp) function curve_slope(c, d) result(k)
@@ -256,32 +282,51 @@ contains
       type(loading_memory_t), intent(in) :: mem
       real(wp), intent(in) :: x
       type(branch_point_t) :: bp
-      real(wp) :: xi, span, dm, fe, se, xp
+      integer :: seg
+      seg = 0
+      call branch_eval(law, mem, x, seg, bp)
+   end function branch_at
+
+   !> branch_at with a table interval to try first (seg, see curve_value_slope).
+   !! (One evaluation of the curve, whichever the branch: the compiler can
+   !! then put it in line.)
+   pure subroutine branch_eval(law, mem, x, seg, bp)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x
+      integer, intent(inout) :: seg
+      type(branch_point_t), intent(out) :: bp
+      real(wp) :: xi, span, dm, d, fe, se, xp
       if (law%elastic .or. .not. mem%unloading .or. x >= mem%delta_max) then
          ! the loading curve of cycle n: F_e(x - eps_n)
          bp%loading = .true.
-         call curve_value_slope(law%curve, x - mem%eps, bp%force, bp%slope)
+         d = x - mem%eps
       else if (law%plastic .or. .not. x > mem%delta_zero) then
          bp%loading = .false.
          bp%force = 0.0_wp
          bp%slope = 0.0_wp
+         return
       else
          ! the unloading curve F_e(xi d_max) xi**p, xi = (x - delta_0)/(delta_max - delta_0)
          bp%loading = .false.
          span = mem%delta_max - mem%delta_zero
          dm = mem%delta_max - mem%eps
          xi = (x - mem%delta_zero)/span
-         call curve_value_slope(law%curve, xi*dm, fe, se)
-         if (mem%p > 0.0_wp) then
-            xp = xi**mem%p
-            bp%force = fe*xp
-            bp%slope = (se*dm*xp + fe*mem%p*xp/xi)/span
-         else
-            bp%force = fe
-            bp%slope = se*dm/span
-         end if
+         d = xi*dm
       end if
-   end function branch_at
+      call curve_value_slope(law%curve, d, fe, se, seg)
+      if (bp%loading) then
+         bp%force = fe
+         bp%slope = se
+      else if (mem%p > 0.0_wp) then
+         xp = xi**mem%p
+         bp%force = fe*xp
+         bp%slope = (se*dm*xp + fe*mem%p*xp/xi)/span
+      else
+         bp%force = fe
+         bp%slope = se*dm/span
+      end if
+   end subroutine branch_eval
 
    !> The largest deformation at which the element's branch carries no
    !! force (its residual deformation, and for a table that starts flat the
@@ -289,21 +334,12 @@ contains
    pure real(wp) function zero_extent(law, mem) result(z)
       type(recurrent_law_t), intent(in) :: law
       type(loading_memory_t), intent(in) :: mem
-      real(wp) :: zc
-      integer :: k
-      zc = 0.0_wp
-      if (law%curve%form == curve_table) then
-         do k = 1, size(law%curve%force)
-            if (law%curve%force(k) > 0.0_wp) exit
-            zc = law%curve%defl(k)
-         end do
-      end if
       if (law%elastic .or. .not. mem%unloading) then
-         z = mem%eps + zc
+         z = mem%eps + law%flat
       else if (law%plastic) then
          z = mem%delta_max
       else
-         z = mem%delta_zero + (mem%delta_max - mem%delta_zero)*zc/(mem%delta_max - mem%eps)
+         z = mem%delta_zero + (mem%delta_max - mem%delta_zero)*law%flat/(mem%delta_max - mem%eps)
       end if
    end function zero_extent
 
@@ -343,26 +379,32 @@ contains
       logical :: loading(max_chain)
       integer :: i
 
-      split%x(1:n) = 0.0_wp
-      split%rate(1:n) = 0.0_wp
-      split%aux_rate(:, 1:n) = 0.0_wp
+      ! (each path sets x, rate and aux_rate of the n elements: no clearing first)
       if (.not. (ieee_is_finite(s) .and. ieee_is_finite(s_dot))) then
          split%status = split_not_finite
+         call clear(split, n)
          return
       end if
       ! slack, or no element: no force (a belt carries no compression; D-B1)
-      if (.not. s > 0.0_wp .or. n < 1) return
+      if (.not. s > 0.0_wp .or. n < 1) then
+         call clear(split, n)
+         return
+      end if
 
+      zsum = 0.0_wp
       do i = 1, n
          z(i) = zero_extent(law(i), mem(i))
+         zsum = zsum + z(i)
       end do
-      zsum = sum(z(1:n))
       if (s <= zsum) then
          ! taken up within the residual deformations: no force; the deformation
          ! is shared in proportion to them (continuous with the loaded split)
          split%region = region_unloaded
-         split%x(1:n) = s*z(1:n)/zsum
-         split%rate(1:n) = s_dot*z(1:n)/zsum
+         do i = 1, n
+            split%x(i) = s*z(i)/zsum
+            split%rate(i) = s_dot*z(i)/zsum
+            split%aux_rate(:, i) = 0.0_wp
+         end do
          if (n < 3) then
             split%guess = split%x(1)
             split%guess_rate = split%rate(1)
@@ -385,11 +427,16 @@ contains
       case default
          call chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess)
       end select
-      if (split%status /= split_ok) return
+      if (split%status /= split_ok) then
+         call clear(split, n)
+         return
+      end if
 
       ! the rate split: x_i' = w_i s', the compliances' shares (D-B2)
       call rate_weights(n, slope, w)
-      split%rate(1:n) = w(1:n)*s_dot
+      do i = 1, n
+         split%rate(i) = w(i)*s_dot
+      end do
       if (n < 3) then
          split%guess = split%x(1)
          split%guess_rate = split%rate(1)
@@ -401,10 +448,11 @@ contains
          if (slope(i) > min_slope) split%guess_rate = slope(i)*split%rate(i)
       end if
       ! the chain's rate term: the weighted mean of the elements' at their rates (D-B2)
+      fv_chain = 0.0_wp
       do i = 1, n
-         fv(i) = curve_rate_force(law(i)%curve, split%rate(i))
+         fv(i) = rate_force(law(i), split%rate(i))
+         fv_chain = fv_chain + w(i)*fv(i)
       end do
-      fv_chain = sum(w(1:n)*fv(1:n))
       split%force = 0.0_wp
       if (split%branch > 0.0_wp) split%force = max(0.0_wp, split%branch + fv_chain)
       ! the clip scales every element's rate term alike (each keeps its sign)
@@ -421,19 +469,58 @@ contains
       end do
    end subroutine chain_split
 
+   !> No deformation, rate or work in the chain's n elements.
+   pure subroutine clear(split, n)
+      type(chain_split_t), intent(inout) :: split
+      integer, intent(in) :: n
+      integer :: i
+      do i = 1, n
+         split%x(i) = 0.0_wp
+         split%rate(i) = 0.0_wp
+         split%aux_rate(:, i) = 0.0_wp
+      end do
+   end subroutine clear
+
+   !> loading_curves' curve_rate_force of the law's curve, its Horner sum
+   !! begun at the highest rate term the curve has (law%n_rate; the terms
+   !! above it are zero, and so would add nothing): the same value.
+   pure real(wp) function rate_force(law, v) result(f)
+      type(recurrent_law_t), intent(in) :: law
+      real(wp), intent(in) :: v
+      integer :: k
+      real(wp) :: a
+      f = 0.0_wp
+      a = abs(v)
+      do k = law%n_rate, 1, -1
+         f = (f + law%curve%sigma_rate(k))*a
+      end do
+      f = sign(f, v)
+      if (.not. abs(v) > 0.0_wp) f = 0.0_wp
+   end function rate_force
+
    !> w_i = (1/k_i)/sum(1/k_j); elements of zero slope (a flat branch) share
    !! the whole rate equally.
    pure subroutine rate_weights(n, slope, w)
       integer, intent(in) :: n
       real(wp), intent(in) :: slope(:)
       real(wp), intent(out) :: w(:)
-      integer :: n_flat
-      n_flat = count(.not. slope(1:n) > min_slope)
+      integer :: n_flat, i
+      real(wp) :: total
+      n_flat = 0
+      do i = 1, n
+         if (.not. slope(i) > min_slope) n_flat = n_flat + 1
+      end do
       if (n_flat > 0) then
          w(1:n) = merge(1.0_wp/real(n_flat, wp), 0.0_wp, .not. slope(1:n) > min_slope)
       else
-         w(1:n) = 1.0_wp/slope(1:n)
-         w(1:n) = w(1:n)/sum(w(1:n))
+         total = 0.0_wp
+         do i = 1, n
+            w(i) = 1.0_wp/slope(i)
+            total = total + w(i)
+         end do
+         do i = 1, n
+            w(i) = w(i)/total
+         end do
       end if
    end subroutine rate_weights
 
@@ -452,6 +539,9 @@ contains
       type(root_search_t) :: r
       type(branch_point_t) :: b1, b2
       real(wp) :: lo, hi, f2_lo, f1_hi, x0, f_low, f_high
+      integer :: seg1, seg2
+      seg1 = 0
+      seg2 = 0
       lo = z(1)
       hi = s - z(2)
       split%iterations = 0
@@ -460,8 +550,8 @@ contains
          ! (g(z_1) < 0 < g(s - z_2)), no need to evaluate its ends
          x0 = guess
       else
-         b2 = branch_at(law(2), mem(2), s - lo)
-         b1 = branch_at(law(1), mem(1), hi)
+         call branch_eval(law(2), mem(2), s - lo, seg2, b2)
+         call branch_eval(law(1), mem(1), hi, seg1, b1)
          f2_lo = b2%force
          f1_hi = b1%force
          x0 = 0.5_wp*(lo + hi)
@@ -470,8 +560,8 @@ contains
       end if
       call root_begin(r, lo, hi, x0, defl_tol*s, force_tol, max_iter)
       do
-         b1 = branch_at(law(1), mem(1), r%x)
-         b2 = branch_at(law(2), mem(2), s - r%x)
+         call branch_eval(law(1), mem(1), r%x, seg1, b1)
+         call branch_eval(law(2), mem(2), s - r%x, seg2, b2)
          call root_update(r, b1%force - b2%force, b1%slope + b2%slope, max(b1%force, b2%force))
          if (r%state /= root_running) exit
       end do
@@ -518,12 +608,13 @@ contains
       type(root_search_t) :: r
       real(wp) :: x_max(max_chain), secant(max_chain), f_max(max_chain), f_hi, f0, h, dh, x(max_chain)
       real(wp) :: x_lo(max_chain), x_hi(max_chain), h_lo, h_hi, theta
-      integer :: i, status
+      integer :: i, status, seg(max_chain)
       type(branch_point_t) :: bp
 
+      seg(1:n) = 0
       do i = 1, n
          x_max(i) = s - sum(z(1:n)) + z(i)
-         bp = branch_at(law(i), mem(i), x_max(i))
+         call branch_eval(law(i), mem(i), x_max(i), seg(i), bp)
          f_max(i) = bp%force
          secant(i) = f_max(i)/(x_max(i) - z(i))
       end do
@@ -534,7 +625,7 @@ contains
       if (present(guess)) f0 = guess
       call root_begin(r, 0.0_wp, f_hi, f0, defl_tol*f_hi, defl_tol, max_iter)
       do
-         call deformations_at(r%x, x, h, dh, status, split%iterations)
+         call deformations_at(r%x, x, h, dh, status, split%iterations, seg)
          if (status /= split_ok) then
             split%status = status
             return
@@ -550,8 +641,8 @@ contains
       split%branch = r%x
       if (abs(h) > 1.0e3_wp*defl_tol*s .and. split%status == split_ok) then
          ! a flat branch or a jump: interpolate between the bracket's ends
-         call deformations_at(r%lo, x_lo, h_lo, dh, status, split%iterations)
-         if (status == split_ok) call deformations_at(r%hi, x_hi, h_hi, dh, status, split%iterations)
+         call deformations_at(r%lo, x_lo, h_lo, dh, status, split%iterations, seg)
+         if (status == split_ok) call deformations_at(r%hi, x_hi, h_hi, dh, status, split%iterations, seg)
          if (status /= split_ok) then
             split%status = status
             return
@@ -563,17 +654,18 @@ contains
       end if
       split%x(1:n) = x(1:n)
       do i = 1, n
-         bp = branch_at(law(i), mem(i), x(i))
+         call branch_eval(law(i), mem(i), x(i), seg(i), bp)
          slope(i) = bp%slope
          loading(i) = bp%loading
       end do
    contains
       !> x_i(F) for every element, h(F) = sum x_i - s and h'(F).
-      pure subroutine deformations_at(f, xs, hf, dhf, st, iterations)
+      pure subroutine deformations_at(f, xs, hf, dhf, st, iterations, hint)
          real(wp), intent(in) :: f
          real(wp), intent(out) :: xs(:), hf, dhf
          integer, intent(out) :: st
          integer, intent(inout) :: iterations
+         integer, intent(inout) :: hint(:)     ! each element's table interval (curve_value_slope)
          type(root_search_t) :: q
          type(branch_point_t) :: b
          integer :: k
@@ -582,12 +674,12 @@ contains
          do k = 1, n
             if (.not. f > 0.0_wp) then
                xs(k) = z(k)
-               b = branch_at(law(k), mem(k), z(k))
+               call branch_eval(law(k), mem(k), z(k), hint(k), b)
             else
                call root_begin(q, z(k), x_max(k), z(k) + f/max(secant(k), min_slope), defl_tol*s, &
                                force_tol, max_iter)
                do
-                  b = branch_at(law(k), mem(k), q%x)
+                  call branch_eval(law(k), mem(k), q%x, hint(k), b)
                   call root_update(q, b%force - f, b%slope, f)
                   if (q%state /= root_running) exit
                end do

@@ -32,7 +32,7 @@ module loading_curves
 
    public :: loading_curve_t, curve_none, curve_polynomial, curve_table, max_order
    public :: curve_is_defined, curve_elastic_force, curve_rate_force, curve_force
-   public :: curve_energy, curve_moment, curve_deflection_at, curve_check
+   public :: curve_energy, curve_moment, curve_deflection_at, curve_check, curve_flat_extent
    public :: polynomial_minimum
 
    !> Forms of a curve: NLOAD = 1 and 2 of *OPTIONS (C.1).
@@ -60,6 +60,20 @@ contains
       type(loading_curve_t), intent(in) :: c
       curve_is_defined = c%form == curve_polynomial .or. c%form == curve_table
    end function curve_is_defined
+
+   !> The extent of the curve's initial flat part: the largest table
+   !! deformation up to which every point carries no force (0 for a
+   !! polynomial, or a table rising from its first point).
+   pure real(wp) function curve_flat_extent(c) result(z)
+      type(loading_curve_t), intent(in) :: c
+      integer :: k
+      z = 0.0_wp
+      if (c%form /= curve_table) return
+      do k = 1, size(c%force)
+         if (c%force(k) > 0.0_wp) exit
+         z = c%defl(k)
+      end do
+   end function curve_flat_extent
 
    !> The elastic (rate-independent) part F_e(d); 0 for d <= 0.
    pure real(wp) function curve_elastic_force(c, d) result(f)

@@ -42,7 +42,7 @@ module recurrent_loading
    use kinds, only: wp
    use strings, only: num
    use loading_curves, only: loading_curve_t, curve_elastic_force, curve_rate_force, curve_energy, &
-      curve_moment, curve_deflection_at
+      curve_moment, curve_deflection_at, curve_flat_extent
    use model, only: materials_section_t, loading_section_t
    implicit none
    private
@@ -74,6 +74,11 @@ module recurrent_loading
       real(wp) :: r = 1.0_wp          !< energy returned / energy absorbed
       logical :: elastic = .true.     !< R = 1 (and so G = 0): unloading retraces loading, no memory
       logical :: plastic = .false.    !< R = 0: unloading drops to zero force
+      !> Of the curve, kept here because the belts' right-hand side needs them at
+      !! every evaluation (recurrent_law sets them): the extent of its initial
+      !! flat part (curve_flat_extent) and the highest rate term it has (0: none).
+      real(wp) :: flat = 0.0_wp
+      integer :: n_rate = 0
    end type recurrent_law_t
 
    !> The memory of one element (figure 18), changed only by recurrent_accept.
@@ -109,6 +114,9 @@ contains
       law%r = r
       law%elastic = r >= 1.0_wp - ratio_slack .and. g <= ratio_slack
       law%plastic = r <= 0.0_wp
+      law%flat = curve_flat_extent(curve)
+      law%n_rate = 0
+      if (any(abs(curve%sigma_rate) > 0.0_wp)) law%n_rate = findloc(abs(curve%sigma_rate) > 0.0_wp, .true., 1, back=.true.)
    end function recurrent_law
 
    !> What is wrong with G and R, or '' (docs/loading.md 3): 0 <= G <= 1,

@@ -11,7 +11,14 @@
 !! solve of A z'' = b. tools/bench builds it in Release and runs it on the
 !! shipped decks; docs/performance.md keeps the figures.
 !!
-!!   hsri2d_bench [--repeat N] DECK [DECK ...]
+!!   hsri2d_bench [--repeat N] [--run-only] [--at T] DECK [DECK ...]
+!!
+!! --run-only times the simulation alone, and nothing else (for a profiler:
+!! perf, callgrind);
+!! --at T measures the effects' costs at the state RK4 reaches at time T
+!! (the deck's DT; the effects' memories updated after each step, as the
+!! simulation does), e.g. where the belts carry load or unload, rather than
+!! at the initial state.
 program hsri2d_bench
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use kinds, only: wp
@@ -23,9 +30,11 @@ program hsri2d_bench
    use run_summary, only: run_summary_t
    use run_case_mod, only: run_request_t, run_case, read_case_deck
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state
-   use effect_base, only: body_state_t
+   use effect_base, only: body_state_t, accept_result_t
    use body_matrix, only: body_accelerations
    use model, only: n_dof
+   use runge_kutta4, only: rk4_stepper_t
+   use ode_system, only: step_ok
    implicit none
 
    integer, parameter :: n_parts = 4, p_read = 1, p_run = 2, p_lst = 3, p_h5 = 4
@@ -37,8 +46,12 @@ program hsri2d_bench
    type(run_summary_t), allocatable :: results(:)
    logical, allocatable :: usable(:)
    character(len=*), parameter :: h5_scratch = '/tmp/hsri2d_bench_scratch.h5'
+   logical :: run_only
+   real(wp) :: t_at
 
    repeat = 21
+   run_only = .false.
+   t_at = 0.0_wp
    allocate (decks(0))
    i = 0
    do while (i < command_argument_count())
@@ -50,6 +63,20 @@ program hsri2d_bench
          read (arg, *, iostat=ios) repeat
          if (ios /= 0 .or. repeat < 1) then
             write (error_unit, '(a)') 'hsri2d_bench: --repeat needs a positive integer'
+            stop 1
+         end if
+         cycle
+      end if
+      if (arg == '--run-only') then
+         run_only = .true.
+         cycle
+      end if
+      if (arg == '--at') then
+         i = i + 1
+         call get_command_argument(i, arg)
+         read (arg, *, iostat=ios) t_at
+         if (ios /= 0 .or. .not. t_at >= 0.0_wp) then
+            write (error_unit, '(a)') 'hsri2d_bench: --at needs a time >= 0 (s)'
             stop 1
          end if
          cycle
@@ -75,8 +102,10 @@ program hsri2d_bench
    do k = 1, repeat
       do d = 1, n_decks
          if (.not. usable(d)) cycle
-         times(k, p_read, d) = cpu_of_read(d)
+         times(k, :, d) = 0.0_wp
          times(k, p_run, d) = cpu_of_run(d)
+         if (run_only) cycle
+         times(k, p_read, d) = cpu_of_read(d)
          times(k, p_lst, d) = cpu_of_case(d, .false.)
          times(k, p_h5, d) = cpu_of_case(d, .true.)
       end do
@@ -94,9 +123,15 @@ program hsri2d_bench
             r%evaluations, r%stats%steps
       end associate
    end do
+   if (run_only) stop
    write (output_unit, '(a)') ''
-   write (output_unit, '(a)') '  CPU time of each effect''s add_forces and of the solve, per evaluation, at the initial ' &
-      //'state (median of 21 blocks of 20000 calls)'
+   if (t_at > 0.0_wp) then
+      write (output_unit, '(a)') '  CPU time of each effect''s add_forces and of the solve, per evaluation, at the state ' &
+         //'of t = '//number(t_at)//' s (memories as at t = 0; median of 21 blocks of 20000 calls)'
+   else
+      write (output_unit, '(a)') '  CPU time of each effect''s add_forces and of the solve, per evaluation, at the ' &
+         //'initial state (median of 21 blocks of 20000 calls)'
+   end if
    do d = 1, n_decks
       if (usable(d)) call effect_costs(d)
    end do
@@ -163,12 +198,15 @@ contains
       real(wp) :: b(n_dof), zdd(n_dof), t0, t1, cost(blocks), sink
       integer :: k, blk, i, info, xo, ao
       character(len=:), allocatable :: line
+      real(wp) :: t
+      line = '  '//basename(decks(d)%s)//':'
       call system_build(models(d), sys)
       call system_initial_y(sys, y)
       allocate (rate(size(y)), rate2(size(y)))
-      st = system_body_state(sys, 1, 0.0_wp, y)
+      t = 0.0_wp
+      if (t_at > 0.0_wp) call advance_to(models(d)%time%dt, t_at, sys, t, y, line)
+      st = system_body_state(sys, 1, t, y)
       sink = 0.0_wp
-      line = '  '//basename(decks(d)%s)//':'
       associate (occ => sys%occupants(1))
          do k = 1, size(occ%effects)
             xo = occ%extra_offset(k)
@@ -205,6 +243,41 @@ contains
       if (.not. sink < huge(1.0_wp)) line = line//' (!)'
       write (output_unit, '(a)') line
    end subroutine effect_costs
+
+   !> RK4 at step h from (t, y) to t_end, each effect with memory told of
+   !! every accepted step (as simulation's on_accepted, without its outputs
+   !! and end tests); line notes where it stopped if the run failed.
+   subroutine advance_to(h, t_end, sys, t, y, line)
+      real(wp), intent(in) :: h, t_end
+      type(crash_system_t), intent(inout) :: sys
+      real(wp), intent(inout) :: t, y(:)
+      character(len=:), allocatable, intent(inout) :: line
+      type(rk4_stepper_t) :: rk
+      type(accept_result_t) :: ar
+      type(body_state_t) :: st
+      integer :: status, q, k, xo, ao
+      rk%h = h
+      call rk%init(sys, t, y, status)
+      do while (t < t_end .and. status == step_ok)
+         call rk%advance(sys, t, y, t_end, status)
+         if (status /= step_ok) exit
+         st = system_body_state(sys, 1, t, y)
+         ar%restart = .false.
+         associate (occ => sys%occupants(1))
+            do q = 1, size(occ%remembering)
+               k = occ%remembering(q)
+               xo = occ%extra_offset(k)
+               ao = occ%aux_offset(k)
+               ar%n_events = 0
+               associate (e => occ%effects(k)%e)
+                  call e%accept(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), ar)
+               end associate
+            end do
+         end associate
+         if (ar%restart) call rk%restart(sys, t, y, status)
+      end do
+      if (status /= step_ok) line = line//' (stopped at t = '//number(t)//' s)'
+   end subroutine advance_to
 
    function number(x) result(s)
       real(wp), intent(in) :: x
