@@ -23,6 +23,7 @@ module vehicle_motion
    type :: axis_t
       real(wp), allocatable :: ta(:), acc(:)          !< acceleration table
       real(wp), allocatable :: acc_v(:), acc_x(:)     !< its integrals at the knots
+      real(wp), allocatable :: acc_slope(:)           !< its slope on each interval (0 after the last knot)
       logical :: rate_given = .false., pos_given = .false.
       real(wp), allocatable :: tv(:), vel(:), vel_x(:) !< rate table and its integral
       real(wp), allocatable :: tx(:), pos(:)           !< position table
@@ -57,8 +58,11 @@ contains
             ax%acc(:) = m%pulse_acc%v(:, j)
             ax%acc_v(1) = v0(j)
             ax%acc_x(1) = x0(j)
+            allocate (ax%acc_slope(n))
+            ax%acc_slope(n) = 0.0_wp     ! after the last t_m the acceleration holds
             do k = 1, n - 1
                h = ax%ta(k + 1) - ax%ta(k)
+               ax%acc_slope(k) = (ax%acc(k + 1) - ax%acc(k))/(ax%ta(k + 1) - ax%ta(k))
                ax%acc_v(k + 1) = ax%acc_v(k) + 0.5_wp*h*(ax%acc(k) + ax%acc(k + 1))
                ax%acc_x(k + 1) = ax%acc_x(k) + h*ax%acc_v(k) + h**2*(2.0_wp*ax%acc(k) + ax%acc(k + 1))/6.0_wp
             end do
@@ -87,18 +91,18 @@ contains
       type(vehicle_motion_t), intent(in) :: vm
       real(wp), intent(in) :: t
       type(vehicle_state_t) :: vs
-      integer :: j, k
-      real(wp) :: tau, da
+      integer :: j, k, ka
+      real(wp) :: tau, tau_a, da
+      ! the three acceleration columns share their times (one table, C.1):
+      ! one search serves all three
+      ka = interval(vm%axis(1)%ta, t)
+      tau_a = t - vm%axis(1)%ta(ka)
       do j = 1, 3
          associate (ax => vm%axis(j))
             ! acceleration table and its exact integrals
-            k = interval(ax%ta, t)
-            tau = t - ax%ta(k)
-            if (k < size(ax%ta)) then
-               da = (ax%acc(k + 1) - ax%acc(k))/(ax%ta(k + 1) - ax%ta(k))
-            else
-               da = 0.0_wp     ! after the last t_m the acceleration holds
-            end if
+            k = ka
+            tau = tau_a
+            da = ax%acc_slope(k)
             vs%acc(j) = ax%acc(k) + da*tau
             vs%vel(j) = ax%acc_v(k) + tau*(ax%acc(k) + 0.5_wp*da*tau)
             vs%pos(j) = ax%acc_x(k) + tau*(ax%acc_v(k) + tau*(0.5_wp*ax%acc(k) + da*tau/6.0_wp))
