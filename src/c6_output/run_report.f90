@@ -145,7 +145,7 @@ contains
       class(listing_sink_t), intent(inout) :: this
       integer :: q, first, last, k, c
       character(len=132) :: line, names, units
-      real(wp) :: x
+      real(wp) :: row(max_listing_columns)
       do q = 1, size(this%tables)
          associate (s => this%reg%series(this%tables(q)))
             do first = 1, size(s%col), max_listing_columns
@@ -161,11 +161,11 @@ contains
                call this%lst%put(names)
                call this%lst%put(units)
                do k = 1, this%n_rows
-                  line = fixed(this%t(k), 10, 5)
+                  ! one formatted write per row: the time fits F10.5 (TMAX <= 1000 s)
                   do c = first, last
-                     x = this%rows(s%offset + c, k)*s%col(c)%listing_scale
-                     write (line(11 + 11*(c - first):), '(es11.3)') x
+                     row(c - first + 1) = this%rows(s%offset + c, k)*s%col(c)%listing_scale
                   end do
+                  write (line, '(f10.5,11es11.3)') this%t(k), row(1:last - first + 1)
                   call this%lst%put(line)
                end do
             end do
