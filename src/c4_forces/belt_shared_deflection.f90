@@ -39,7 +39,7 @@ module belt_shared_deflection
    use kinds, only: wp
    use strings, only: num, itoa
    use loading_curves, only: loading_curve_t, curve_polynomial, curve_table, curve_is_defined, &
-      curve_elastic_force, curve_rate_force
+      curve_elastic_force, curve_rate_force, table_interval
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, n_loading_aux, aux_work, aux_absorbed, &
       aux_rate_work
    implicit none
@@ -206,45 +206,27 @@ contains
       k = max(k, 0.0_wp)
    end subroutine curve_value_slope
 
-   !> The table interval lo (1 <= lo < n) holding d > 0, as loading_curves'
-   !! table_interval: defl(lo) <= d < defl(lo + 1), the last one beyond the
-   !! table; hint (when 1 <= hint < n) is tried first, else a binary search.
+   !> The table interval lo (1 <= lo < n) holding d > 0, loading_curves'
+   !! table_interval, with the interval hint (when 1 <= hint < n) tried first.
    pure integer function table_interval_from(defl, d, hint) result(lo)
       real(wp), intent(in) :: defl(:), d
       integer, intent(in) :: hint
-      integer :: hi, mid
-      hi = size(defl)
-      if (hint >= 1 .and. hint < hi) then
-         if (d >= defl(hint)) then
-            if (hint == hi - 1) then
-               lo = hint
-               return
-            else if (d < defl(hint + 1)) then
-               lo = hint
-               return
-            end if
+      integer :: n
+      n = size(defl)
+      if (hint >= 1 .and. hint < n) then
+         if (d >= defl(hint) .and. (hint == n - 1 .or. d < defl(hint + 1))) then
+            lo = hint
+            return
          end if
       end if
-      lo = 1
-      if (d >= defl(hi)) then
-         lo = hi - 1
-         return
-      end if
-      do while (hi - lo > 1)
-         mid = (lo + hi)/2
-         if (defl(mid) <= d) then
-            lo = mid
-         else
-            hi = mid
-         end if
-      end do
+      lo = table_interval(defl, d)
    end function table_interval_from
 
    !> dF_e/dd of a curve (right derivative; 0 for d <= 0).
    pure real(wp) function curve_slope(c, d) result(k)
       type(loading_curve_t), intent(in) :: c
       real(wp), intent(in) :: d
-      integer :: n, lo, hi, mid
+      integer :: n, lo
       k = 0.0_wp
       if (.not. d > 0.0_wp) return
       select case (c%form)
@@ -254,21 +236,7 @@ contains
          end do
          k = k + c%sigma(1)
       case (curve_table)
-         ! the interval holding d (the last one beyond the table), as loading_curves
-         lo = 1
-         hi = size(c%defl)
-         if (d >= c%defl(hi)) then
-            lo = hi - 1
-         else
-            do while (hi - lo > 1)
-               mid = (lo + hi)/2
-               if (c%defl(mid) <= d) then
-                  lo = mid
-               else
-                  hi = mid
-               end if
-            end do
-         end if
+         lo = table_interval(c%defl, d)      ! the last one beyond the table
          k = (c%force(lo + 1) - c%force(lo))/(c%defl(lo + 1) - c%defl(lo))
       end select
       k = max(k, 0.0_wp)

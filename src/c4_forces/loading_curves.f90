@@ -33,7 +33,7 @@ module loading_curves
    public :: loading_curve_t, curve_none, curve_polynomial, curve_table, max_order
    public :: curve_is_defined, curve_elastic_force, curve_rate_force, curve_force
    public :: curve_energy, curve_moment, curve_deflection_at, curve_check, curve_flat_extent
-   public :: polynomial_minimum
+   public :: polynomial_minimum, table_interval
 
    !> Forms of a curve: NLOAD = 1 and 2 of *OPTIONS (C.1).
    integer, parameter :: curve_none = 0, curve_polynomial = 1, curve_table = 2
