@@ -68,6 +68,8 @@ module belt_shared_deflection
    real(wp), parameter :: force_tol = 1.0e-12_wp, defl_tol = 1.0e-14_wp
    !> A branch flatter than this (lb/in) is flat: its compliance is infinite.
    real(wp), parameter :: min_slope = 1.0e-200_wp
+   !> The slope of a rigid element (a plastic one held at delta_max): no compliance.
+   real(wp), parameter :: rigid_slope = huge(1.0_wp)
 
    !> An element's rate-independent branch at one deformation (figure 18).
    type :: branch_point_t
@@ -296,6 +298,15 @@ contains
       end if
    end subroutine branch_eval
 
+   !> (D-B9) A plastic element (R = 0) that has turned: its graph is a
+   !! vertical segment at delta_max, from 0 to f_max, where it is rigid -
+   !! for a force up to f_max it keeps delta_max, beyond it it reloads.
+   pure logical function held_plastic(law, mem)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      held_plastic = law%plastic .and. .not. law%elastic .and. mem%unloading
+   end function held_plastic
+
    !> The largest deformation at which the element's branch carries no
    !! force (its residual deformation, and for a table that starts flat the
    !! flat part): below it the element is slack.
@@ -467,7 +478,8 @@ contains
    end function rate_force
 
    !> w_i = (1/k_i)/sum(1/k_j); elements of zero slope (a flat branch) share
-   !! the whole rate equally.
+   !! the whole rate equally, rigid ones (rigid_slope) take none. (A chain
+   !! has at least one element that is not rigid: see held_plastic.)
    pure subroutine rate_weights(n, slope, w)
       integer, intent(in) :: n
       real(wp), intent(in) :: slope(:)
@@ -483,7 +495,8 @@ contains
       else
          total = 0.0_wp
          do i = 1, n
-            w(i) = 1.0_wp/slope(i)
+            w(i) = 0.0_wp                          ! a rigid element takes no share
+            if (slope(i) < rigid_slope) w(i) = 1.0_wp/slope(i)
             total = total + w(i)
          end do
          do i = 1, n
@@ -505,14 +518,34 @@ contains
       logical, intent(out) :: loading(:)
       real(wp), intent(in), optional :: guess
       type(root_search_t) :: r
-      type(branch_point_t) :: b1, b2
-      real(wp) :: lo, hi, f2_lo, f1_hi, x0, f_low, f_high
-      integer :: seg1, seg2
+      type(branch_point_t) :: b1, b2, bj
+      real(wp) :: lo, hi, f2_lo, f1_hi, x0
+      integer :: seg1, seg2, seg, i, j
       seg1 = 0
       seg2 = 0
+      split%iterations = 0
+      ! (D-B9) a plastic element held at delta_max while the other carries no
+      ! more than its f_max: the other takes the whole change
+      do i = 1, 2
+         if (.not. held_plastic(law(i), mem(i))) cycle
+         j = 3 - i
+         seg = 0
+         call branch_eval(law(j), mem(j), s - mem(i)%delta_max, seg, bj)
+         split%iterations = split%iterations + 1
+         if (bj%force <= mem(i)%f_max) then
+            split%x(i) = mem(i)%delta_max
+            split%x(j) = s - mem(i)%delta_max
+            split%branch = bj%force
+            slope(i) = rigid_slope
+            loading(i) = .false.
+            slope(j) = bj%slope
+            loading(j) = bj%loading
+            return
+         end if
+      end do
+      ! else the bracket: g(z_1) < 0 < g(s - z_2), an element held above reloading
       lo = z(1)
       hi = s - z(2)
-      split%iterations = 0
       if (present(guess)) then
          ! a start from a nearby state: the bracket's signs are known
          ! (g(z_1) < 0 < g(s - z_2)), no need to evaluate its ends
@@ -541,17 +574,9 @@ contains
       if (r%state == root_failed) split%status = split_no_convergence
       split%x(1) = r%x
       split%x(2) = s - r%x
+      ! (the branches are continuous - the one jump, a plastic law's drop, is
+      ! handled above - so the bracket closes on a root of g)
       split%branch = 0.5_wp*(b1%force + b2%force)
-      if (abs(b1%force - b2%force) > 1.0e3_wp*force_tol*max(b1%force, b2%force) .and. split%status == split_ok) then
-         ! the bracket closed on a jump of a branch (a plastic law at its
-         ! turning point): the force is the one both elements admit there
-         associate (a1 => branch_at(law(1), mem(1), r%lo), a2 => branch_at(law(2), mem(2), s - r%hi), &
-                    c1 => branch_at(law(1), mem(1), r%hi), c2 => branch_at(law(2), mem(2), s - r%lo))
-            f_low = max(a1%force, a2%force)
-            f_high = min(c1%force, c2%force)
-         end associate
-         split%branch = 0.5_wp*(f_low + max(f_low, f_high))
-      end if
       slope(1) = b1%slope
       slope(2) = b2%slope
       loading(1) = b1%loading
@@ -622,9 +647,14 @@ contains
       end if
       split%x(1:n) = x(1:n)
       do i = 1, n
-         call branch_eval(law(i), mem(i), x(i), seg(i), bp)
-         slope(i) = bp%slope
-         loading(i) = bp%loading
+         if (held_plastic(law(i), mem(i)) .and. split%branch <= mem(i)%f_max) then
+            slope(i) = rigid_slope        ! held at delta_max (D-B9)
+            loading(i) = .false.
+         else
+            call branch_eval(law(i), mem(i), x(i), seg(i), bp)
+            slope(i) = bp%slope
+            loading(i) = bp%loading
+         end if
       end do
    contains
       !> x_i(F) for every element, h(F) = sum x_i - s and h'(F).
@@ -640,6 +670,10 @@ contains
          st = split_ok
          dhf = 0.0_wp
          do k = 1, n
+            if (held_plastic(law(k), mem(k)) .and. f <= mem(k)%f_max) then
+               xs(k) = mem(k)%delta_max    ! held, rigid: no compliance (D-B9)
+               cycle
+            end if
             if (.not. f > 0.0_wp) then
                xs(k) = z(k)
                call branch_eval(law(k), mem(k), z(k), hint(k), b)
