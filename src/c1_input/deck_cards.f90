@@ -380,7 +380,9 @@ contains
       t(g_pulserates)%min_cards = 1
       t(g_pulserates)%max_cards = 1000000
       t(g_pulserates)%note = 'A column left blank on every card is not available and is integrated from the ' &
-         //'accelerations; a column given replaces that integration (linear between the t_m).'
+         //'accelerations; a column given replaces that integration (linear between the t_m). The inertial ' &
+         //'forces still come from the accelerations, so a column should be their integral: one that differs ' &
+         //'by more than 1 % of its largest value is warned about (the energy balance shows the difference).'
       call set_fields(t(g_pulserates), [ &
          real_field('T', 's', one, blank_required, zero, zero, 1.0e3_wp, 'time t_m'), &
          real_field('XDOT', 'in/s', one, blank_absent, zero, -1.0e5_wp, 1.0e5_wp, 'horizontal velocity'), &

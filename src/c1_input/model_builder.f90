@@ -20,6 +20,7 @@ module model_builder
    use seat_beam_statics, only: beam_statics_t, beam_statics_solve, n_beam_quantities, beam_quantity_name, &
       statics_ok, bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    use pulse_csv, only: read_pulse_csv
+   use vehicle_motion, only: vehicle_table_differences
    use model, only: model_t, pulse_table_t, stop_curve_t, options_section_t, time_section_t, &
       numerics_section_t, body_section_t, joints_section_t, injury_section_t, vehicle_section_t, &
       materials_section_t, &
@@ -59,6 +60,7 @@ contains
       call build_loading(deck, m%options%nload, m%materials, m%loading, m%warnings, err)
       call build_belts(deck, m%options%nbelt, m%body, m%loading, m%belts, m%warnings, err)
       call build_vehicle(deck, m%vehicle, err)
+      if (.not. err%failed()) call warn_vehicle_tables(deck, m%vehicle, m%warnings)
       m%environment = environment_section_t(group_value(deck, g_gravity, 'G'))
       m%end_tests = end_tests_section_t(group_value(deck, g_endtests, 'VREST'), &
                                         group_value(deck, g_endtests, 'WREST'), &
@@ -782,6 +784,45 @@ contains
             ['X     ', 'Y     ', 'PHI   '], [1.0_wp, 1.0_wp, deg], ['in ', 'in ', 'deg'], err)
       end if
    end subroutine build_vehicle
+
+   !> (C.3) Tabulated rates or positions that differ from the integrals of
+   !! the tables below them by more than 1 % of the column's largest value
+   !! (vehicle_table_differences) get a warning: the run uses each table
+   !! where the report says, and the energy balance will show the difference.
+   subroutine warn_vehicle_tables(deck, v, warnings)
+      type(deck_t), intent(in) :: deck
+      type(vehicle_section_t), intent(in) :: v
+      type(string_t), allocatable, intent(inout) :: warnings(:)
+      real(wp) :: rate_diff(3), rate_time(3), pos_diff(3), pos_time(3)
+      character(len=*), parameter :: rate_name(3) = ['XDOT  ', 'YDOT  ', 'PHIDOT'], pos_name(3) = ['X  ', 'Y  ', 'PHI']
+      character(len=*), parameter :: rate_unit(3) = ['in/s ', 'in/s ', 'deg/s'], pos_unit(3) = ['in ', 'in ', 'deg']
+      real(wp), parameter :: unit_scale(3) = [1.0_wp, 1.0_wp, 1.0_wp/deg]
+      integer :: j
+      call vehicle_table_differences(v, rate_diff, rate_time, pos_diff, pos_time)
+      do j = 1, 3
+         if (allocated(v%pulse_vel%t)) then
+            if (rate_diff(j) > 0.01_wp*maxval(abs(v%pulse_vel%v(:, j)))) call warn(g_pulserates, &
+               trim(rate_name(j)), rate_diff(j)*unit_scale(j), trim(rate_unit(j)), rate_time(j), 'accelerations')
+         end if
+         if (allocated(v%pulse_pos%t)) then
+            if (pos_diff(j) > 0.01_wp*maxval(abs(v%pulse_pos%v(:, j)))) call warn(g_pulsepos, &
+               trim(pos_name(j)), pos_diff(j)*unit_scale(j), trim(pos_unit(j)), pos_time(j), 'rates')
+         end if
+      end do
+   contains
+      subroutine warn(gid, column, diff, unit, t, below)
+         integer, intent(in) :: gid
+         character(len=*), intent(in) :: column, unit, below
+         real(wp), intent(in) :: diff, t
+         type(card_t) :: header
+         header%source = deck%group(gid)%source
+         header%line = deck%group(gid)%line
+         call append_string(warnings, located(deck, header, '*'//trim(deck%spec(gid)%name)//' column '//column &
+            //' differs from the integral of the vehicle''s '//below//' by up to '//num(diff)//' '//unit &
+            //' (at t = '//num(t)//' s): the run takes the inertial forces from the accelerations and the ' &
+            //'motion from this table (C.3), and its energy balance will show the difference'))
+      end subroutine warn
+   end subroutine warn_vehicle_tables
 
    !> A time table from list cards: the time T and the columns named for
    !! x, y and the pitch.

@@ -17,7 +17,7 @@ module vehicle_motion
    implicit none
    private
 
-   public :: vehicle_motion_t, vehicle_state_t, vehicle_motion_init, vehicle_state_at
+   public :: vehicle_motion_t, vehicle_state_t, vehicle_motion_init, vehicle_state_at, vehicle_table_differences
 
    !> The motion of one coordinate (x_c, y_c or Phi).
    type :: axis_t
@@ -85,6 +85,57 @@ contains
          end associate
       end do
    end subroutine vehicle_motion_init
+
+   !> (C.3) Tabulated rates and positions replace integrations, so they
+   !! should be the integrals of the tables below them; measured data never
+   !! quite are, and where they disagree the vehicle's inertial forces (from
+   !! the accelerations) and its pitch, rates and anchorage motion (from the
+   !! tables) describe different motions: the energy balance shows the
+   !! difference. Per axis (x, y, pitch), the largest |difference| at the
+   !! knots of the rate table against the integral of the accelerations, and
+   !! at the knots of the position table against the integral of the rates
+   !! (tabulated or integrated), with the time of each (0 where not given).
+   pure subroutine vehicle_table_differences(v, rate_diff, rate_time, pos_diff, pos_time)
+      type(vehicle_section_t), intent(in) :: v
+      real(wp), intent(out) :: rate_diff(3), rate_time(3), pos_diff(3), pos_time(3)
+      type(vehicle_section_t) :: lower
+      type(vehicle_motion_t) :: vm
+      type(vehicle_state_t) :: vs
+      integer :: k, j
+      rate_diff = 0.0_wp
+      rate_time = 0.0_wp
+      pos_diff = 0.0_wp
+      pos_time = 0.0_wp
+      lower = v
+      if (allocated(lower%pulse_pos%t)) then
+         deallocate (lower%pulse_pos%t, lower%pulse_pos%v)
+         call vehicle_motion_init(lower, vm)
+         do k = 1, size(v%pulse_pos%t)
+            vs = vehicle_state_at(vm, v%pulse_pos%t(k))
+            do j = 1, 3
+               if (.not. v%pulse_pos%given(j)) cycle
+               if (abs(v%pulse_pos%v(k, j) - vs%pos(j)) > pos_diff(j)) then
+                  pos_diff(j) = abs(v%pulse_pos%v(k, j) - vs%pos(j))
+                  pos_time(j) = v%pulse_pos%t(k)
+               end if
+            end do
+         end do
+      end if
+      if (allocated(lower%pulse_vel%t)) then
+         deallocate (lower%pulse_vel%t, lower%pulse_vel%v)
+         call vehicle_motion_init(lower, vm)
+         do k = 1, size(v%pulse_vel%t)
+            vs = vehicle_state_at(vm, v%pulse_vel%t(k))
+            do j = 1, 3
+               if (.not. v%pulse_vel%given(j)) cycle
+               if (abs(v%pulse_vel%v(k, j) - vs%vel(j)) > rate_diff(j)) then
+                  rate_diff(j) = abs(v%pulse_vel%v(k, j) - vs%vel(j))
+                  rate_time(j) = v%pulse_vel%t(k)
+               end if
+            end do
+         end do
+      end if
+   end subroutine vehicle_table_differences
 
    !> The vehicle's position, rate and acceleration at time t.
    pure function vehicle_state_at(vm, t) result(vs)

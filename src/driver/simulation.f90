@@ -290,6 +290,10 @@ contains
                   //' s exceeds EBTOL = '//num(m%numerics%energy_tol)//' of the largest body kinetic energy (' &
                   //num(os%ke_max)//' in*lb): the results are not trustworthy. A smaller DT (or NINT = 3 ' &
                   //'with tighter RTOL) should help; *NUMERICS EBFAIL = CONTINUE runs on regardless'
+               if (allocated(m%vehicle%pulse_vel%t) .or. allocated(m%vehicle%pulse_pos%t)) &
+                  summary%failure = summary%failure//'. Tabulated vehicle rates or positions that are not ' &
+                                    //'the integrals of its accelerations (C.3) make such an error whatever DT: ' &
+                                    //'see the deck''s warnings'
                call error_set(err, exit_numerical, summary%failure)
             end if
          end if
