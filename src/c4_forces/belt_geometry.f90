@@ -175,17 +175,27 @@ contains
       u = hip(1) - g%anchor(1)
       v = hip(2) - g%anchor(2)
       d = hypot(u, v)
-      if (d > g%h) then
-         phi1 = asin(g%h/d) + atan2(v, u)
-         wrap = phi1 - theta1 + 0.5_wp*pi
-         if (wrap >= 0.0_wp) then
-            length = sqrt(d**2 - g%h**2) + g%h*wrap
-            return
-         end if
+      phi1 = tangent_turn(g%h, d) + atan2(v, u)
+      wrap = phi1 - theta1 + 0.5_wp*pi
+      if (wrap >= 0.0_wp) then
+         length = sqrt(max(d**2 - g%h**2, 0.0_wp)) + g%h*wrap
+         return
       end if
       e = hip + g%h*[cos(theta1), sin(theta1)] - g%anchor
       length = hypot(e(1), e(2))
    end function lap_length
+
+   !> asin(h/d), the angle between the line from the anchor to the hip and
+   !! the tangent from the anchor to the hip's circle of radius h; π/2 when
+   !! the anchor lies on or inside the circle, where the anchor is its own
+   !! tangent point and the belt's length, sqrt(d² − h²) + h·wrap, stays
+   !! continuous (the anchor inside the pelvis is not a physical state,
+   !! but a run may pass through it: no jump then).
+   pure real(wp) function tangent_turn(h, d) result(a)
+      real(wp), intent(in) :: h, d
+      a = 0.5_wp*pi
+      if (d > h) a = asin(h/d)
+   end function tangent_turn
 
    !> φ_j, δ_j, δ̇_j and ∂δ_j/∂z of one section (C.4.e). angle = .false.
    !! skips φ_j of a straight section (its direction is used without it;
@@ -235,20 +245,21 @@ contains
          u = bb%joint(1, 1) - g%anchor(1)
          v = bb%joint(2, 1) - g%anchor(2)
          d = sqrt(u**2 + v**2)   ! (lengths are bounded: equations_of_motion's range guard)
-         wrapped = d > g%h
-         if (wrapped) then
-            phi = asin(g%h/d) + atan2(v, u)     ! C.4.e φ_1, with atan2 (BE-2)
-            wrap = phi - bb%theta(1) + 0.5_wp*pi
-            wrapped = wrap >= 0.0_wp            ! A-B1: no negative wrap
-         end if
+         phi = tangent_turn(g%h, d) + atan2(v, u)     ! C.4.e φ_1, with atan2 (BE-2)
+         wrap = phi - bb%theta(1) + 0.5_wp*pi
+         wrapped = wrap >= 0.0_wp .and. d > 0.0_wp   ! A-B1: no negative wrap
          if (wrapped) then
             ! δ_1 = √(u²+v²−h_1²) − ℓ_10 + h_1 [φ_1 − θ_1 + π/2]; its derivative
             ! is the tangent direction against the hip's motion minus h_1 dθ_1;
-            ! e(φ_1) is (u, v)/d turned by asin(h_1/d)
-            length = sqrt(d**2 - g%h**2) + g%h*wrap
-            r = g%h/d
+            ! e(φ_1) is (u, v)/d turned by asin(h_1/d). Inside the circle
+            ! (d <= h_1) the length is h_1 wrap alone, whose derivative
+            ! h_1 ∇atan2 = (h_1/d) (−v, u)/d is the same formula with the
+            ! turn held at π/2 and the factor h_1/d: continuous at d = h_1.
+            length = sqrt(max(d**2 - g%h**2, 0.0_wp)) + g%h*wrap
+            r = min(g%h/d, 1.0_wp)
             cr = sqrt(1.0_wp - r**2)
             e = [u*cr - v*r, v*cr + u*r]/d
+            if (d < g%h) e = (g%h/d)*e
             delta = length - g%length0
             delta_rate = dot_product(e, bb%joint_rate(:, 1)) - g%h*bb%theta_rate(1)   ! C.4.e δ̇_1
             call add_joint_gradient(bb, s, e, grad)
