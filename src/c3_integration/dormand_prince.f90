@@ -41,6 +41,8 @@ module dormand_prince
       real(wp) :: rtol = 1.0e-7_wp, atol = 1.0e-9_wp
       real(wp) :: err_old = dopri_err_old_initial  !< the PI controller's memory
       real(wp), allocatable :: k2(:), k3(:), k4(:), k5(:), k6(:), k7(:), yt(:), ynew(:), e(:)
+      !> the entries of y in the error norm (the system's error_controlled)
+      integer, allocatable :: controlled(:)
    contains
       procedure :: init => dopri_init
       procedure :: advance => dopri_advance
@@ -55,12 +57,13 @@ contains
       real(wp), intent(in) :: t0
       real(wp), intent(in) :: y0(:)
       integer, intent(out) :: status
-      integer :: n
+      integer :: n, i
       n = size(y0)
       if (allocated(this%f)) deallocate (this%f, this%k2, this%k3, this%k4, this%k5, this%k6, &
                                          this%k7, this%yt, this%ynew, this%e)
       allocate (this%f(n), this%k2(n), this%k3(n), this%k4(n), this%k5(n), this%k6(n), this%k7(n), &
                 this%yt(n), this%ynew(n), this%e(n))
+      this%controlled = pack([(i, i=1, n)], sys%error_controlled(n))
       call dopri_begin(this, sys, t0, y0, status)
    end subroutine dopri_init
 
@@ -156,7 +159,7 @@ contains
          logical, intent(out) :: ok
          real(wp), intent(out) :: err
          real(wp) :: sc
-         integer :: i
+         integer :: i, j
          err = huge(1.0_wp)
          associate (k1 => this%f, k2 => this%k2, k3 => this%k3, k4 => this%k4, k5 => this%k5, &
                     k6 => this%k6, k7 => this%k7, yt => this%yt, ynew => this%ynew, e => this%e)
@@ -180,10 +183,12 @@ contains
             if (.not. evaluate(t + h, ynew, k7)) return
             ok = .true.
             e = h*(e1*k1 + e3*k3 + e4*k4 + e5*k5 + e6*k6 + e7*k7)
-            ! the scaled RMS norm, without overflow whatever the tolerances:
+            ! the scaled RMS norm over the error-controlled entries, without
+            ! overflow whatever the tolerances:
             ! a component beyond 1e150 of its scale rejects the step at once
             err = 0.0_wp
-            do i = 1, size(y)
+            do j = 1, size(this%controlled)
+               i = this%controlled(j)
                sc = this%atol + this%rtol*max(abs(y(i)), abs(ynew(i)))
                if (.not. abs(e(i)) <= 1.0e150_wp*sc) then
                   err = huge(1.0_wp)
@@ -191,7 +196,7 @@ contains
                end if
                err = err + (e(i)/sc)**2
             end do
-            err = sqrt(err/real(size(y), wp))
+            err = sqrt(err/real(max(size(this%controlled), 1), wp))
          end associate
       end subroutine try_step
 

@@ -24,6 +24,7 @@ module ode_system
    type, abstract :: ode_system_t
    contains
       procedure(rhs_interface), deferred :: rhs
+      procedure :: error_controlled => system_error_controlled
    end type ode_system_t
 
    abstract interface
@@ -119,4 +120,15 @@ contains
       case default;           text = 'unknown integration status'
       end select
    end function step_status_text
+
+   !> For each of the n entries of y, whether an adaptive stepper's error
+   !! norm includes it: all of them unless the system says otherwise.
+   pure function system_error_controlled(this, n) result(mask)
+      class(ode_system_t), intent(in) :: this
+      integer, intent(in) :: n
+      logical :: mask(n)
+      associate (unused => this)
+      end associate
+      mask = .true.
+   end function system_error_controlled
 end module ode_system

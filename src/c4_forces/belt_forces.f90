@@ -76,6 +76,7 @@ module belt_forces
       integer :: body(3) = 0                 !< element of the body under each section (0: rigid)
       real(wp) :: slack = 0.0_wp             !< sum of the sections' Delta_j
       integer :: aux_offset = 0              !< its first auxiliary quantity in the effect's
+      integer :: start_aux = 0               !< its search's start among the effect's aux (D-B7)
    end type belt_chain_t
 
    type, extends(effect_t) :: belt_effect_t
@@ -166,7 +167,15 @@ contains
       e%n_aux = 0
       do c = 1, e%n_chains
          e%chain(c)%aux_offset = e%n_aux
-         e%n_aux = e%n_aux + n_loading_aux*e%chain(c)%n_elements + 2   ! elements, supplied, start
+         e%n_aux = e%n_aux + n_loading_aux*e%chain(c)%n_elements + 1   ! elements, supplied
+      end do
+      ! the searches' starts last, outside the step-size control (D-B7)
+      e%n_aux_start = e%n_chains
+      do c = 1, e%n_chains
+         e%chain(c)%start_aux = e%n_aux + c
+      end do
+      e%n_aux = e%n_aux + e%n_aux_start
+      do c = 1, e%n_chains
          do j = 1, e%chain(c)%n_elements
             e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%chain(c)%law(j))
          end do
@@ -250,7 +259,7 @@ contains
                bs%g(:, c) = bs%g(:, c) + bs%kin(k)%gradient
             end do
             call chain_split(ch%n_elements, ch%law, ch%mem, bs%s(c), bs%s_dot(c), this%max_iter, bs%split(c), &
-                             aux(ch%aux_offset + n_loading_aux*ch%n_elements + 2))
+                             aux(ch%start_aux))
          end associate
       end do
    end function belt_section_state
@@ -286,9 +295,10 @@ contains
             end do
             n = ch%n_elements
             a = ch%aux_offset
-            call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, aux(a + n_loading_aux*n + 2))
+            call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, aux(ch%start_aux))
             if (sp%status /= split_ok) then
-               aux_rate(a + 1:a + n_loading_aux*n + 2) = ieee_value(0.0_wp, ieee_quiet_nan)
+               aux_rate(a + 1:a + n_loading_aux*n + 1) = ieee_value(0.0_wp, ieee_quiet_nan)
+               aux_rate(ch%start_aux) = ieee_value(0.0_wp, ieee_quiet_nan)
                cycle
             end if
             f = sp%force
@@ -298,7 +308,7 @@ contains
             end do
             ! the work of the moving anchorages: F times the deformation rate at fixed z (D-B4)
             aux_rate(a + n_loading_aux*n + 1) = f*(s_dot - dot_product(g, st%zdot))
-            aux_rate(a + n_loading_aux*n + 2) = sp%guess_rate     ! the search's start (D-B7)
+            aux_rate(ch%start_aux) = sp%guess_rate     ! the search's start (D-B7)
          end associate
       end do
    end subroutine belt_add_forces
@@ -337,7 +347,7 @@ contains
             if (.not. abs(s_dot) > 0.0_wp .and. ieee_is_finite(s_dot)) cycle
             if (s_dot > 0.0_wp .and. .not. any(ch%mem(1:n)%unloading)) cycle
             call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, &
-                             aux(ch%aux_offset + n_loading_aux*n + 2))
+                             aux(ch%start_aux))
             if (sp%status /= split_ok) cycle
             do i = 1, n
                call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), sp%rate(i), changed)

@@ -9,7 +9,8 @@
 !!   compiler enforces that predictor, corrector and Runge-Kutta stages
 !!   change nothing (docs/architecture.md, rule 1);
 !! - may integrate auxiliary quantities with the motion (work integrals:
-!!   n_aux of them) and carry extra degrees of freedom of its own (n_extra
+!!   n_aux of them, the last n_aux_start of which only start a search and
+!!   stay outside the adaptive step's error norm) and carry extra degrees of freedom of its own (n_extra
 !!   coordinates q and their rates, uncoupled from the body matrix, as the
 !!   rigid-beam seat of C.4.d will be);
 !! - changes its memory only in `accept`, after a step is accepted, and then
@@ -80,6 +81,9 @@ module effect_base
       character(len=24) :: name = ' '    !< HDF5 group /effects/<name>; lower case, no blanks
       character(len=40) :: title = ' '   !< for the listing, with the report section
       integer :: n_aux = 0               !< auxiliary integrated quantities
+      !> the last n_aux_start of them are only starting values of searches,
+      !! integrated for speed: outside the step-size control (D-B7)
+      integer :: n_aux_start = 0
       integer :: n_extra = 0             !< extra degrees of freedom (coordinates; rates follow)
       logical :: needs_vehicle = .false. !< reads st%vehicle
       logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)

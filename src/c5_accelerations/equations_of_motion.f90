@@ -51,9 +51,20 @@ module equations_of_motion
       character(len=:), allocatable :: failure_detail
    contains
       procedure :: rhs => system_rhs
+      procedure :: error_controlled => system_error_controlled
    end type crash_system_t
 
 contains
+
+   !> The layout's error-controlled entries (every one but the searches'
+   !! starting values, D-B7).
+   pure function system_error_controlled(this, n) result(mask)
+      class(crash_system_t), intent(in) :: this
+      integer, intent(in) :: n
+      logical :: mask(n)
+      mask = .true.
+      if (n == this%layout%n) mask = this%layout%error_controlled()
+   end function system_error_controlled
 
    !> The system of one model: the vehicle and the model's occupant.
    subroutine system_build(m, sys)

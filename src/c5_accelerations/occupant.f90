@@ -74,7 +74,9 @@ contains
       integer :: j
       associate (e => occ%effects(k)%e)
          call layout%reserve(trim(occ%label)//': '//trim(e%name)//' q, q''', 2*e%n_extra, occ%extra_offset(k))
-         call layout%reserve(trim(occ%label)//': '//trim(e%name)//' work', e%n_aux, occ%aux_offset(k))
+         call layout%reserve(trim(occ%label)//': '//trim(e%name)//' work', e%n_aux - e%n_aux_start, occ%aux_offset(k))
+         if (e%n_aux_start > 0) call layout%reserve(trim(occ%label)//': '//trim(e%name)//' search starts', &
+                                                    e%n_aux_start, j, error_controlled=.false.)
          occ%needs_vehicle = occ%needs_vehicle .or. e%needs_vehicle
          if (.not. allocated(occ%evaluated)) allocate (occ%evaluated(0))
          if (.not. allocated(occ%remembering)) allocate (occ%remembering(0))
