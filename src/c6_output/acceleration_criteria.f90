@@ -1,0 +1,289 @@
+!> Injury criteria of an acceleration history that users of today expect
+!! beside the report's (issue 7; the report predates them): the Head
+!! Injury Criterion over windows up to 15 and 36 ms, the Gadd Severity
+!! Index, and the cumulative 3 ms clip of FMVSS 208 S6.3. Samples (t, a),
+!! a the resultant in g and t in s, come one accepted step at a time; the
+!! acceleration is linear between them (trapezoids), so a jump is two
+!! samples at one time. Memory and cost do not grow with the number of
+!! steps beyond what the criteria need (docs/injury.md).
+!!
+!! - GSI = integral of a^2.5 dt (Gadd 1966), trapezoids of a^2.5.
+!! - HIC = max over t1 < t2, t2 - t1 <= W, of (t2 - t1) [V(t2) - V(t1)]^2.5
+!!   / (t2 - t1)^2.5, V the integral of a. V is exact at every point (the
+!!   integral of the linear pieces); the window ends are the points of a
+!!   grid of spacing h (10 kHz unless the caller says, the sampling of
+!!   SAE J211 data), every pair of them within W: every window, not only
+!!   the longest from each start. HIC^2 = dV^5/dt^3 is compared, which
+!!   needs no power; a window is skipped when dV^2 a_max^3, a bound of
+!!   HIC^2 over every window ending there, cannot beat the best.
+!! - The 3 ms clip: the level L that a(t) >= L for a cumulative 3 ms
+!!   ("except for intervals whose cumulative duration is not more than
+!!   3 milliseconds"); 0 when the history is shorter than 3 ms. The linear
+!!   pieces above the level found so far are kept, since the level only
+!!   rises as the history grows.
+module acceleration_criteria
+   use kinds, only: wp
+   implicit none
+   private
+
+   public :: acceleration_criteria_t, hic_result_t, criteria_new, hic_grid_default
+
+   !> The window ends' grid spacing (s): 10 kHz.
+   real(wp), parameter :: hic_grid_default = 1.0e-4_wp
+   !> The cumulative duration of the clip (s).
+   real(wp), parameter :: clip_duration = 3.0e-3_wp
+
+   !> A HIC and its window.
+   type :: hic_result_t
+      real(wp) :: value = 0.0_wp
+      real(wp) :: t1 = 0.0_wp, t2 = 0.0_wp
+   end type hic_result_t
+
+   !> HIC over windows up to n_window grid steps: V and the largest a of
+   !! the last n_window + 1 grid points and intervals (ring buffers).
+   type :: hic_search_t
+      integer :: n_window = 0
+      real(wp) :: best2 = 0.0_wp                 !< the largest HIC^2 found
+      integer :: k1 = 0, k2 = 0                  !< its window's grid points
+   end type hic_search_t
+
+   type :: acceleration_criteria_t
+      logical :: started = .false.
+      real(wp) :: h = hic_grid_default           !< the grid's spacing
+      real(wp) :: t = 0.0_wp, a = 0.0_wp         !< the last sample
+      real(wp) :: v = 0.0_wp                     !< V at the last sample
+      real(wp) :: t0 = 0.0_wp                    !< the first sample's time (grid point 0)
+      real(wp) :: gsi = 0.0_wp
+      ! the grid: point k at t0 + k h; V there and a's largest over (k-1, k]
+      integer :: k = -1                          !< the last grid point reached
+      real(wp) :: a_int = 0.0_wp                 !< a's largest since grid point k
+      real(wp), allocatable :: v_grid(:), a_grid(:)   !< ring buffers, index mod size
+      type(hic_search_t) :: hic(2)               !< 15 ms and 36 ms
+      ! the clip: the linear pieces that reach above clip_floor
+      real(wp) :: clip_floor = 0.0_wp
+      real(wp) :: duration = 0.0_wp              !< of the whole history
+      integer :: n_pieces = 0
+      real(wp), allocatable :: piece(:, :)       !< (a at its start, a at its end, duration)
+   contains
+      procedure :: add => criteria_add
+      procedure :: hic15 => criteria_hic15
+      procedure :: hic36 => criteria_hic36
+      procedure :: clip3ms => criteria_clip
+   end type acceleration_criteria_t
+
+contains
+
+   !> Criteria with window ends on a grid of spacing h (s; default 10 kHz).
+   pure function criteria_new(h) result(c)
+      real(wp), intent(in), optional :: h
+      type(acceleration_criteria_t) :: c
+      if (present(h)) c%h = h
+      call setup(c)
+   end function criteria_new
+
+   !> The buffers for the grid spacing c%h.
+   pure subroutine setup(c)
+      class(acceleration_criteria_t), intent(inout) :: c
+      integer :: n
+      c%hic(1)%n_window = nint(15.0e-3_wp/c%h)
+      c%hic(2)%n_window = nint(36.0e-3_wp/c%h)
+      n = maxval(c%hic%n_window) + 1
+      allocate (c%v_grid(0:n - 1), c%a_grid(0:n - 1), c%piece(3, 256))
+      c%v_grid = 0.0_wp
+      c%a_grid = 0.0_wp
+   end subroutine setup
+
+   !> One more sample: a (g, >= 0) at t (s, not before the last sample).
+   pure subroutine criteria_add(this, t, a_in)
+      class(acceleration_criteria_t), intent(inout) :: this
+      real(wp), intent(in) :: t, a_in
+      real(wp) :: dt, tk, ak, a
+      a = max(a_in, 0.0_wp)       ! (a resultant; V must not decrease)
+      if (.not. allocated(this%v_grid)) call setup(this)
+      if (.not. this%started) then
+         this%started = .true.
+         this%t0 = t
+         this%t = t
+         this%a = a
+         this%k = 0
+         this%v_grid(0) = 0.0_wp
+         this%a_grid(0) = a
+         this%a_int = 0.0_wp
+         return
+      end if
+      dt = t - this%t
+      if (.not. dt >= 0.0_wp) return                 ! (time does not go back)
+      this%gsi = this%gsi + 0.5_wp*dt*(gadd(this%a) + gadd(a))
+      call add_piece(this, this%a, a, dt)
+      ! the grid points this piece passes: V there from the linear piece
+      do
+         tk = this%t0 + real(this%k + 1, wp)*this%h
+         if (tk > t) exit
+         ak = this%a
+         if (dt > 0.0_wp) ak = this%a + (a - this%a)*(tk - this%t)/dt
+         this%a_int = max(this%a_int, this%a, ak)
+         call next_grid_point(this, this%v + 0.5_wp*(tk - this%t)*(this%a + ak))
+      end do
+      this%a_int = max(this%a_int, this%a, a)
+      this%v = this%v + 0.5_wp*dt*(this%a + a)
+      this%t = t
+      this%a = a
+   end subroutine criteria_add
+
+   !> a^2.5 (a >= 0).
+   pure real(wp) function gadd(a)
+      real(wp), intent(in) :: a
+      gadd = a*a*sqrt(max(a, 0.0_wp))
+   end function gadd
+
+   !> Grid point k + 1 with V = v_k: the windows that end there.
+   pure subroutine next_grid_point(this, v_k)
+      class(acceleration_criteria_t), intent(inout) :: this
+      real(wp), intent(in) :: v_k
+      integer :: n, k, q
+      n = size(this%v_grid)
+      this%k = this%k + 1
+      k = this%k
+      this%v_grid(modulo(k, n)) = v_k
+      this%a_grid(modulo(k, n)) = this%a_int       ! a's largest over (k-1, k]
+      this%a_int = 0.0_wp
+      do q = 1, size(this%hic)
+         call search_windows(this%hic(q), this%v_grid, this%a_grid, k, this%h)
+      end do
+   end subroutine next_grid_point
+
+   !> The windows (j, k], k - n_window <= j < k, against the best so far.
+   pure subroutine search_windows(s, v_grid, a_grid, k, h)
+      type(hic_search_t), intent(inout) :: s
+      real(wp), intent(in) :: v_grid(0:), a_grid(0:), h
+      integer, intent(in) :: k
+      real(wp) :: vk, dv, dt, a_max, bound
+      integer :: n, j, j0
+      n = size(v_grid)
+      j0 = max(0, k - s%n_window)
+      vk = v_grid(modulo(k, n))
+      ! a bound of dV^5/dt^3 = dV^2 (dV/dt)^3 over every window ending at k
+      a_max = 0.0_wp
+      do j = j0 + 1, k
+         a_max = max(a_max, a_grid(modulo(j, n)))
+      end do
+      dv = vk - v_grid(modulo(j0, n))
+      bound = dv*dv*a_max**3
+      if (.not. bound > s%best2) return
+      do j = k - 1, j0, -1
+         dv = vk - v_grid(modulo(j, n))
+         dt = real(k - j, wp)*h
+         if (dv**5 > s%best2*dt**3) then
+            s%best2 = dv**5/dt**3
+            s%k1 = j
+            s%k2 = k
+         end if
+      end do
+   end subroutine search_windows
+
+   pure function criteria_hic15(this) result(r)
+      class(acceleration_criteria_t), intent(in) :: this
+      type(hic_result_t) :: r
+      r = hic_of(this, 1)
+   end function criteria_hic15
+
+   pure function criteria_hic36(this) result(r)
+      class(acceleration_criteria_t), intent(in) :: this
+      type(hic_result_t) :: r
+      r = hic_of(this, 2)
+   end function criteria_hic36
+
+   pure function hic_of(this, q) result(r)
+      class(acceleration_criteria_t), intent(in) :: this
+      integer, intent(in) :: q
+      type(hic_result_t) :: r
+      if (this%hic(q)%k2 == 0) return
+      r%value = sqrt(this%hic(q)%best2)
+      r%t1 = this%t0 + real(this%hic(q)%k1, wp)*this%h
+      r%t2 = this%t0 + real(this%hic(q)%k2, wp)*this%h
+   end function hic_of
+
+   ! --- the 3 ms clip -----------------------------------------------------
+
+   !> Keep the piece (a0 to a1 over dt) when it reaches above the floor;
+   !! when the store is full, raise the floor to the clip of what is kept
+   !! (the final clip cannot be lower) and drop what lies below it.
+   pure subroutine add_piece(this, a0, a1, dt)
+      class(acceleration_criteria_t), intent(inout) :: this
+      real(wp), intent(in) :: a0, a1, dt
+      real(wp), allocatable :: longer(:, :)
+      integer :: i, n
+      this%duration = this%duration + dt
+      if (.not. (dt > 0.0_wp .and. max(a0, a1) > this%clip_floor)) return
+      if (this%n_pieces == size(this%piece, 2)) then
+         this%clip_floor = clip_level(this%piece(:, 1:this%n_pieces))
+         n = 0
+         do i = 1, this%n_pieces
+            if (max(this%piece(1, i), this%piece(2, i)) > this%clip_floor) then
+               n = n + 1
+               this%piece(:, n) = this%piece(:, i)
+            end if
+         end do
+         this%n_pieces = n
+         if (n > size(this%piece, 2)/2) then
+            allocate (longer(3, 2*size(this%piece, 2)))
+            longer(:, 1:n) = this%piece(:, 1:n)
+            call move_alloc(longer, this%piece)
+         end if
+         if (.not. max(a0, a1) > this%clip_floor) return
+      end if
+      this%n_pieces = this%n_pieces + 1
+      this%piece(:, this%n_pieces) = [a0, a1, dt]
+   end subroutine add_piece
+
+   !> The 3 ms clip of the history so far (g).
+   pure real(wp) function criteria_clip(this) result(level)
+      class(acceleration_criteria_t), intent(in) :: this
+      level = 0.0_wp
+      if (.not. allocated(this%piece)) return
+      if (this%duration < clip_duration) return
+      level = max(this%clip_floor, clip_level(this%piece(:, 1:this%n_pieces)))
+   end function criteria_clip
+
+   !> The level L at which the pieces spend clip_duration at or above L
+   !! (bisection: that time falls as L rises); 0 when they never do.
+   pure real(wp) function clip_level(pieces) result(level)
+      real(wp), intent(in) :: pieces(:, :)
+      real(wp) :: lo, hi, mid
+      integer :: it
+      level = 0.0_wp
+      if (size(pieces, 2) == 0) return
+      if (time_above(pieces, 0.0_wp) < clip_duration) return
+      lo = 0.0_wp
+      hi = maxval(pieces(1:2, :))
+      do it = 1, 200
+         mid = 0.5_wp*(lo + hi)
+         if (.not. (mid > lo .and. mid < hi)) exit
+         if (time_above(pieces, mid) >= clip_duration) then
+            lo = mid
+         else
+            hi = mid
+         end if
+      end do
+      level = lo
+   end function clip_level
+
+   !> The time the linear pieces spend at or above level.
+   pure real(wp) function time_above(pieces, level) result(t)
+      real(wp), intent(in) :: pieces(:, :), level
+      real(wp) :: a0, a1, lo, hi
+      integer :: i
+      t = 0.0_wp
+      do i = 1, size(pieces, 2)
+         a0 = pieces(1, i)
+         a1 = pieces(2, i)
+         lo = min(a0, a1)
+         hi = max(a0, a1)
+         if (lo >= level) then
+            t = t + pieces(3, i)
+         else if (hi > level) then
+            t = t + pieces(3, i)*(hi - level)/(hi - lo)
+         end if
+      end do
+   end function time_above
+end module acceleration_criteria
