@@ -39,8 +39,7 @@ module acceleration_criteria
       real(wp) :: t1 = 0.0_wp, t2 = 0.0_wp
    end type hic_result_t
 
-   !> HIC over windows up to n_window grid steps: V and the largest a of
-   !! the last n_window + 1 grid points and intervals (ring buffers).
+   !> HIC over windows up to n_window grid steps.
    type :: hic_search_t
       integer :: n_window = 0
       real(wp) :: best2 = 0.0_wp                 !< the largest HIC^2 found
@@ -57,7 +56,13 @@ module acceleration_criteria
       ! the grid: point k at t0 + k h; V there and a's largest over (k-1, k]
       integer :: k = -1                          !< the last grid point reached
       real(wp) :: a_int = 0.0_wp                 !< a's largest since grid point k
-      real(wp), allocatable :: v_grid(:), a_grid(:)   !< ring buffers, index mod size
+      !> the last n_buf grid points' V and a's largest over (k-1, k], oldest
+      !! first in buf(p + 1 : p + n_buf): each written at p and p + n_buf,
+      !! so that every window is one contiguous slice (and its loops vectorize)
+      integer :: n_buf = 0, p = 0
+      real(wp), allocatable :: v_buf(:), a_buf(:)
+      real(wp), allocatable :: inv_dt3(:)        !< 1/(m h)^3, m = 1 .. n_buf - 1
+      logical :: with_hic = .true.               !< the HIC searches (the head's)
       type(hic_search_t) :: hic(2)               !< 15 ms and 36 ms
       ! the clip: the linear pieces that reach above clip_floor
       real(wp) :: clip_floor = 0.0_wp
@@ -73,24 +78,29 @@ module acceleration_criteria
 
 contains
 
-   !> Criteria with window ends on a grid of spacing h (s; default 10 kHz).
-   pure function criteria_new(h) result(c)
+   !> Criteria with window ends on a grid of spacing h (s; default 10 kHz);
+   !! with_hic false leaves out the HIC searches (GSI and clip only).
+   pure function criteria_new(h, with_hic) result(c)
       real(wp), intent(in), optional :: h
+      logical, intent(in), optional :: with_hic
       type(acceleration_criteria_t) :: c
       if (present(h)) c%h = h
+      if (present(with_hic)) c%with_hic = with_hic
       call setup(c)
    end function criteria_new
 
    !> The buffers for the grid spacing c%h.
    pure subroutine setup(c)
       class(acceleration_criteria_t), intent(inout) :: c
-      integer :: n
+      integer :: m
       c%hic(1)%n_window = nint(15.0e-3_wp/c%h)
       c%hic(2)%n_window = nint(36.0e-3_wp/c%h)
-      n = maxval(c%hic%n_window) + 1
-      allocate (c%v_grid(0:n - 1), c%a_grid(0:n - 1), c%piece(3, 256))
-      c%v_grid = 0.0_wp
-      c%a_grid = 0.0_wp
+      c%n_buf = maxval(c%hic%n_window) + 1
+      allocate (c%v_buf(0:2*c%n_buf - 1), c%a_buf(0:2*c%n_buf - 1), c%piece(3, 256))
+      c%v_buf = 0.0_wp
+      c%a_buf = 0.0_wp
+      c%p = c%n_buf - 1
+      c%inv_dt3 = [(1.0_wp/(real(m, wp)*c%h)**3, m=1, c%n_buf - 1)]
    end subroutine setup
 
    !> One more sample: a (g, >= 0) at t (s, not before the last sample).
@@ -99,16 +109,15 @@ contains
       real(wp), intent(in) :: t, a_in
       real(wp) :: dt, tk, ak, a
       a = max(a_in, 0.0_wp)       ! (a resultant; V must not decrease)
-      if (.not. allocated(this%v_grid)) call setup(this)
+      if (.not. allocated(this%v_buf)) call setup(this)
       if (.not. this%started) then
          this%started = .true.
          this%t0 = t
          this%t = t
          this%a = a
-         this%k = 0
-         this%v_grid(0) = 0.0_wp
-         this%a_grid(0) = a
-         this%a_int = 0.0_wp
+         this%k = -1
+         this%a_int = a
+         call next_grid_point(this, 0.0_wp)
          return
       end if
       dt = t - this%t
@@ -140,45 +149,52 @@ contains
    pure subroutine next_grid_point(this, v_k)
       class(acceleration_criteria_t), intent(inout) :: this
       real(wp), intent(in) :: v_k
-      integer :: n, k, q
-      n = size(this%v_grid)
+      integer :: q, n, top, w
+      n = this%n_buf
       this%k = this%k + 1
-      k = this%k
-      this%v_grid(modulo(k, n)) = v_k
-      this%a_grid(modulo(k, n)) = this%a_int       ! a's largest over (k-1, k]
+      this%p = this%p + 1
+      if (this%p == n) this%p = 0
+      top = this%p + n
+      this%v_buf(this%p) = v_k
+      this%v_buf(top) = v_k
+      this%a_buf(this%p) = this%a_int              ! a's largest over (k-1, k]
+      this%a_buf(top) = this%a_int
       this%a_int = 0.0_wp
+      if (.not. this%with_hic) return
       do q = 1, size(this%hic)
-         call search_windows(this%hic(q), this%v_grid, this%a_grid, k, this%h)
+         w = min(this%hic(q)%n_window, this%k)
+         if (w > 0) call search_windows(this%hic(q), this%v_buf(top - w:top), this%a_buf(top - w + 1:top), &
+                                        this%inv_dt3, this%k)
       end do
    end subroutine next_grid_point
 
-   !> The windows (j, k], k - n_window <= j < k, against the best so far.
-   pure subroutine search_windows(s, v_grid, a_grid, k, h)
+   !> The windows (k - m, k], m = 1 .. w, against the best so far: v holds
+   !! V at grid points k - w .. k, a the largest a over the w intervals.
+   pure subroutine search_windows(s, v, a, inv_dt3, k)
       type(hic_search_t), intent(inout) :: s
-      real(wp), intent(in) :: v_grid(0:), a_grid(0:), h
+      real(wp), intent(in) :: v(0:), a(:), inv_dt3(:)
       integer, intent(in) :: k
-      real(wp) :: vk, dv, dt, a_max, bound
-      integer :: n, j, j0
-      n = size(v_grid)
-      j0 = max(0, k - s%n_window)
-      vk = v_grid(modulo(k, n))
-      ! a bound of dV^5/dt^3 = dV^2 (dV/dt)^3 over every window ending at k
-      a_max = 0.0_wp
-      do j = j0 + 1, k
-         a_max = max(a_max, a_grid(modulo(j, n)))
+      real(wp) :: vk, x, r, r_max
+      integer :: w, m
+      w = size(a)
+      vk = v(w)
+      ! dV^5/dt^3 = dV^2 (dV/dt)^3 <= (V_k - V_{k-w})^2 a_max^3 for every window
+      x = vk - v(0)
+      if (.not. x*x*maxval(a)**3 > s%best2) return
+      r_max = 0.0_wp
+      do m = 1, w
+         x = vk - v(w - m)
+         r_max = max(r_max, (x*x)*(x*x)*x*inv_dt3(m))
       end do
-      dv = vk - v_grid(modulo(j0, n))
-      bound = dv*dv*a_max**3
-      if (.not. bound > s%best2) return
-      do j = k - 1, j0, -1
-         dv = vk - v_grid(modulo(j, n))
-         dt = real(k - j, wp)*h
-         if (dv**5 > s%best2*dt**3) then
-            s%best2 = dv**5/dt**3
-            s%k1 = j
-            s%k2 = k
-         end if
+      if (.not. r_max > s%best2) return
+      do m = 1, w
+         x = vk - v(w - m)
+         r = (x*x)*(x*x)*x*inv_dt3(m)
+         if (r >= r_max) exit
       end do
+      s%best2 = r_max
+      s%k1 = k - m
+      s%k2 = k
    end subroutine search_windows
 
    pure function criteria_hic15(this) result(r)

@@ -12,6 +12,7 @@ module history_sink
    use equations_of_motion, only: crash_system_t
    use effect_base, only: event_t, event_kind_name
    use run_summary, only: run_summary_t
+   use acceleration_criteria, only: hic_result_t
    use history_h5, only: history_file_t
    implicit none
    private
@@ -143,8 +144,37 @@ contains
                                                        'when each maximum happened', id_t, err)
       if (.not. err%failed()) call this%file%append(id_v, values, err)
       if (.not. err%failed()) call this%file%append(id_t, times, err)
+      if (.not. err%failed()) call put_criteria()
       ! written at close
    contains
+      !> /summary/injury_criteria: one row, a column per criterion (docs/injury.md).
+      subroutine put_criteria()
+         character(len=24), allocatable :: cn(:), cu(:)
+         real(wp), allocatable :: cv(:)
+         type(hic_result_t) :: h15, h36
+         integer :: id
+         allocate (cn(0), cu(0), cv(0))
+         do o = 1, size(summary%occ)
+            prefix = ''
+            if (size(summary%occ) > 1) write (prefix, '(a,i0,a)') 'occ', o, '_'
+            associate (os => summary%occ(o))
+               h15 = os%head_criteria%hic15()
+               h36 = os%head_criteria%hic36()
+               cn = [character(len=24) :: cn, trim(prefix)//'head_hic15', trim(prefix)//'head_hic15_t1', &
+                     trim(prefix)//'head_hic15_t2', trim(prefix)//'head_hic36', trim(prefix)//'head_hic36_t1', &
+                     trim(prefix)//'head_hic36_t2', trim(prefix)//'head_gsi', trim(prefix)//'chest_gsi', &
+                     trim(prefix)//'chest_clip3ms']
+               cu = [character(len=24) :: cu, '1', 's', 's', '1', 's', 's', '1', '1', 'g']
+               cv = [cv, h15%value, h15%t1, h15%t2, h36%value, h36%t1, h36%t2, os%head_criteria%gsi, &
+                     os%chest_criteria%gsi, os%chest_criteria%clip3ms()]
+            end associate
+         end do
+         call this%file%add_series('summary/injury_criteria', cn, cu, 'HIC15 and HIC36 of the head with ' &
+                                   //'their windows, the Gadd Severity Index of head and chest, the chest''s ' &
+                                   //'cumulative 3 ms clip; from the accelerations in g at accepted steps', id, err)
+         if (.not. err%failed()) call this%file%append(id, cv, err)
+      end subroutine put_criteria
+
       subroutine put(name, unit, value, t)
          character(len=*), intent(in) :: name, unit
          real(wp), intent(in) :: value, t

@@ -44,6 +44,11 @@ contains
                          //'chest_acceleration (in/s^2), joint_i_min, joint_i_max (rad); the times (s) | summary | ' &
                          //'the maxima over all accepted steps and when they happened, as the listing''s summary ' &
                          //'gives them |')
+      call append_string(lines, '| `/summary/injury_criteria` | (1, 9) | head_hic15, head_hic15_t1, head_hic15_t2, ' &
+                         //'head_hic36, head_hic36_t1, head_hic36_t2, head_gsi, chest_gsi, chest_clip3ms (g) | ' &
+                         //'summary | HIC15 and HIC36 of the head with their windows (s), the Gadd Severity Index ' &
+                         //'of head and chest, the chest''s cumulative 3 ms clip; from the accelerations at ' &
+                         //'accepted steps (docs/injury.md) |')
       call append_string(lines, '| `/events/time`, `/events/kind`, `/events/index`, `/events/text` | (k) | - | summary | ' &
                          //'the events (injuries) as they happened |')
       call append_string(lines, '| `/input/deck` | (cards) | - | deck echo | the deck''s card images |')

@@ -28,7 +28,8 @@ module run_report
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
    use effect_base, only: event_t, event_kind_name
-   use run_summary, only: run_summary_t
+   use run_summary, only: run_summary_t, occupant_summary_t
+   use acceleration_criteria, only: hic_result_t
    use end_tests, only: end_reason_text, end_failure, end_energy
    implicit none
    private
@@ -873,6 +874,7 @@ contains
                          fixed(os%head_max%t, 10, 5)//' s')
             call lst%put('  chest acceleration '//fixed(os%chest_max%value/g_std, 10, 3)//' g   at t ='// &
                          fixed(os%chest_max%t, 10, 5)//' s')
+            call put_injury_criteria(lst, os)
 
             call lst%heading('JOINT ANGLE RANGES, ALPHA(I) - ALPHA(M) (deg)', 10)
             call lst%put('   I  JOINT          MINIMUM   AT t (s)    MAXIMUM   AT t (s)    STOPS            DISLOCATION')
@@ -984,4 +986,22 @@ contains
          start = cut + 1
       end do
    end subroutine put_wrapped
+
+   !> HIC15, HIC36, GSI and the chest's 3 ms clip (docs/injury.md): not the
+   !! report's criteria, which predate them, but what users now expect.
+   subroutine put_injury_criteria(lst, os)
+      type(listing_t), intent(inout) :: lst
+      type(occupant_summary_t), intent(in) :: os
+      type(hic_result_t) :: r
+      call lst%heading('ACCELERATION CRITERIA OF HEAD AND CHEST (ACCEPTED STEPS)', 6)
+      r = os%head_criteria%hic15()
+      call lst%put('  head HIC15         '//fixed(r%value, 10, 1)//'     from t ='//fixed(r%t1, 10, 5) &
+                   //' s to'//fixed(r%t2, 10, 5)//' s')
+      r = os%head_criteria%hic36()
+      call lst%put('  head HIC36         '//fixed(r%value, 10, 1)//'     from t ='//fixed(r%t1, 10, 5) &
+                   //' s to'//fixed(r%t2, 10, 5)//' s')
+      call lst%put('  head GSI           '//fixed(os%head_criteria%gsi, 10, 1))
+      call lst%put('  chest GSI          '//fixed(os%chest_criteria%gsi, 10, 1))
+      call lst%put('  chest 3 ms clip    '//fixed(os%chest_criteria%clip3ms(), 10, 3)//' g')
+   end subroutine put_injury_criteria
 end module run_report

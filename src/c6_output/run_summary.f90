@@ -7,6 +7,7 @@ module run_summary
    use model, only: n_joint
    use ode_system, only: step_stats_t
    use effect_base, only: event_t
+   use acceleration_criteria, only: acceleration_criteria_t
    implicit none
    private
 
@@ -21,6 +22,8 @@ module run_summary
    !> One occupant's maxima (accepted steps) and energy balance (print times).
    type :: occupant_summary_t
       type(extreme_t) :: head_max, chest_max
+      !> HIC, GSI, 3 ms clip of the head and chest accelerations (g), accepted steps
+      type(acceleration_criteria_t) :: head_criteria, chest_criteria
       type(extreme_t) :: joint_min(n_joint), joint_max(n_joint)
       real(wp) :: e_total0 = 0.0_wp             !< energy total at t = 0
       real(wp) :: e_error_final = 0.0_wp

@@ -5,7 +5,8 @@
 !! timer - changes here, on accepted steps only; when an effect's memory
 !! makes the right-hand side jump, the stepper restarts.
 module simulation
-   use kinds, only: wp, i8
+   use kinds, only: wp, i8, g_std
+   use acceleration_criteria, only: criteria_new
    use error_handling, only: error_t, error_set, exit_numerical
    use strings, only: num
    use model, only: model_t, n_dof, n_joint, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
@@ -88,6 +89,8 @@ contains
             total0(o) = eb%total
          end associate
          summary%occ(o)%e_total0 = total0(o)
+         summary%occ(o)%head_criteria = criteria_new()
+         summary%occ(o)%chest_criteria = criteria_new(with_hic=.false.)   ! GSI and the 3 ms clip
          do i = 1, n_joint
             summary%occ(o)%joint_min(i) = extreme_t(relative_angle(st%z, i), 0.0_wp)
             summary%occ(o)%joint_max(i) = summary%occ(o)%joint_min(i)
@@ -226,6 +229,8 @@ contains
                                             stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), a_head, a_chest)
                call raise(os%head_max, a_head, t_now)
                call raise(os%chest_max, a_chest, t_now)
+               call os%head_criteria%add(t_now, a_head/g_std)
+               call os%chest_criteria%add(t_now, a_chest/g_std)
                do k = 1, n_joint
                   delta = st%z(k) - st%z(joint_partner(k))
                   if (delta < os%joint_min(k)%value) os%joint_min(k) = extreme_t(delta, t_now)
