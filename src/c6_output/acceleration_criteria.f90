@@ -169,31 +169,40 @@ contains
    end subroutine next_grid_point
 
    !> The windows (k - m, k], m = 1 .. w, against the best so far: v holds
-   !! V at grid points k - w .. k, a the largest a over the w intervals.
+   !! V at grid points k - w .. k, a the largest a over the w intervals. The
+   !! windows go in blocks of hic_block lengths, each skipped when its bound
+   !! (its longest window's dV over its shortest window's dt) cannot beat the
+   !! best: in a plateau only the blocks near the best length are evaluated.
    pure subroutine search_windows(s, v, a, inv_dt3, k)
       type(hic_search_t), intent(inout) :: s
       real(wp), intent(in) :: v(0:), a(:), inv_dt3(:)
       integer, intent(in) :: k
-      real(wp) :: vk, x, r, r_max
-      integer :: w, m
+      integer, parameter :: hic_block = 8
+      real(wp) :: vk, x, r, r_best
+      integer :: w, m, m_lo, m_hi, m_best
       w = size(a)
       vk = v(w)
       ! dV^5/dt^3 = dV^2 (dV/dt)^3 <= (V_k - V_{k-w})^2 a_max^3 for every window
       x = vk - v(0)
       if (.not. x*x*maxval(a)**3 > s%best2) return
-      r_max = 0.0_wp
-      do m = 1, w
-         x = vk - v(w - m)
-         r_max = max(r_max, (x*x)*(x*x)*x*inv_dt3(m))
+      r_best = s%best2
+      m_best = 0
+      do m_hi = w, 1, -hic_block
+         m_lo = max(1, m_hi - hic_block + 1)
+         x = vk - v(w - m_hi)
+         if (.not. (x*x)*(x*x)*x*inv_dt3(m_lo) > r_best) cycle
+         do m = m_lo, m_hi
+            x = vk - v(w - m)
+            r = (x*x)*(x*x)*x*inv_dt3(m)
+            if (r > r_best) then
+               r_best = r
+               m_best = m
+            end if
+         end do
       end do
-      if (.not. r_max > s%best2) return
-      do m = 1, w
-         x = vk - v(w - m)
-         r = (x*x)*(x*x)*x*inv_dt3(m)
-         if (r >= r_max) exit
-      end do
-      s%best2 = r_max
-      s%k1 = k - m
+      if (m_best == 0) return
+      s%best2 = r_best
+      s%k1 = k - m_best
       s%k2 = k
    end subroutine search_windows
 
