@@ -25,6 +25,13 @@
 !! arcs, alpha_l) at the front edge. K_1 and rho change as the hip slides, so
 !! the forces are not a gradient: "energy calculations must be done
 !! incrementally": the work the body does on the seat is integrated.
+!!
+!! Figure 14's cases (the hip over beam 1, 0 <= z < l, or off it; the leg on
+!! the front edge or not) are memory, decided on accepted steps as figure 12
+!! (docs/seat.md, D-19); a trial evaluation past a switch keeps the case of
+!! the last accepted step, with the stiffnesses of the nearest point of beam
+!! 1. A beam that comes into action starts from its present deflection (its
+!! reference, D-25), so its force does not jump up.
 module seat_beams
    use kinds, only: wp, deg
    use strings, only: num
@@ -33,12 +40,12 @@ module seat_beams
       energy_supplied, n_energy_kinds
    use output_series, only: output_series_t, series_new, column
    use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, hip_friction, &
-      slip_of, vehicle_power, add_hip_force, seg_thigh
+      slip_of, vehicle_power, add_hip_force, seg_thigh, seat_memory_t, rest_state, case_off, case_a
    implicit none
    private
 
    public :: seat_beams_t, seat_beams_effect, beams_stiffness, beams_forces, beams_state_t, beams_state
-   public :: end_fraction
+   public :: end_fraction, beams_case
 
    !> The hip beam's stiffness grows without bound at its built-in ends; it
    !! is taken no larger than at this fraction of l from either end.
@@ -49,7 +56,10 @@ module seat_beams
       real(wp) :: l7 = 0.0_wp, l8 = 0.0_wp
       real(wp) :: r1 = 0.0_wp, r7 = 0.0_wp
       real(wp) :: alpha_l7 = 0.0_wp, alpha_l8 = 0.0_wp   !< alpha_L, alpha_l (C.4.d)
-      integer :: slip = 0        !< the hip slides (+1, -1) or not (0): decided on accepted steps
+      !> figure 14's memory, decided on accepted steps: the case (case_a: the
+      !! hip over beam 1; case_off), the leg on the edge, the hip sliding, the
+      !! references of the hip's and the leg's deflections (D-25)
+      type(seat_memory_t) :: mem
    contains
       procedure :: add_forces => beams_add_forces
       procedure :: accept => beams_accept
@@ -75,6 +85,7 @@ contains
       type(seat_section_t), intent(in) :: p
       type(body_section_t), intent(in) :: body
       type(seat_beams_t) :: e
+      type(seat_frame_t) :: fr
       e%name = 'seat'
       e%title = 'non-rigid beam seat (C.4.d)'
       e%p = p
@@ -85,29 +96,44 @@ contains
       ! C.4.d: alpha_L = asin((r_1 - r_7)/L_7), alpha_l = asin((r_7 - r_A)/L_8)
       e%alpha_l7 = asin((body%r_arc(1) - body%r_arc(7))/body%length(7))
       e%alpha_l8 = asin((body%r_arc(7) - body%r_arc(11))/body%length(8))
+      ! figure 14's memory from the initial posture: the hip at the interior
+      ! origin, the segments at their interior angles Theta_i0 (the builder
+      ! puts the hip on beam 1)
+      fr = seat_frame(rest_state([body%theta0, 0.0_wp, 0.0_wp], 0.0_wp), e%l7)
+      e%mem%case = beams_case(p%z0 - fr%x1, p%ell)
+      e%mem%leg_on = e%mem%case /= case_off .and. leg_rests(fr, p%z0, e%l8)
+      e%mem%slip = 0
       e%n_aux = 3
       e%needs_vehicle = .true.
       e%has_memory = .true.
       e%has_energy = .true.
    end function seat_beams_effect
 
+   !> Figure 14's case for the hip at z behind the front edge: over beam 1
+   !! (case_a) for 0 <= z < l, else off the seat (case_off).
+   pure integer function beams_case(z, ell)
+      real(wp), intent(in) :: z, ell
+      beams_case = case_off
+      if (z >= 0.0_wp .and. z < ell) beams_case = case_a
+   end function beams_case
+
    !> K_1 (hip-point stiffness of the built-in beam), rho (cantilever
    !! deflection under the hip per unit tip deflection) and K_2 (tip
    !! stiffness) with the hip at z behind the front edge (C.4.d with NB-1).
+   !! Whether the hip is on beam 1 at all is figure 14's case (beams_case, on
+   !! accepted steps); a hip just past an end within a step (z < 0 or z >= l)
+   !! gets the stiffnesses of the end, so that they are continuous in z.
    pure subroutine beams_stiffness(ell, k, e1, e2, z, k1, rho, k2)
       real(wp), intent(in) :: ell, k, e1, e2, z
       real(wp), intent(out) :: k1, rho, k2
-      real(wp) :: a, zz, c, b
-      if (z < ell) then
-         zz = max(z, end_fraction*ell)
-         a = max(ell - z, end_fraction*ell)
-         k1 = e1*ell**3/(a**3*zz**3)           ! F*/delta_A
-      else
-         k1 = 0.0_wp                           ! the hip is behind the beam
-      end if
-      c = k*ell - z
-      if (z >= 0.0_wp .and. c > 0.0_wp) then
-         b = z**3 - 3.0_wp*k**2*ell**2*z + 2.0_wp*k**3*ell**3   ! = c^2 (2 k l + z)
+      real(wp) :: a, zz, zc, c, b
+      zc = min(max(z, 0.0_wp), ell)
+      zz = max(zc, end_fraction*ell)
+      a = max(ell - zc, end_fraction*ell)
+      k1 = e1*ell**3/(a**3*zz**3)              ! F*/delta_A
+      c = k*ell - zc
+      if (c > 0.0_wp) then
+         b = zc**3 - 3.0_wp*k**2*ell**2*zc + 2.0_wp*k**3*ell**3   ! = c^2 (2 k l + z)
          rho = b/(2.0_wp*k**3*ell**3)
       else
          rho = 0.0_wp                          ! the hip is not over the cantilever
@@ -128,20 +154,23 @@ contains
       fp_s = max(k2*w - rho*f_s, 0.0_wp)
    end subroutine beams_forces
 
-   pure function beams_state(this, st) result(s)
+   !> Figure 14 (reconstructed) at state st with memory mem: the case and
+   !! the leg are mem's, whatever the geometry says within the step.
+   pure function beams_state(this, st, mem) result(s)
       class(seat_beams_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
+      type(seat_memory_t), intent(in) :: mem
       type(beams_state_t) :: s
       real(wp) :: tg0, h_c, fh(2), fe(2)
       integer :: seg
       s%fr = seat_frame(st, this%l7)
       s%z = this%p%z0 - s%fr%x1
-      s%on = s%z >= 0.0_wp
+      s%on = mem%case /= case_off
       if (.not. s%on) return
       tg0 = tan(this%p%gamma0)
       ! NB-2: d, the cushion line's height at the hip minus y_1; delta_A = r_1 + d
       s%delta_a = this%r1 + this%p%y_sc - s%fr%y1 + (s%fr%x1 - this%p%x_sc)*tg0
-      s%leg = leg_rests(s%fr, this%p%z0, this%l8)
+      s%leg = mem%leg_on
       if (s%leg) then
          seg = leg_branch(s%fr, this%p%z0)
          if (seg == seg_thigh) then
@@ -155,9 +184,10 @@ contains
          s%delta_z = -huge(1.0_wp)        ! nothing on the cantilever's tip
       end if
       call beams_stiffness(this%p%ell, this%p%k_ratio, this%p%e1, this%p%e2, s%z, s%k1, s%rho, s%k2)
-      call beams_forces(s%k1, s%rho, s%k2, s%delta_a, s%delta_z, s%f_s, s%fp_s, s%w)
+      ! the deflections beyond their references (D-25)
+      call beams_forces(s%k1, s%rho, s%k2, s%delta_a - mem%hip_ref, s%delta_z - mem%edge_ref, s%f_s, s%fp_s, s%w)
       if (.not. s%leg) s%fp_s = 0.0_wp
-      s%f = hip_friction(this%p%mu, s%f_s + s%fp_s, this%slip)
+      s%f = hip_friction(this%p%mu, s%f_s + s%fp_s, mem%slip)
       ! the work the body does on the beams: F_s delta_A' + F'_s delta_z'
       s%work_rate = s%f_s*(-s%fr%y1dot + s%fr%x1dot*tg0)
       if (s%leg) s%work_rate = s%work_rate - s%fp_s*s%ln%h_dot
@@ -176,7 +206,7 @@ contains
       type(beams_state_t) :: s
       associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
       end associate
-      s = beams_state(this, st)
+      s = beams_state(this, st, this%mem)
       aux_rate = 0.0_wp
       if (.not. s%on) return
       ! external generalized forces: the hip force normal to the cushion line,
@@ -186,24 +216,58 @@ contains
       aux_rate = [s%work_rate, s%dissipation, s%supply]
    end subroutine beams_add_forces
 
-   !> On accepted steps: whether the hip slides (the friction's dead band,
-   !! A-S4); a change restarts the stepper. The beams' own switches (the hip
-   !! past an end, the leg off the edge) need no memory: their energy is the
-   !! integrated work.
+   !> Figure 14's decisions on an accepted step (as figure 12's, D-19): the
+   !! hip on beam 1 or off it (beams_case), the leg on the front edge, the
+   !! hip sliding; a change restarts the stepper. D-25: a beam that comes
+   !! into action starts from its present deflection (the hip back on beam 1:
+   !! delta_A; the leg onto the edge: delta_z beyond the tip's deflection
+   !! under the hip alone), so no force jumps up; a reference is given up
+   !! once the body is clear of the undeflected cushion. The energy is the
+   !! integrated work, so no switch changes it.
    subroutine beams_accept(this, st, extra, aux, result)
       class(seat_beams_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
-      type(seat_frame_t) :: fr
-      integer :: slip
+      type(seat_memory_t) :: new, probe_mem
+      type(beams_state_t) :: before, probe
+      real(wp) :: w_free
+      logical :: released
       associate (u1 => size(extra) + size(aux))
       end associate
-      fr = seat_frame(st, this%l7)
-      slip = 0
-      if (this%p%z0 - fr%x1 >= 0.0_wp) slip = slip_of(this%p%xi, fr%x1dot)
-      if (slip == this%slip) return
-      this%slip = slip
+      before = beams_state(this, st, this%mem)
+      new = this%mem
+      new%case = beams_case(before%z, this%p%ell)
+      new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l8)
+      ! the deflections and stiffnesses at this state, whatever the memory
+      probe_mem = seat_memory_t(case=case_a, leg_on=.true., slip=0)
+      probe = beams_state(this, st, probe_mem)
+      released = .false.
+      if (new%case == case_off) then
+         new%hip_ref = 0.0_wp
+      else if (.not. before%on) then
+         new%hip_ref = max(0.0_wp, probe%delta_a)
+      else if (new%hip_ref > 0.0_wp .and. probe%delta_a <= 0.0_wp) then
+         new%hip_ref = 0.0_wp
+         released = .true.
+      end if
+      if (.not. new%leg_on) then
+         new%edge_ref = 0.0_wp
+      else if (.not. before%leg) then
+         ! the tip's deflection under the hip alone (beams_forces' w_free)
+         w_free = 0.0_wp
+         if (probe%delta_a > new%hip_ref) w_free = probe%rho*probe%k1*(probe%delta_a - new%hip_ref) &
+                                                   /(probe%k2 + probe%rho**2*probe%k1)
+         new%edge_ref = max(0.0_wp, probe%delta_z - w_free)
+      else if (new%edge_ref > 0.0_wp .and. probe%delta_z <= 0.0_wp) then
+         new%edge_ref = 0.0_wp
+         released = .true.
+      end if
+      new%slip = 0
+      if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
+      if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip &
+          .and. .not. released) return
+      this%mem = new
       result%restart = .true.
    end subroutine beams_accept
 
@@ -246,7 +310,7 @@ contains
       type(beams_state_t) :: s
       associate (u1 => size(extra))
       end associate
-      s = beams_state(this, st)
+      s = beams_state(this, st, this%mem)
       if (item == 1) then
          values = [s%f_s, s%fp_s, s%f, s%delta_a, merge(s%delta_z, 0.0_wp, s%leg), s%w, s%z]
       else

@@ -14,13 +14,13 @@
 !! F . dP/dz_k with the vehicle held fixed (virtual work).
 module seat_geometry
    use kinds, only: wp, deg
-   use model, only: n_dof, hip_x, hip_y
+   use model, only: n_dof, n_seg, hip_x, hip_y
    use effect_base, only: body_state_t
    implicit none
    private
 
    public :: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests
-   public :: seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force
+   public :: seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state
    public :: case_off, case_a, case_b, seg_thigh, seg_shank, max_leg_slope
 
    integer, parameter :: seg_thigh = 7, seg_shank = 8
@@ -60,16 +60,35 @@ module seat_geometry
    !! reconstructed in docs/seat.md): the case, whether the leg rests on the
    !! front edge, the direction the hip slides in (+1, -1; 0 within the dead
    !! band xi), the spring constant of case B (chosen at the switch, A-S4),
+   !! the references of the hip's and the front edge's springs (or contacts:
+   !! each acts on its compression beyond its reference, chosen at a switch
+   !! so that no force jumps up and no energy is made: docs/seat.md, D-25),
    !! and the energy the switches moved out of the stored energy.
    type :: seat_memory_t
       integer :: case = case_a
       logical :: leg_on = .true.
       integer :: slip = 0
       real(wp) :: k_hat = 0.0_wp
+      real(wp) :: hip_ref = 0.0_wp, edge_ref = 0.0_wp
       real(wp) :: e_switch = 0.0_wp
    end type seat_memory_t
 
 contains
+
+   !> The body at rest at z0 in a vehicle at rest at pitch phi0 (the initial
+   !! posture, from which figure 12's memory starts).
+   pure function rest_state(z0, phi0) result(st)
+      real(wp), intent(in) :: z0(n_dof), phi0
+      type(body_state_t) :: st
+      st%t = 0.0_wp
+      st%z = z0
+      st%zdot = 0.0_wp
+      st%c = cos(z0(1:n_seg))
+      st%s = sin(z0(1:n_seg))
+      st%vehicle%pos = [0.0_wp, 0.0_wp, phi0]
+      st%vehicle%vel = 0.0_wp
+      st%vehicle%acc = 0.0_wp
+   end function rest_state
 
    !> The interior frame at st (the start of C.4; vehicle state in st%vehicle).
    pure function seat_frame(st, l7) result(fr)

@@ -24,7 +24,7 @@ module seat_rigid_beam
       energy_supplied, n_energy_kinds
    use output_series, only: output_series_t, series_new, column
    use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
-      hip_friction, slip_of, vehicle_power, add_hip_force, case_off, case_a
+      hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a
    implicit none
    private
 
@@ -85,14 +85,7 @@ contains
       e%needs_vehicle = .true.
       e%has_memory = .true.
       e%has_energy = .true.
-      st%t = 0.0_wp
-      st%z = z0
-      st%zdot = 0.0_wp
-      st%c = cos(z0(1:n_seg))
-      st%s = sin(z0(1:n_seg))
-      st%vehicle%pos = [0.0_wp, 0.0_wp, phi0]
-      st%vehicle%vel = 0.0_wp
-      st%vehicle%acc = 0.0_wp
+      st = rest_state(z0, phi0)
       fr = seat_frame(st, e%l7)
       e%mem%case = case_a
       e%mem%leg_on = leg_rests(fr, p%z0, e%l8)
@@ -143,18 +136,19 @@ contains
       s%fp_s = this%p%s*max(s%dz, 0.0_wp)
       s%e_support = s%e_support + 0.5_wp*this%p%s*max(s%dz, 0.0_wp)**2
       ! A-RB: the body's penetration of the moving beam, at the hip and at the front edge
+      ! (each contact acts on its penetration beyond its reference, D-25)
       s%on = mem%case /= case_off
       s%leg = s%on .and. mem%leg_on
       if (s%on) then
          s%p_hip = s%y_g + (s%fr%x1 - this%x_g)*s%tg - this%e_hip - s%fr%y1
-         s%f_hip = this%p%k_hip*max(s%p_hip, 0.0_wp)
-         s%e_contact = 0.5_wp*this%p%k_hip*max(s%p_hip, 0.0_wp)**2
+         s%f_hip = this%p%k_hip*max(s%p_hip - mem%hip_ref, 0.0_wp)
+         s%e_contact = 0.5_wp*this%p%k_hip*max(s%p_hip - mem%hip_ref, 0.0_wp)**2
       end if
       if (s%leg) then
          s%ln = leg_line(s%fr, leg_branch(s%fr, this%p%z0), this%p%z0, 0.0_wp, 0.0_wp, this%l7)
          s%p_edge = s%y_g + ap*s%tg - this%e_edge - s%ln%h
-         s%f_edge = this%p%k_edge*max(s%p_edge, 0.0_wp)
-         s%e_contact = s%e_contact + 0.5_wp*this%p%k_edge*max(s%p_edge, 0.0_wp)**2
+         s%f_edge = this%p%k_edge*max(s%p_edge - mem%edge_ref, 0.0_wp)
+         s%e_contact = s%e_contact + 0.5_wp*this%p%k_edge*max(s%p_edge - mem%edge_ref, 0.0_wp)**2
       end if
       ! C.4.d friction at the hip, on the beam's load (A-S4, A-f)
       s%f = hip_friction(this%p%mu, s%f_hip + s%f_edge, mem%slip)
@@ -201,24 +195,53 @@ contains
    end subroutine beam_add_forces
 
    !> On accepted steps (figure 12's logic, as for the present seat): the hip
-   !! leaves the beam past its front edge (z < 0), the leg leaves the edge,
-   !! the hip slides or sticks.
+   !! leaves the beam past its front edge (z < 0) or comes back, the leg
+   !! leaves the edge or comes onto it, the hip slides or sticks. D-25: a
+   !! contact that comes into action starts from its present penetration (its
+   !! reference), so a switch never makes energy; a reference is given up once
+   !! the body is clear of the beam, where neither law carries anything.
    subroutine beam_accept(this, st, extra, aux, result)
       class(seat_rigid_beam_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
-      type(seat_memory_t) :: new
-      type(beam_state_t) :: before, after
+      type(seat_memory_t) :: new, probe_mem
+      type(beam_state_t) :: before, after, probe
+      logical :: released
       associate (u1 => size(aux))
       end associate
       before = beam_state(this, st, extra, this%mem)
       new = this%mem
       new%case = merge(case_off, case_a, before%z < 0.0_wp)
       new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l8)
+      ! the penetrations at this state, whatever the memory
+      probe_mem = new
+      probe_mem%case = case_a
+      probe_mem%leg_on = .true.
+      probe_mem%hip_ref = 0.0_wp
+      probe_mem%edge_ref = 0.0_wp
+      probe = beam_state(this, st, extra, probe_mem)
+      released = .false.
+      if (new%case == case_off) then
+         new%hip_ref = 0.0_wp
+      else if (.not. before%on) then
+         new%hip_ref = max(0.0_wp, probe%p_hip)
+      else if (new%hip_ref > 0.0_wp .and. probe%p_hip <= 0.0_wp) then
+         new%hip_ref = 0.0_wp
+         released = .true.
+      end if
+      if (.not. new%leg_on) then
+         new%edge_ref = 0.0_wp
+      else if (.not. before%leg) then
+         new%edge_ref = max(0.0_wp, probe%p_edge)
+      else if (new%edge_ref > 0.0_wp .and. probe%p_edge <= 0.0_wp) then
+         new%edge_ref = 0.0_wp
+         released = .true.
+      end if
       new%slip = 0
       if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
-      if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip) return
+      if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip &
+          .and. .not. released) return
       after = beam_state(this, st, extra, new)
       new%e_switch = this%mem%e_switch + before%e_contact - after%e_contact
       this%mem = new

@@ -11,12 +11,17 @@
 !!               at the leg line's crossing of x = z_o (A-S1), y_zo = z_o tan gamma_o (A-S2)
 !! and S_7..S_10 are their virtual work: the printed S_7..S_10 of C.4.d.
 !!
-!! Energy (docs/seat.md): stored = sum beta_m d^{m+1}/(m+1) (no 1/2, E6-1;
-!! case B 1/2 k d^2) + 1/2 s (front compression)^2, a potential whose
-!! gradient the clipped springs are; dissipated = the integral of the damper's
-!! and the friction's power (auxiliary quantity 1) + what the switches of
-!! figure 12 took from the springs; supplied = the integral of the power of
-!! the seat forces at the vehicle's material points (auxiliary quantity 2).
+!! Each spring acts on its compression beyond a reference that figure 12's
+!! switches choose (D-25: zero unless a switch needs it): the hip force and
+!! its stored energy never jump up at a switch.
+!!
+!! Energy (docs/seat.md): stored = sum beta_m u^{m+1}/(m+1) (no 1/2, E6-1;
+!! case B 1/2 k u^2; u = d - the reference) + 1/2 s (front compression)^2, a
+!! potential whose gradient the clipped springs are; dissipated = the
+!! integral of the damper's and the friction's power (auxiliary quantity 1) +
+!! what the switches of figure 12 took from the springs (never negative,
+!! D-25); supplied = the integral of the power of the seat forces at the
+!! vehicle's material points (auxiliary quantity 2).
 module seat_springs
    use kinds, only: wp, deg
    use strings, only: num
@@ -26,11 +31,12 @@ module seat_springs
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_state_t, segment_cg_state
    use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
-      seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, case_off, case_a, case_b
+      seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, case_b
    implicit none
    private
 
    public :: seat_springs_t, seat_springs_effect, springs_state_t, springs_state, static_loads
+   public :: hip_law_at_switch
 
    type, extends(effect_t) :: seat_springs_t
       type(seat_section_t) :: p
@@ -53,7 +59,7 @@ module seat_springs
       type(leg_line_t) :: ln
       integer :: case = case_a
       logical :: leg = .false.
-      real(wp) :: z = 0.0_wp, d = 0.0_wp, d_dot = 0.0_wp
+      real(wp) :: z = 0.0_wp, d = 0.0_wp, d_dot = 0.0_wp, u = 0.0_wp   !< u = d - the hip's reference
       real(wp) :: f_el = 0.0_wp, f_s = 0.0_wp, delta_e = 0.0_wp, fp_s = 0.0_wp, f = 0.0_wp
       real(wp) :: e_hip = 0.0_wp, e_edge = 0.0_wp
       real(wp) :: dissipation = 0.0_wp, supply = 0.0_wp   !< rates
@@ -84,24 +90,10 @@ contains
       fr = seat_frame(st, e%l7)
       e%mem%case = seat_case(p%z0, p%z_hat)
       e%mem%leg_on = e%mem%case /= case_off .and. leg_rests(fr, p%z0, e%l8)
-      e%mem%k_hat = secant(p%beta, 0.0_wp)
+      e%mem%k_hat = p%beta(1)
       e%mem%slip = 0
       call static_loads(body, g, z0, phi0, p%z0, e%w_pred, e%fps_pred)
    end function seat_springs_effect
-
-   !> The body at rest at z0 in a vehicle at rest at pitch phi0.
-   pure function rest_state(z0, phi0) result(st)
-      real(wp), intent(in) :: z0(n_dof), phi0
-      type(body_state_t) :: st
-      st%t = 0.0_wp
-      st%z = z0
-      st%zdot = 0.0_wp
-      st%c = cos(z0(1:n_seg))
-      st%s = sin(z0(1:n_seg))
-      st%vehicle%pos = [0.0_wp, 0.0_wp, phi0]
-      st%vehicle%vel = 0.0_wp
-      st%vehicle%acc = 0.0_wp
-   end function rest_state
 
    !> The static loads on the hip and the front edge that hold the body, as
    !! one rigid piece in the posture z0, in equilibrium under gravity
@@ -140,16 +132,6 @@ contains
       w = sum(body%mass)*g*fr%c_phi - fps
    end subroutine static_loads
 
-   !> Case B's spring constant: the secant beta(d)/d of the hip polynomial at
-   !! the switch (A-S4), so that the hip force is continuous there; its limit
-   !! beta_1 for a hip that is not pressed in.
-   pure real(wp) function secant(beta, d)
-      real(wp), intent(in) :: beta(3), d
-      real(wp) :: dp
-      dp = max(d, 0.0_wp)
-      secant = beta(1) + dp*(beta(2) + dp*beta(3))
-   end function secant
-
    !> Figure 12 (reconstructed) at state st with memory mem.
    pure function springs_state(this, st, mem) result(s)
       class(seat_springs_t), intent(in) :: this
@@ -164,16 +146,18 @@ contains
       s%d_dot = -s%fr%y1dot
       s%leg = mem%leg_on .and. mem%case /= case_off
       if (mem%case == case_off) return
-      associate (beta => this%p%beta, d => s%d)
-         if (d > 0.0_wp) then
+      ! the hip spring acts on the compression beyond its reference (D-25)
+      s%u = s%d - mem%hip_ref
+      associate (beta => this%p%beta, u => s%u)
+         if (u > 0.0_wp) then
             if (mem%case == case_a) then
                ! C.4.d, sum beta_m d^m (A-S3) and its energy sum beta_m d^{m+1}/(m+1) (E6-1)
-               s%f_el = d*(beta(1) + d*(beta(2) + d*beta(3)))
-               s%e_hip = d**2*(beta(1)/2.0_wp + d*(beta(2)/3.0_wp + d*beta(3)/4.0_wp))
+               s%f_el = poly_force(beta, u)
+               s%e_hip = poly_energy(beta, u)
             else
                ! case B: the linear spring of the front region (A-S4)
-               s%f_el = mem%k_hat*d
-               s%e_hip = 0.5_wp*mem%k_hat*d**2
+               s%f_el = mem%k_hat*u
+               s%e_hip = 0.5_wp*mem%k_hat*u**2
             end if
             ! with the damper c_s; a cushion never pulls
             s%f_s = max(0.0_wp, s%f_el + this%p%c_s*s%d_dot)
@@ -183,8 +167,9 @@ contains
          ! the front-edge spring on the leg line at x = z_o (A-S1, A-S2)
          s%ln = leg_line(s%fr, leg_branch(s%fr, this%p%z0), this%p%z0, 0.0_wp, 0.0_wp, this%l7)
          s%delta_e = this%y_zo - s%ln%h
-         s%fp_s = this%p%s*max(s%delta_e, 0.0_wp)
-         s%e_edge = 0.5_wp*this%p%s*max(s%delta_e, 0.0_wp)**2
+         ! beyond the edge's reference (D-25)
+         s%fp_s = this%p%s*max(s%delta_e - mem%edge_ref, 0.0_wp)
+         s%e_edge = 0.5_wp*this%p%s*max(s%delta_e - mem%edge_ref, 0.0_wp)**2
       end if
       ! C.4.d friction at the hip, A-S4, A-f
       s%f = hip_friction(this%p%mu, s%f_s + s%fp_s, mem%slip)
@@ -215,10 +200,18 @@ contains
    end subroutine springs_add_forces
 
    !> Figure 12's decisions on an accepted step: the case (off, A, B), the
-   !! leg on the front edge, case B's spring constant, the hip sliding or
-   !! not; the stored energy a switch changes goes to the switching account,
-   !! and the stepper restarts (the right-hand side jumps only here, so no
-   !! step straddles a jump: docs/seat.md).
+   !! leg on the front edge, the hip's law in the new case, the hip sliding
+   !! or not; the stored energy a switch changes goes to the switching
+   !! account, and the stepper restarts (the right-hand side jumps only here,
+   !! so no step straddles a jump: docs/seat.md).
+   !!
+   !! D-25: a switch never makes energy. The new case's hip law (case B's k
+   !! and the references) is chosen from the conditions at this accepted
+   !! step (A-S4) so that the hip's elastic force does not jump up and its
+   !! stored energy does not grow; a spring that comes into action (the hip
+   !! back on the seat, the leg onto the front edge) starts from its present
+   !! compression; a reference is given up once the body is clear of the
+   !! undeflected cushion, where neither law carries anything.
    subroutine springs_accept(this, st, extra, aux, result)
       class(seat_springs_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
@@ -226,21 +219,128 @@ contains
       type(accept_result_t), intent(inout) :: result
       type(seat_memory_t) :: new
       type(springs_state_t) :: before, after
+      type(leg_line_t) :: ln
+      logical :: edge_was_on, released
       associate (u1 => size(extra) + size(aux))
       end associate
       before = springs_state(this, st, this%mem)
       new = this%mem
       new%case = seat_case(before%z, this%p%z_hat)
       new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l8)
-      if (new%case == case_b .and. this%mem%case /= case_b) new%k_hat = secant(this%p%beta, before%d)
+      released = .false.
+      if (new%case == case_off) then
+         new%hip_ref = 0.0_wp
+      else if (new%case /= this%mem%case) then
+         call hip_law_at_switch(this%p%beta, new%case, before%f_el, before%e_hip, before%d, this%mem%hip_ref, &
+                                new%k_hat, new%hip_ref)
+      else if (new%hip_ref > 0.0_wp .and. before%d <= 0.0_wp) then
+         new%hip_ref = 0.0_wp                 ! the cushion has recovered under a lifted hip
+         released = .true.
+      end if
+      edge_was_on = before%leg
+      if (.not. new%leg_on) then
+         new%edge_ref = 0.0_wp
+      else if (.not. edge_was_on) then
+         ! the leg comes onto the edge: the spring starts from its present compression
+         ln = leg_line(before%fr, leg_branch(before%fr, this%p%z0), this%p%z0, 0.0_wp, 0.0_wp, this%l7)
+         new%edge_ref = max(0.0_wp, this%y_zo - ln%h)
+      else if (new%edge_ref > 0.0_wp .and. before%delta_e <= 0.0_wp) then
+         new%edge_ref = 0.0_wp                ! the leg has lifted clear of the edge
+         released = .true.
+      end if
       new%slip = 0
       if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
-      if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip) return
+      if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip &
+          .and. .not. released) return
       after = springs_state(this, st, new)
+      ! D-25: the switch only takes energy from the springs
       new%e_switch = this%mem%e_switch + (before%e_hip + before%e_edge) - (after%e_hip + after%e_edge)
       this%mem = new
       result%restart = .true.
    end subroutine springs_accept
+
+   !> The hip's law on a switch into case (A or B) at compression d, where
+   !! the law in force gives the elastic force f0 and the stored energy v0
+   !! (its reference ref0); returns case B's k and the new reference ref
+   !! (D-25, from A-S4: "a linear spring whose spring constant is dependent
+   !! on the conditions at the previous time instant"). With u = d - ref:
+   !!   f0 = 0 (the hip not in the cushion, or back on the seat): ref =
+   !!     max(ref0, d), nothing carried; case B's k = beta_1;
+   !!   case B: k u = f0 and 1/2 k u^2 = min(v0, 1/2 f0 d), ref >= 0: the force is
+   !!     continuous, the energy too where the polynomial hardens (else the
+   !!     secant, ref = 0, and the difference is dissipated);
+   !!   case A: beta(u) = f0 at the least u whose energy does not exceed v0,
+   !!     else the u whose energy is v0 (the force drops), u <= d.
+   pure subroutine hip_law_at_switch(beta, case, f0, v0, d, ref0, k, ref)
+      real(wp), intent(in) :: beta(3), f0, v0, d, ref0
+      integer, intent(in) :: case
+      real(wp), intent(inout) :: k
+      real(wp), intent(out) :: ref
+      real(wp) :: u, lo, hi, mid, ue, step
+      integer :: it, j
+      integer, parameter :: n_scan = 64
+      if (.not. f0 > 0.0_wp .or. .not. d > 0.0_wp) then
+         ref = max(ref0, d, 0.0_wp)
+         if (case == case_b) k = beta(1)
+         return
+      end if
+      if (case == case_b) then
+         u = min(d, 2.0_wp*v0/f0)
+         k = f0/u
+         ref = d - u
+         return
+      end if
+      ! case A: ue, the compression whose energy is min(v0, P(d)) (P increases)
+      lo = 0.0_wp
+      hi = d
+      if (poly_energy(beta, d) > v0) then
+         do it = 1, 200
+            mid = 0.5_wp*(lo + hi)
+            if (.not. (mid > lo .and. mid < hi)) exit
+            if (poly_energy(beta, mid) > v0) then
+               hi = mid
+            else
+               lo = mid
+            end if
+         end do
+         ue = lo
+      else
+         ue = d
+      end if
+      ! the least u <= ue with beta(u) >= f0 (beta need not increase: scan, then bisect)
+      u = ue
+      step = ue/n_scan
+      do j = 1, n_scan
+         if (poly_force(beta, j*step) >= f0) then
+            lo = (j - 1)*step
+            hi = j*step
+            do it = 1, 200
+               mid = 0.5_wp*(lo + hi)
+               if (.not. (mid > lo .and. mid < hi)) exit
+               if (poly_force(beta, mid) >= f0) then
+                  hi = mid
+               else
+                  lo = mid
+               end if
+            end do
+            u = lo
+            exit
+         end if
+      end do
+      ref = d - u
+   end subroutine hip_law_at_switch
+
+   !> C.4.d (A-S3): the hip polynomial sum beta_m u^m.
+   pure real(wp) function poly_force(beta, u)
+      real(wp), intent(in) :: beta(3), u
+      poly_force = u*(beta(1) + u*(beta(2) + u*beta(3)))
+   end function poly_force
+
+   !> C.6 (E6-1): its energy sum beta_m u^{m+1}/(m+1).
+   pure real(wp) function poly_energy(beta, u)
+      real(wp), intent(in) :: beta(3), u
+      poly_energy = u**2*(beta(1)/2.0_wp + u*(beta(2)/3.0_wp + u*beta(3)/4.0_wp))
+   end function poly_energy
 
    pure subroutine springs_energy(this, st, extra, aux, e)
       class(seat_springs_t), intent(in) :: this
