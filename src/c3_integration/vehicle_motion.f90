@@ -21,16 +21,28 @@ module vehicle_motion
 
    !> The motion of one coordinate (x_c, y_c or Phi).
    type :: axis_t
-      real(wp), allocatable :: ta(:), acc(:)          !< acceleration table
+      !> false when its tables and initial values are all zero: its position,
+      !! rate and acceleration are then 0 at every time (the y_c and Phi of a
+      !! sled pulse), and are set without evaluating the tables
+      logical :: moves = .true.
+      real(wp), allocatable :: acc(:)                 !< acceleration table (times: vehicle_motion_t%ta)
       real(wp), allocatable :: acc_v(:), acc_x(:)     !< its integrals at the knots
       real(wp), allocatable :: acc_slope(:)           !< its slope on each interval (0 after the last knot)
       logical :: rate_given = .false., pos_given = .false.
-      real(wp), allocatable :: tv(:), vel(:), vel_x(:) !< rate table and its integral
-      real(wp), allocatable :: tx(:), pos(:)           !< position table
+      real(wp), allocatable :: vel(:), vel_x(:)       !< rate table and its integral (times: tv)
+      real(wp), allocatable :: vel_slope(:)           !< its slope on each interval (after the last knot: the last's)
+      real(wp), allocatable :: pos(:), pos_slope(:)   !< position table and its slopes (times: tx)
    end type axis_t
 
+   !> The three axes share the times of each kind of table (one *PULSE
+   !! table, one of rates, one of positions: C.1), so one interval search
+   !! per kind serves them all, and none when a kind's times are the
+   !! acceleration table's.
    type :: vehicle_motion_t
       type(axis_t) :: axis(3)
+      real(wp), allocatable :: ta(:), tv(:), tx(:)    !< the knot times of the three kinds of table
+      logical :: any_rate = .false., any_pos = .false. !< some axis has a rate (position) table
+      logical :: tv_is_ta = .false., tx_is_ta = .false. !< those times are the acceleration table's
    end type vehicle_motion_t
 
    !> Vehicle state at a time: x_c, y_c, Phi; their rates; their accelerations.
@@ -40,7 +52,8 @@ module vehicle_motion
 
 contains
 
-   !> Prepare the tables: cumulative integrals at the knots, once per run.
+   !> Prepare the tables: cumulative integrals at the knots and the slope
+   !! of every interval, once per run (the evaluation then only looks them up).
    pure subroutine vehicle_motion_init(m, vm)
       type(vehicle_section_t), intent(in) :: m
       type(vehicle_motion_t), intent(out) :: vm
@@ -50,41 +63,59 @@ contains
 
       v0 = [m%xc_dot0, m%yc_dot0, m%phi_dot0]
       x0 = [0.0_wp, 0.0_wp, m%phi0]
+      vm%ta = m%pulse_acc%t
+      n = size(vm%ta)
+      if (allocated(m%pulse_vel%t)) then
+         vm%tv = m%pulse_vel%t
+         vm%any_rate = any(m%pulse_vel%given)
+         vm%tv_is_ta = same_times(vm%tv, vm%ta)
+      end if
+      if (allocated(m%pulse_pos%t)) then
+         vm%tx = m%pulse_pos%t
+         vm%any_pos = any(m%pulse_pos%given)
+         vm%tx_is_ta = same_times(vm%tx, vm%ta)
+      end if
       do j = 1, 3
          associate (ax => vm%axis(j))
-            n = size(m%pulse_acc%t)
-            allocate (ax%ta(n), ax%acc(n), ax%acc_v(n), ax%acc_x(n))
-            ax%ta(:) = m%pulse_acc%t
+            allocate (ax%acc(n), ax%acc_v(n), ax%acc_x(n), ax%acc_slope(n))
             ax%acc(:) = m%pulse_acc%v(:, j)
             ax%acc_v(1) = v0(j)
             ax%acc_x(1) = x0(j)
-            allocate (ax%acc_slope(n))
             ax%acc_slope(n) = 0.0_wp     ! after the last t_m the acceleration holds
             do k = 1, n - 1
-               h = ax%ta(k + 1) - ax%ta(k)
-               ax%acc_slope(k) = (ax%acc(k + 1) - ax%acc(k))/(ax%ta(k + 1) - ax%ta(k))
+               h = vm%ta(k + 1) - vm%ta(k)
+               ax%acc_slope(k) = (ax%acc(k + 1) - ax%acc(k))/(vm%ta(k + 1) - vm%ta(k))
                ax%acc_v(k + 1) = ax%acc_v(k) + 0.5_wp*h*(ax%acc(k) + ax%acc(k + 1))
                ax%acc_x(k + 1) = ax%acc_x(k) + h*ax%acc_v(k) + h**2*(2.0_wp*ax%acc(k) + ax%acc(k + 1))/6.0_wp
             end do
+            ax%moves = abs(v0(j)) > 0.0_wp .or. abs(x0(j)) > 0.0_wp .or. any(abs(ax%acc) > 0.0_wp)
             if (allocated(m%pulse_vel%t)) ax%rate_given = m%pulse_vel%given(j)
             if (ax%rate_given) then
-               n = size(m%pulse_vel%t)
-               allocate (ax%tv(n), ax%vel(n), ax%vel_x(n))
-               ax%tv(:) = m%pulse_vel%t
-               ax%vel(:) = m%pulse_vel%v(:, j)
+               ax%vel = m%pulse_vel%v(:, j)
+               ax%vel_slope = slopes(vm%tv, ax%vel)
+               allocate (ax%vel_x(size(vm%tv)))
                ax%vel_x(1) = x0(j)
-               do k = 1, n - 1
-                  ax%vel_x(k + 1) = ax%vel_x(k) + 0.5_wp*(ax%tv(k + 1) - ax%tv(k))*(ax%vel(k) + ax%vel(k + 1))
+               do k = 1, size(vm%tv) - 1
+                  ax%vel_x(k + 1) = ax%vel_x(k) + 0.5_wp*(vm%tv(k + 1) - vm%tv(k))*(ax%vel(k) + ax%vel(k + 1))
                end do
+               ax%moves = ax%moves .or. any(abs(ax%vel) > 0.0_wp)
             end if
             if (allocated(m%pulse_pos%t)) ax%pos_given = m%pulse_pos%given(j)
             if (ax%pos_given) then
-               ax%tx = m%pulse_pos%t
                ax%pos = m%pulse_pos%v(:, j)
+               ax%pos_slope = slopes(vm%tx, ax%pos)
+               ax%moves = ax%moves .or. any(abs(ax%pos) > 0.0_wp)
             end if
          end associate
       end do
    end subroutine vehicle_motion_init
+
+   !> Whether two tables have the same knot times (then one search serves both).
+   pure logical function same_times(a, b)
+      real(wp), intent(in) :: a(:), b(:)
+      same_times = size(a) == size(b)
+      if (same_times) same_times = .not. any(abs(a - b) > 0.0_wp)   ! (exactly equal)
+   end function same_times
 
    !> (C.3) Tabulated rates and positions replace integrations, so they
    !! should be the integrals of the tables below them; measured data never
@@ -142,33 +173,42 @@ contains
       type(vehicle_motion_t), intent(in) :: vm
       real(wp), intent(in) :: t
       type(vehicle_state_t) :: vs
-      integer :: j, k, ka
-      real(wp) :: tau, tau_a, da
-      ! the three acceleration columns share their times (one table, C.1):
-      ! one search serves all three
-      ka = interval(vm%axis(1)%ta, t)
-      tau_a = t - vm%axis(1)%ta(ka)
+      integer :: j, k, ka, kv, kx
+      real(wp) :: tau, da
+      ! one search per kind of table serves the three axes (they share its
+      ! times, C.1); a kind whose times are the acceleration table's needs none
+      ka = interval(vm%ta, t)
+      kv = ka
+      if (vm%any_rate .and. .not. vm%tv_is_ta) kv = interval(vm%tv, t)
+      kx = ka
+      if (vm%any_pos .and. .not. vm%tx_is_ta) kx = interval(vm%tx, t)
       do j = 1, 3
          associate (ax => vm%axis(j))
+            if (.not. ax%moves) then      ! every table and initial value zero: so is the motion
+               vs%acc(j) = 0.0_wp
+               vs%vel(j) = 0.0_wp
+               vs%pos(j) = 0.0_wp
+               cycle
+            end if
             ! acceleration table and its exact integrals
             k = ka
-            tau = tau_a
+            tau = t - vm%ta(k)
             da = ax%acc_slope(k)
             vs%acc(j) = ax%acc(k) + da*tau
             vs%vel(j) = ax%acc_v(k) + tau*(ax%acc(k) + 0.5_wp*da*tau)
             vs%pos(j) = ax%acc_x(k) + tau*(ax%acc_v(k) + tau*(0.5_wp*ax%acc(k) + da*tau/6.0_wp))
             ! tabulated rates replace the first integration
             if (ax%rate_given) then
-               k = interval(ax%tv, t)
-               tau = t - ax%tv(k)
-               da = slope(ax%tv, ax%vel, k)
+               k = kv
+               tau = t - vm%tv(k)
+               da = ax%vel_slope(k)
                vs%vel(j) = ax%vel(k) + da*tau
                vs%pos(j) = ax%vel_x(k) + tau*(ax%vel(k) + 0.5_wp*da*tau)
             end if
             ! tabulated positions replace the second
             if (ax%pos_given) then
-               k = interval(ax%tx, t)
-               vs%pos(j) = ax%pos(k) + slope(ax%tx, ax%pos, k)*(t - ax%tx(k))
+               k = kx
+               vs%pos(j) = ax%pos(k) + ax%pos_slope(k)*(t - vm%tx(k))
             end if
          end associate
       end do
@@ -196,16 +236,17 @@ contains
       k = lo
    end function interval
 
-   !> Slope of interval k; beyond the table, that of the last interval.
-   pure real(wp) function slope(tk, v, k)
+   !> The slope of every interval k of a table (v(k+1) - v(k))/(t(k+1) -
+   !! t(k)); at the last knot, beyond the table, that of the last interval
+   !! (a tabulated rate or position continues along it); 0 for one knot.
+   pure function slopes(tk, v) result(sl)
       real(wp), intent(in) :: tk(:), v(:)
-      integer, intent(in) :: k
-      integer :: j
-      if (size(tk) < 2) then
-         slope = 0.0_wp
-         return
-      end if
-      j = min(k, size(tk) - 1)
-      slope = (v(j + 1) - v(j))/(tk(j + 1) - tk(j))
-   end function slope
+      real(wp) :: sl(size(tk))
+      integer :: k
+      sl = 0.0_wp
+      do k = 1, size(tk) - 1
+         sl(k) = (v(k + 1) - v(k))/(tk(k + 1) - tk(k))
+      end do
+      if (size(tk) >= 2) sl(size(tk)) = sl(size(tk) - 1)
+   end function slopes
 end module vehicle_motion

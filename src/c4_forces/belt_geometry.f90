@@ -114,8 +114,16 @@ contains
          p(:, k + 1) = p(:, k) + length(k)*[c(k), s(k)]
          v(:, k + 1) = v(:, k) + length(k)*zdot(k)*[-s(k), c(k)]
       end do
-      cp = cos(vpos(3))
-      sp = sin(vpos(3))
+      ! R(Phi) of the start of C.4. A vehicle that does not pitch (Phi = 0, a
+      ! sled pulse): cos 0 = 1 and sin 0 = 0 (of 0's sign, as sin gives it)
+      ! exactly, without the library's sine and cosine at every evaluation
+      if (abs(vpos(3)) > 0.0_wp) then
+         cp = cos(vpos(3))
+         sp = sin(vpos(3))
+      else
+         cp = 1.0_wp
+         sp = vpos(3)
+      end if
       do k = 1, last
          dx = p(1, k) - vpos(1)
          dy = p(2, k) - vpos(2)
