@@ -16,6 +16,7 @@ module body_kinematics
    private
 
    public :: point_state_t, segment_cg_state, joint_state, to_interior, joint_segment
+   public :: point_force_generalized
 
    integer, parameter :: max_links = 4
    integer, parameter :: n_links(n_seg) = [0, 1, 2, 3, 3, 4, 0, 1]
@@ -96,6 +97,31 @@ contains
       type(point_state_t) :: p
       p = point_on_segment(body, z, zdot, zdd, joint_segment(k), 0.0_wp)
    end function joint_state
+
+   !> The generalized force of a force f (inertial) at the inertial point p
+   !! of segment i: its virtual work J^T f, J = dp/dz for the material point
+   !! (the hip's translation, each link of the chain to segment i turning
+   !! about its joint, and segment i about its own proximal joint).
+   pure function point_force_generalized(body, z, i, p, f) result(b)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), p(2), f(2)
+      integer, intent(in) :: i
+      real(wp) :: b(n_dof)
+      real(wp) :: zero(n_dof), len
+      type(point_state_t) :: joint
+      integer :: k, j
+      zero = 0.0_wp
+      b = 0.0_wp
+      b(hip_x) = f(1)
+      b(hip_y) = f(2)
+      do k = 1, n_links(i)
+         j = chain_seg(k, i)
+         len = body%length(chain_len(k, i))
+         b(j) = b(j) + len*(-f(1)*sin(z(j)) + f(2)*cos(z(j)))
+      end do
+      joint = point_on_segment(body, z, zero, zero, i, 0.0_wp)
+      b(i) = b(i) - f(1)*(p(2) - joint%y) + f(2)*(p(1) - joint%x)
+   end function point_force_generalized
 
    !> The start of C.4: a point's position and velocity relative to the
    !! vehicle interior, x = R(Phi)(X - x_c), with the -y Phi', +x Phi'

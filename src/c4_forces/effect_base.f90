@@ -31,6 +31,7 @@ module effect_base
    public :: effect_t, effect_slot_t, body_state_t, event_t, accept_result_t
    public :: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    public :: event_dislocation_low, event_dislocation_high, event_kind_name, max_events_per_step
+   public :: point_force_t, point_force_list_t, point_force_add
 
    !> Kinds of energy an effect reports (C.6): stored in a conservative
    !! force, dissipated by it, supplied to the body from outside.
@@ -70,6 +71,24 @@ module effect_base
       integer :: occupant = 1
    end type event_t
 
+   !> A force from outside the body (gravity, seat, belt, contact) on one
+   !! segment, at a point of it: inertial components (lb) and position (in).
+   !! Effects that apply such forces report them (`point_forces`), so that
+   !! the joint reactions can be taken segment by segment (Newton-Euler,
+   !! A-INJ), and each effect's list reproduces its generalized forces.
+   type :: point_force_t
+      integer :: segment = 0
+      real(wp) :: point(2) = 0.0_wp
+      real(wp) :: force(2) = 0.0_wp
+   end type point_force_t
+
+   !> The point forces of an occupant's effects at one state (f(1:n); it
+   !! grows as forces are added).
+   type :: point_force_list_t
+      integer :: n = 0
+      type(point_force_t), allocatable :: f(:)
+   end type point_force_list_t
+
    !> What `accept` reports.
    type :: accept_result_t
       logical :: restart = .false.  !< the right-hand side jumped: the stepper must restart
@@ -89,6 +108,8 @@ module effect_base
       logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)
       logical :: has_memory = .false.    !< its accept changes something (only such are called)
       logical :: has_energy(n_energy_kinds) = .false.
+      !> applies forces from outside the body, which `point_forces` reports
+      logical :: external = .false.
    contains
       procedure(add_forces_interface), deferred :: add_forces
       procedure :: accept => effect_accept
@@ -98,6 +119,7 @@ module effect_base
       procedure :: describe => effect_describe
       procedure :: initial_extra => effect_initial_extra
       procedure :: failure_text => effect_failure_text
+      procedure :: point_forces => effect_point_forces
    end type effect_t
 
    !> An effect in a list.
@@ -121,6 +143,33 @@ module effect_base
    end interface
 
 contains
+
+   !> Append a force to a list.
+   pure subroutine point_force_add(list, segment, point, force)
+      type(point_force_list_t), intent(inout) :: list
+      integer, intent(in) :: segment
+      real(wp), intent(in) :: point(2), force(2)
+      type(point_force_t), allocatable :: longer(:)
+      if (.not. allocated(list%f)) allocate (list%f(16))
+      if (list%n == size(list%f)) then
+         allocate (longer(2*size(list%f)))
+         longer(1:list%n) = list%f(1:list%n)
+         call move_alloc(longer, list%f)
+      end if
+      list%n = list%n + 1
+      list%f(list%n) = point_force_t(segment, point, force)
+   end subroutine point_force_add
+
+   !> The forces from outside the body that the effect applies, appended
+   !! to list: none for the default effect (internal torques, inertia).
+   pure subroutine effect_point_forces(this, st, extra, aux, list)
+      class(effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(point_force_list_t), intent(inout) :: list
+      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux), u4 => list%n)
+      end associate
+   end subroutine effect_point_forces
 
    !> After an accepted step: update memory, report events and jumps. The
    !! default effect has no memory.

@@ -34,7 +34,7 @@ contains
 
       allocate (effects(0))
       call add(centrifugal_effect(bc))                                                  ! C.4.a
-      if (m%environment%gravity > 0.0_wp) call add(gravity_effect(bc, m%environment%gravity, z0)) ! C.4.b
+      if (m%environment%gravity > 0.0_wp) call add(gravity_effect(bc, m%body, m%environment%gravity, z0)) ! C.4.b
       if (any(m%joints%k_elastic > 0.0_wp)) call add(joint_elasticity_effect(m%joints%k_elastic, z0)) ! C.4.c
       if (any(m%joints%c_friction > 0.0_wp)) &
          call add(joint_friction_effect(m%joints%c_friction, m%joints%xi))              ! C.4.c

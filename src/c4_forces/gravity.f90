@@ -4,7 +4,9 @@ module gravity
    use kinds, only: wp
    use model, only: n_seg, n_dof, hip_y
    use preliminary, only: body_constants_t
-   use effect_base, only: effect_t, body_state_t, energy_stored, n_energy_kinds
+   use model, only: body_section_t
+   use effect_base, only: effect_t, body_state_t, energy_stored, n_energy_kinds, point_force_list_t, point_force_add
+   use body_kinematics, only: point_state_t, segment_cg_state
    implicit none
    private
 
@@ -13,24 +15,29 @@ module gravity
    !> C.4.b as an effect, present when g > 0.
    type, extends(effect_t) :: gravity_effect_t
       type(body_constants_t) :: bc
+      type(body_section_t) :: body          !< for the centres of gravity (point forces)
       real(wp) :: g = 0.0_wp
       real(wp) :: s0(n_seg) = 0.0_wp   !< sin(alpha_i) at t = 0
       real(wp) :: y0 = 0.0_wp          !< y_h at t = 0
    contains
       procedure :: add_forces => gravity_add_forces
       procedure :: energy => gravity_energy
+      procedure :: point_forces => gravity_point_forces
    end type gravity_effect_t
 
 contains
 
    !> z0: the initial generalized coordinates (the energy is measured from them).
-   function gravity_effect(bc, g, z0) result(e)
+   function gravity_effect(bc, body, g, z0) result(e)
       type(body_constants_t), intent(in) :: bc
+      type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: g, z0(n_dof)
       type(gravity_effect_t) :: e
       e%name = 'gravity'
       e%title = 'gravity (C.4.b)'
+      e%external = .true.
       e%bc = bc
+      e%body = body
       e%g = g
       e%s0 = sin(z0(1:n_seg))
       e%y0 = z0(hip_y)
@@ -56,6 +63,24 @@ contains
       b(1:n_seg) = b(1:n_seg) - g*bc%a(1:n_seg)*c
       b(hip_y) = b(hip_y) - g*bc%a(9)
    end subroutine gravity_forces
+
+   !> -m_i g (inertial vertical) at each centre of gravity (C.4.b).
+   pure subroutine gravity_point_forces(this, st, extra, aux, list)
+      class(gravity_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(point_force_list_t), intent(inout) :: list
+      type(point_state_t) :: p
+      real(wp) :: zero(n_dof)
+      integer :: i
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      zero = 0.0_wp
+      do i = 1, n_seg
+         p = segment_cg_state(this%body, st%z, zero, zero, i)
+         call point_force_add(list, i, [p%x, p%y], [0.0_wp, -this%body%mass(i)*this%g])
+      end do
+   end subroutine gravity_point_forces
 
    !> The potential whose gradient is G (C.4.b): V = g (a_9 y_h + sum a_i sin
    !! alpha_i), which is g times the sum of m_i times the inertial height of

@@ -7,7 +7,7 @@ module occupant
    use kinds, only: wp, i8
    use model, only: model_t, body_section_t, n_dof, n_seg, solver_dense
    use preliminary, only: body_constants_t, body_constants, initial_state
-   use effect_base, only: effect_t, effect_slot_t, body_state_t
+   use effect_base, only: effect_t, effect_slot_t, body_state_t, point_force_list_t
    use effect_factory, only: build_effects
    use state_layout, only: state_layout_t
    use body_matrix, only: body_accelerations, body_structure_matches, matrix_structured => solver_structured, &
@@ -16,7 +16,7 @@ module occupant
    private
 
    public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces
-   public :: occupant_initial_y, occupant_add_effect
+   public :: occupant_initial_y, occupant_add_effect, occupant_point_forces
 
    type :: occupant_t
       character(len=16) :: label = 'occupant'
@@ -135,6 +135,24 @@ contains
       st%c = cos(st%z(1:n_seg))
       st%s = sin(st%z(1:n_seg))
    end subroutine occupant_state
+
+   !> The forces from outside the body that the occupant's effects apply at
+   !! st (for the joint reactions, A-INJ).
+   pure subroutine occupant_point_forces(occ, st, y, list)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: y(:)
+      type(point_force_list_t), intent(out) :: list
+      integer :: k, xo, ao
+      do k = 1, size(occ%effects)
+         associate (e => occ%effects(k)%e)
+            if (.not. e%external) cycle
+            xo = occ%extra_offset(k)
+            ao = occ%aux_offset(k)
+            call e%point_forces(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), list)
+         end associate
+      end do
+   end subroutine occupant_point_forces
 
    !> b = C - G + J + S + B + Q (C.4): the sum of the evaluated effects'
    !! generalized forces, and the rates of their own quantities into dydt.

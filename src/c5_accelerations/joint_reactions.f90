@@ -1,0 +1,107 @@
+!> The joint reaction forces from the solved dynamics (Newton-Euler on the
+!! segments with the accelerations of C.5; errata-forces A-INJ, F5-1), in
+!! place of the quasi-static sums of f.5-f.6, which leave out inertia and
+!! gravity and cut the body inconsistently. For joint j, with D(j) the
+!! segments on its distal side,
+!!
+!!     R_j = sum over s in D(j) of (m_s a_s - F_s),
+!!
+!! a_s the inertial acceleration of the centre of gravity of s and F_s the
+!! sum of the forces from outside the body on s (gravity, seat, belts,
+!! contacts: the effects' point forces): the force the proximal side
+!! exerts on the distal side through the joint. On the axis e of the
+!! distal segment (pointing from the joint into it) the tension is
+!! FT_j = -R_j . e (positive when the proximal side holds the distal part
+!! back) and the shear FS_j = R_j . e_perp, e_perp = (-sin, cos).
+!!
+!! Distal sides (Table 6's pairs; the hip's distal side is the leg):
+!! hip {7, 8}, lumbar {2..6}, thoracic {3..6}, neck {4}, shoulder {5, 6},
+!! elbow {6}, knee {8}. The joint's axis is that of the first of them.
+module joint_reactions
+   use kinds, only: wp
+   use model, only: body_section_t, n_seg, n_dof, n_joint
+   use effect_base, only: point_force_list_t
+   use body_kinematics, only: point_state_t, segment_cg_state
+   implicit none
+   private
+
+   public :: joint_reaction_forces, body_imbalance, bone_components, distal_segment
+
+   !> distal(s, j): segment s lies on the distal side of joint j.
+   logical, parameter :: distal(n_seg, n_joint) = reshape([ &
+      .false., .false., .false., .false., .false., .false., .true., .true., &    ! hip
+      .false., .true., .true., .true., .true., .true., .false., .false., &       ! lumbar
+      .false., .false., .true., .true., .true., .true., .false., .false., &      ! thoracic
+      .false., .false., .false., .true., .false., .false., .false., .false., &   ! neck
+      .false., .false., .false., .false., .true., .true., .false., .false., &    ! shoulder
+      .false., .false., .false., .false., .false., .true., .false., .false., &   ! elbow
+      .false., .false., .false., .false., .false., .false., .false., .true.], &  ! knee
+      [n_seg, n_joint])
+   !> The segment whose axis is joint j's bone axis.
+   integer, parameter :: distal_segment(n_joint) = [7, 2, 3, 4, 5, 6, 8]
+
+contains
+
+   !> m_s a_s - F_s for every segment (inertial, lb).
+   pure function segment_imbalance(body, z, zdot, zdd, forces) result(q)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
+      type(point_force_list_t), intent(in) :: forces
+      real(wp) :: q(2, n_seg)
+      type(point_state_t) :: p
+      integer :: s, k
+      do s = 1, n_seg
+         p = segment_cg_state(body, z, zdot, zdd, s)
+         q(:, s) = body%mass(s)*[p%ax, p%ay]
+      end do
+      do k = 1, forces%n
+         associate (f => forces%f(k))
+            q(:, f%segment) = q(:, f%segment) - f%force
+         end associate
+      end do
+   end function segment_imbalance
+
+   !> R_j of every joint (inertial components, lb).
+   pure function joint_reaction_forces(body, z, zdot, zdd, forces) result(r)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
+      type(point_force_list_t), intent(in) :: forces
+      real(wp) :: r(2, n_joint)
+      real(wp) :: q(2, n_seg)
+      integer :: j, s
+      q = segment_imbalance(body, z, zdot, zdd, forces)
+      r = 0.0_wp
+      do j = 1, n_joint
+         do s = 1, n_seg
+            if (distal(s, j)) r(:, j) = r(:, j) + q(:, s)
+         end do
+      end do
+   end function joint_reaction_forces
+
+   !> sum over the whole body of m_s a_s - F_s: zero when every force from
+   !! outside is among the point forces and the accelerations solve C.5.
+   pure function body_imbalance(body, z, zdot, zdd, forces) result(total)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
+      type(point_force_list_t), intent(in) :: forces
+      real(wp) :: total(2)
+      real(wp) :: q(2, n_seg)
+      q = segment_imbalance(body, z, zdot, zdd, forces)
+      total = sum(q, dim=2)
+   end function body_imbalance
+
+   !> Tension FT_j = -R_j . e and shear FS_j = R_j . e_perp on each joint's
+   !! bone axis e = (cos alpha_d, sin alpha_d), d = distal_segment(j).
+   pure subroutine bone_components(r, z, tension, shear)
+      real(wp), intent(in) :: r(2, n_joint), z(n_dof)
+      real(wp), intent(out) :: tension(n_joint), shear(n_joint)
+      real(wp) :: c, s
+      integer :: j
+      do j = 1, n_joint
+         c = cos(z(distal_segment(j)))
+         s = sin(z(distal_segment(j)))
+         tension(j) = -(r(1, j)*c + r(2, j)*s)
+         shear(j) = -r(1, j)*s + r(2, j)*c
+      end do
+   end subroutine bone_components
+end module joint_reactions
