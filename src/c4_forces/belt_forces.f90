@@ -42,6 +42,7 @@ module belt_forces
    use strings, only: num, itoa
    use model, only: model_t, n_dof, n_seg, belt_card_lap2, coupling_torso
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
+      point_force_list_t, point_force_add, &
       energy_supplied, n_energy_kinds
    use output_series, only: output_series_t, series_new, column
    use belt_geometry, only: belt_section_geometry_t, belt_kinematics_t, belt_body_t, &
@@ -99,6 +100,7 @@ module belt_forces
       procedure :: output_values => belt_output_values
       procedure :: describe => belt_describe
       procedure :: failure_text => belt_failure_text
+      procedure :: point_forces => belt_point_forces
    end type belt_effect_t
 
    !> Everything about the effect's sections at one state (for accept and outputs).
@@ -163,6 +165,7 @@ contains
       end associate
       e%last_segment = maxval(e%geom(1:e%n_sections)%segment)
       e%needs_vehicle = .true.
+      e%external = .true.
       e%has_energy = .true.
       e%n_aux = 0
       do c = 1, e%n_chains
@@ -263,6 +266,34 @@ contains
          end associate
       end do
    end function belt_section_state
+
+   !> Each section's tension on the body (its chain's F) as a force -F e
+   !! at the point where it acts (belt_kinematics_t), turned from the
+   !! interior into the inertial frame: X = x_c + R(Φ)ᵀ x (for the joint
+   !! reactions; the list's virtual work is B).
+   pure subroutine belt_point_forces(this, st, extra, aux, list)
+      class(belt_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(point_force_list_t), intent(inout) :: list
+      type(belt_state_t) :: bs
+      real(wp) :: c, s, f
+      integer :: k
+      associate (u1 => size(extra))
+      end associate
+      bs = belt_section_state(this, st, aux)
+      c = cos(st%vehicle%pos(3))
+      s = sin(st%vehicle%pos(3))
+      do k = 1, this%n_sections
+         f = bs%split(this%chain_of(k))%force
+         if (.not. f > 0.0_wp) cycle
+         associate (p => bs%kin(k)%point, d => -f*bs%kin(k)%direction)
+            call point_force_add(list, this%geom(k)%segment, &
+                                 st%vehicle%pos(1:2) + [c*p(1) + s*p(2), -s*p(1) + c*p(2)], &
+                                 [c*d(1) + s*d(2), -s*d(1) + c*d(2)])
+         end associate
+      end do
+   end subroutine belt_point_forces
 
    !> B = -F sum_j d(delta_j)/dz per chain (C.4.e, BE-1), and the rates of the
    !! auxiliary quantities: per element W, E_abs, D_v (E6-2), per chain the

@@ -63,6 +63,11 @@ module belt_geometry
       real(wp) :: delta_rate = 0.0_wp   !< δ̇_j
       real(wp) :: gradient(n_dof) = 0.0_wp  !< ∂δ_j/∂z
       logical :: wrapped = .true.       !< lap belt: wraps the hip (false: straight to E)
+      !> where the belt acts on the body (interior): the tension F pulls the
+      !! material point `point` of the section's segment by -F `direction`
+      !! (e(φ_j); for the wrapped lap belt at the tangent point, scaled by
+      !! h/d inside the circle), so that its virtual work is -F ∂δ_j/∂z
+      real(wp) :: point(2) = 0.0_wp, direction(2) = 0.0_wp
    end type belt_kinematics_t
 
 contains
@@ -217,7 +222,8 @@ contains
       with_angle = .true.
       if (present(angle)) with_angle = angle
       k%gradient = 0.0_wp
-      call section_state(g, bb, with_angle, k%phi, k%delta, k%delta_rate, k%gradient, k%wrapped)
+      call section_state(g, bb, with_angle, k%phi, k%delta, k%delta_rate, k%gradient, k%wrapped, &
+                         k%point, k%direction)
    end function belt_kinematics
 
    !> δ_j and δ̇_j of one section, added to a chain's s and s', and ∂δ_j/∂z
@@ -237,13 +243,14 @@ contains
    !> The section's φ_j (when with_angle, or for a lap belt that wraps the
    !! hip, whose length needs it; else 0), δ_j, δ̇_j, whether a lap belt
    !! wraps the hip, and ∂δ_j/∂z added to grad, entry by entry.
-   pure subroutine section_state(g, bb, with_angle, phi, delta, delta_rate, grad, wrapped)
+   pure subroutine section_state(g, bb, with_angle, phi, delta, delta_rate, grad, wrapped, point, direction)
       type(belt_section_geometry_t), intent(in) :: g
       type(belt_body_t), intent(in) :: bb
       logical, intent(in) :: with_angle
       real(wp), intent(out) :: phi, delta, delta_rate
       real(wp), intent(inout) :: grad(n_dof)
       logical, intent(out) :: wrapped
+      real(wp), intent(out), optional :: point(2), direction(2)   ! (belt_kinematics_t)
       real(wp) :: p(2), p_rate(2), e(2), u, v, d, wrap, length, r, cr, ts(2)
       integer :: s
 
@@ -272,6 +279,10 @@ contains
             delta_rate = dot_product(e, bb%joint_rate(:, 1)) - g%h*bb%theta_rate(1)   ! C.4.e δ̇_1
             call add_joint_gradient(bb, s, e, grad)
             grad(s) = grad(s) - g%h    ! − h_1 ∂θ_1/∂α_1
+            ! the tangent point hip + h_1 e⊥/|e|² (e⊥ = e turned by +90°):
+            ! -F e there does the virtual work -F (e·∂hip/∂z − h_1 ∂θ_1/∂z)
+            if (present(point)) point = bb%joint(:, 1) + g%h*[-e(2), e(1)]/dot_product(e, e)
+            if (present(direction)) direction = e
             return
          end if
          ! straight from the anchor to E = hip + h_1 e(θ_1)
@@ -294,6 +305,8 @@ contains
       delta_rate = dot_product(e, p_rate)          ! = ẋ_j cos φ_j + ẏ_j sin φ_j + h_j θ̇_j sin(φ_j − θ_j)
       call add_joint_gradient(bb, s, e, grad)
       grad(s) = grad(s) + g%h*dot_product(e, ts)
+      if (present(point)) point = p
+      if (present(direction)) direction = e
    end subroutine section_state
 
    !> Adds e . ∂(interior position of the proximal joint of segment s)/∂z
