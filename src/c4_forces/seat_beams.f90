@@ -37,9 +37,10 @@ module seat_beams
    use strings, only: num
    use model, only: n_dof, seat_section_t, body_section_t
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
-      energy_supplied, n_energy_kinds
+      energy_supplied, n_energy_kinds, point_force_list_t
    use output_series, only: output_series_t, series_new, column
-   use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, hip_friction, &
+   use seat_geometry, only: add_seat_point_forces, &
+      seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, hip_friction, &
       slip_of, vehicle_power, add_hip_force, seg_thigh, seat_memory_t, rest_state, case_off, case_a
    implicit none
    private
@@ -63,6 +64,7 @@ module seat_beams
    contains
       procedure :: add_forces => beams_add_forces
       procedure :: accept => beams_accept
+      procedure :: point_forces => beams_point_forces
       procedure :: energy => beams_energy
       procedure :: outputs => beams_outputs
       procedure :: output_values => beams_output_values
@@ -105,6 +107,7 @@ contains
       e%mem%slip = 0
       e%n_aux = 3
       e%needs_vehicle = .true.
+      e%external = .true.
       e%has_memory = .true.
       e%has_energy = .true.
    end function seat_beams_effect
@@ -215,6 +218,21 @@ contains
       b = b + s%fp_s*s%ln%dh
       aux_rate = [s%work_rate, s%dissipation, s%supply]
    end subroutine beams_add_forces
+
+   !> The hip force and F'_s normal to the leg, as point forces.
+   pure subroutine beams_point_forces(this, st, extra, aux, list)
+      class(seat_beams_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(point_force_list_t), intent(inout) :: list
+      type(beams_state_t) :: s
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      s = beams_state(this, st, this%mem)
+      if (.not. s%on) return
+      call add_seat_point_forces(s%fr, st%vehicle%pos, [-s%f_s*tan(this%p%gamma0) - s%f, s%f_s], &
+                                 s%fp_s*[-s%ln%tan_phi, 1.0_wp], [this%p%z0, s%ln%h], s%ln%seg, list)
+   end subroutine beams_point_forces
 
    !> Figure 14's decisions on an accepted step (as figure 12's, D-19): the
    !! hip on beam 1 or off it (beams_case), the leg on the front edge, the

@@ -15,13 +15,14 @@
 module seat_geometry
    use kinds, only: wp, deg
    use model, only: n_dof, n_seg, hip_x, hip_y
-   use effect_base, only: body_state_t
+   use effect_base, only: body_state_t, point_force_list_t, point_force_add
    implicit none
    private
 
    public :: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests
    public :: seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state
    public :: case_off, case_a, case_b, seg_thigh, seg_shank, max_leg_slope
+   public :: add_seat_point_forces
 
    integer, parameter :: seg_thigh = 7, seg_shank = 8
    !> Figure 11's cases: off the seat (z < 0), case A (z > z-hat: hip
@@ -229,6 +230,28 @@ contains
       real(wp), intent(in) :: f(2), p(2)
       vehicle_power = f(1)*(fr%vc(1) + fr%phi_dot*p(2)) + f(2)*(fr%vc(2) - fr%phi_dot*p(1))
    end function vehicle_power
+
+   !> A seat's forces on the body as point forces (for the joint reactions):
+   !! f_hip (interior) at the hip, on the lower torso, and f_edge (interior,
+   !! normal to the leg's underside) at the leg's material point over the
+   !! front edge, edge = (x_e, h), on segment seg; each turned into the
+   !! inertial frame, X = x_c + R(Φ)ᵀ x. Their virtual work is the seat's S.
+   pure subroutine add_seat_point_forces(fr, vpos, f_hip, f_edge, edge, seg, list)
+      type(seat_frame_t), intent(in) :: fr
+      real(wp), intent(in) :: vpos(3), f_hip(2), f_edge(2), edge(2)
+      integer, intent(in) :: seg
+      type(point_force_list_t), intent(inout) :: list
+      if (any(abs(f_hip) > 0.0_wp)) call point_force_add(list, 1, inertial(fr, [fr%x1, fr%y1]) + vpos(1:2), &
+                                                     inertial(fr, f_hip))
+      if (any(abs(f_edge) > 0.0_wp)) call point_force_add(list, seg, inertial(fr, edge) + vpos(1:2), inertial(fr, f_edge))
+   contains
+      pure function inertial(frame, v) result(w)
+         type(seat_frame_t), intent(in) :: frame
+         real(wp), intent(in) :: v(2)
+         real(wp) :: w(2)
+         w = [frame%c_phi*v(1) + frame%s_phi*v(2), -frame%s_phi*v(1) + frame%c_phi*v(2)]
+      end function inertial
+   end subroutine add_seat_point_forces
 
    !> Figure 12 (reconstructed): off the seat when the hip has passed the
    !! front edge (z < 0), case B within z-hat of it, case A behind.

@@ -21,9 +21,10 @@ module seat_rigid_beam
    use strings, only: num
    use model, only: n_dof, n_seg, seat_section_t, body_section_t
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
-      energy_supplied, n_energy_kinds
+      energy_supplied, n_energy_kinds, point_force_list_t
    use output_series, only: output_series_t, series_new, column
-   use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
+   use seat_geometry, only: add_seat_point_forces, &
+      seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
       hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a
    implicit none
    private
@@ -39,6 +40,7 @@ module seat_rigid_beam
    contains
       procedure :: add_forces => beam_add_forces
       procedure :: accept => beam_accept
+      procedure :: point_forces => beam_point_forces
       procedure :: energy => beam_energy
       procedure :: outputs => beam_outputs
       procedure :: output_values => beam_output_values
@@ -83,6 +85,7 @@ contains
       e%n_extra = 2
       e%n_aux = 2
       e%needs_vehicle = .true.
+      e%external = .true.
       e%has_memory = .true.
       e%has_energy = .true.
       st = rest_state(z0, phi0)
@@ -193,6 +196,20 @@ contains
       aux_rate(1) = s%dissipation
       aux_rate(2) = s%supply
    end subroutine beam_add_forces
+
+   !> The hip contact, friction and leg contact on the body, as point forces.
+   pure subroutine beam_point_forces(this, st, extra, aux, list)
+      class(seat_rigid_beam_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(point_force_list_t), intent(inout) :: list
+      type(beam_state_t) :: s
+      associate (u1 => size(aux))
+      end associate
+      s = beam_state(this, st, extra, this%mem)
+      call add_seat_point_forces(s%fr, st%vehicle%pos, [-s%f_hip*s%tg - s%f, s%f_hip], &
+                                 s%f_edge*[-s%ln%tan_phi, 1.0_wp], [this%p%z0, s%ln%h], s%ln%seg, list)
+   end subroutine beam_point_forces
 
    !> On accepted steps (figure 12's logic, as for the present seat): the hip
    !! leaves the beam past its front edge (z < 0) or comes back, the leg

@@ -27,10 +27,11 @@ module seat_springs
    use strings, only: num
    use model, only: n_dof, n_seg, hip_x, hip_y, seat_section_t, body_section_t
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
-      energy_supplied, n_energy_kinds
+      energy_supplied, n_energy_kinds, point_force_list_t
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_state_t, segment_cg_state
-   use seat_geometry, only: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
+   use seat_geometry, only: add_seat_point_forces, &
+      seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
       seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, case_b
    implicit none
    private
@@ -47,6 +48,7 @@ module seat_springs
    contains
       procedure :: add_forces => springs_add_forces
       procedure :: accept => springs_accept
+      procedure :: point_forces => springs_point_forces
       procedure :: energy => springs_energy
       procedure :: outputs => springs_outputs
       procedure :: output_values => springs_output_values
@@ -84,6 +86,7 @@ contains
       e%y_zo = p%z0*tan(p%gamma0)
       e%n_aux = 2
       e%needs_vehicle = .true.
+      e%external = .true.
       e%has_memory = .true.
       e%has_energy = .true.
       st = rest_state(z0, phi0)
@@ -198,6 +201,20 @@ contains
       aux_rate(1) = s%dissipation
       aux_rate(2) = s%supply
    end subroutine springs_add_forces
+
+   !> The hip force (-f, F_s) and F'_s normal to the leg, as point forces.
+   pure subroutine springs_point_forces(this, st, extra, aux, list)
+      class(seat_springs_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(point_force_list_t), intent(inout) :: list
+      type(springs_state_t) :: s
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      s = springs_state(this, st, this%mem)
+      call add_seat_point_forces(s%fr, st%vehicle%pos, [-s%f, s%f_s], s%fp_s*[-s%ln%tan_phi, 1.0_wp], &
+                                 [this%p%z0, s%ln%h], s%ln%seg, list)
+   end subroutine springs_point_forces
 
    !> Figure 12's decisions on an accepted step: the case (off, A, B), the
    !! leg on the front edge, the hip's law in the new case, the hip sliding
