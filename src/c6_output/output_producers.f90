@@ -6,10 +6,12 @@
 module output_producers
    use kinds, only: wp
    use strings, only: itoa
-   use model, only: model_t, vehicle_section_t, n_dof, n_seg
+   use model, only: model_t, vehicle_section_t, n_dof, n_seg, n_joint
    use effect_base, only: body_state_t, energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, &
-      energy_kind_name
-   use occupant, only: occupant_t
+      energy_kind_name, point_force_list_t
+   use occupant, only: occupant_t, occupant_point_forces
+   use joint_reactions, only: joint_reaction_forces, bone_components
+   use joint_coupling, only: joint_columns
    use equations_of_motion, only: crash_system_t, system_body_state
    use output_series, only: output_series_t, series_new, column
    use output_registry, only: output_registry_t, output_frame_t
@@ -19,10 +21,10 @@ module output_producers
    private
 
    public :: registry_build, frame_fill, energy_balance_t, frame_energy
-   public :: producer_body, producer_energy
+   public :: producer_body, producer_energy, producer_reactions
 
    !> Producers other than effects (effect k of an occupant is producer k).
-   integer, parameter :: producer_body = 0, producer_energy = -1
+   integer, parameter :: producer_body = 0, producer_energy = -1, producer_reactions = -2
 
    !> The energy balance of one occupant at one time (C.6): body kinetic
    !! energy plus every effect's stored and dissipated energy minus what was
@@ -56,6 +58,18 @@ contains
                if (j == 3) call reg%add(energy_summary(occ))   ! after the vehicle: NOUT 1 tables first
                call reg%add(s)
             end do
+            ! the joint reactions from the solved dynamics (A-INJ, F5-1)
+            s = series_new('joints/tension', 'JOINT TENSION ON THE BONE AXES (NEWTON-EULER)', 'tension FT at each ' &
+                           //'joint: -R.e, R the force of the proximal side on the distal side (sum of m a - F over ' &
+                           //'it), e the distal bone''s axis; negative: compression (docs/injury.md)', 2)
+            s%col = joint_columns('lb')
+            call place(s, producer_reactions, 1)
+            call reg%add(s)
+            s = series_new('joints/shear', 'JOINT SHEAR ACROSS THE BONE AXES (NEWTON-EULER)', 'shear FS at each ' &
+                           //'joint: R.e_perp, e_perp the distal bone''s axis turned by +90 deg (docs/injury.md)', 2)
+            s%col = joint_columns('lb')
+            call place(s, producer_reactions, 2)
+            call reg%add(s)
             do k = 1, size(occ%effects)
                associate (e => occ%effects(k)%e)
                   own = e%outputs()
@@ -195,6 +209,8 @@ contains
             associate (v => frame%v(s%offset + 1:s%offset + n))
                if (s%producer == producer_body) then
                   call body_series_values(s%item, bo(o), v)
+               else if (s%producer == producer_reactions) then
+                  v = reactions(occ, st(o), s%item)
                else if (s%producer == producer_energy) then
                   v(1) = bo(o)%ke_vehicle
                   v(2) = balance(o)%ke_body
@@ -228,5 +244,19 @@ contains
             end associate
          end associate
       end do
+   contains
+      !> FT (item 1) or FS (item 2) of every joint at the print time.
+      function reactions(occ, st, item) result(values)
+         type(occupant_t), intent(in) :: occ
+         type(body_state_t), intent(in) :: st
+         integer, intent(in) :: item
+         real(wp) :: values(n_joint)
+         type(point_force_list_t) :: list
+         real(wp) :: r(2, n_joint), ft(n_joint), fs(n_joint)
+         call occupant_point_forces(occ, st, y, list)
+         r = joint_reaction_forces(occ%body, st%z, st%zdot, f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), list)
+         call bone_components(r, st%z, ft, fs)
+         values = merge(ft, fs, item == 1)
+      end function reactions
    end subroutine frame_fill
 end module output_producers
