@@ -31,6 +31,7 @@ module effect_base
    public :: effect_t, effect_slot_t, body_state_t, event_t, accept_result_t
    public :: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    public :: event_dislocation_low, event_dislocation_high, event_kind_name, max_events_per_step
+   public :: event_tension, event_compression, event_shear
    public :: point_force_t, point_force_list_t, point_force_add
 
    !> Kinds of energy an effect reports (C.6): stored in a conservative
@@ -42,8 +43,11 @@ module effect_base
 
    !> Event kinds (injuries and other happenings on accepted steps).
    integer, parameter :: event_dislocation_low = 1, event_dislocation_high = 2
-   character(len=28), parameter :: event_kind_name(2) = [character(len=28) :: &
-      'dislocation (below limit)', 'dislocation (above limit)']
+   !> Table 5's force criteria (force_injuries): joint j, bone i
+   integer, parameter :: event_tension = 3, event_compression = 4, event_shear = 5
+   character(len=28), parameter :: event_kind_name(5) = [character(len=28) :: &
+      'dislocation (below limit)', 'dislocation (above limit)', 'tension dislocation', 'compression fracture', &
+      'shear fracture']
    !> Events one effect may report at one accepted step.
    integer, parameter :: max_events_per_step = 16
 
@@ -80,6 +84,8 @@ module effect_base
       integer :: segment = 0
       real(wp) :: point(2) = 0.0_wp
       real(wp) :: force(2) = 0.0_wp
+      !> gravity, spread over the segment (not a load across a bone: Table 5's shear)
+      logical :: body_force = .false.
    end type point_force_t
 
    !> The point forces of an occupant's effects at one state (f(1:n); it
@@ -145,10 +151,11 @@ module effect_base
 contains
 
    !> Append a force to a list.
-   pure subroutine point_force_add(list, segment, point, force)
+   pure subroutine point_force_add(list, segment, point, force, body_force)
       type(point_force_list_t), intent(inout) :: list
       integer, intent(in) :: segment
       real(wp), intent(in) :: point(2), force(2)
+      logical, intent(in), optional :: body_force
       type(point_force_t), allocatable :: longer(:)
       if (.not. allocated(list%f)) allocate (list%f(16))
       if (list%n == size(list%f)) then
@@ -157,7 +164,8 @@ contains
          call move_alloc(longer, list%f)
       end if
       list%n = list%n + 1
-      list%f(list%n) = point_force_t(segment, point, force)
+      list%f(list%n) = point_force_t(segment, point, force, .false.)
+      if (present(body_force)) list%f(list%n)%body_force = body_force
    end subroutine point_force_add
 
    !> The forces from outside the body that the effect applies, appended

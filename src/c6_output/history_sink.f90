@@ -6,11 +6,13 @@
 module history_sink
    use kinds, only: wp
    use error_handling, only: error_t, error_set, exit_io
-   use model, only: n_joint
+   use model, only: n_joint, n_injury
+   use strings, only: itoa
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
-   use effect_base, only: event_t, event_kind_name
+   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear
+   use force_injuries, only: fc_defined, fs_defined
    use run_summary, only: run_summary_t
    use acceleration_criteria, only: hic_result_t
    use history_h5, only: history_file_t
@@ -105,8 +107,17 @@ contains
       type(error_t), intent(inout) :: err
       character(len=80) :: text
       if (err%failed()) return
-      write (text, '(a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of joint ', e%index, &
-         ': relative angle ', e%value, ' rad'
+      select case (e%kind)
+      case (event_tension)
+         write (text, '(a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of joint ', e%index, ': force ', &
+            e%value, ' lb'
+      case (event_compression, event_shear)
+         write (text, '(a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of bone ', e%index, ': force ', &
+            e%value, ' lb'
+      case default
+         write (text, '(a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of joint ', e%index, &
+            ': relative angle ', e%value, ' rad'
+      end select
       call this%file%add_event(e%t, e%kind, e%index, text, err)
       if (.not. err%failed()) call this%file%flush(err)
    end subroutine sink_event
@@ -122,7 +133,7 @@ contains
       integer :: o, i, n, id_v, id_t
       character(len=8) :: prefix
       if (err%failed()) return
-      n = size(summary%occ)*(2 + 2*n_joint)
+      n = size(summary%occ)*(2 + 2*n_joint + n_joint + 2*n_injury)
       allocate (names(n), units(n), values(n), times(n))
       n = 0
       do o = 1, size(summary%occ)
@@ -135,15 +146,26 @@ contains
                call put(trim(prefix)//'joint_'//char(48 + i)//'_min', 'rad', os%joint_min(i)%value, os%joint_min(i)%t)
                call put(trim(prefix)//'joint_'//char(48 + i)//'_max', 'rad', os%joint_max(i)%value, os%joint_max(i)%t)
             end do
+            if (os%force_checked) then     ! Table 5 (force_injuries)
+               do i = 1, n_joint
+                  call put(trim(prefix)//'tension_'//char(48 + i), 'lb', os%ft_max(i)%value, os%ft_max(i)%t)
+               end do
+               do i = 1, n_injury
+                  if (fc_defined(i)) call put(trim(prefix)//'compression_'//trim(itoa(i)), 'lb', os%fc_max(i)%value, &
+                                              os%fc_max(i)%t)
+                  if (fs_defined(i)) call put(trim(prefix)//'shear_'//trim(itoa(i)), 'lb', os%fs_max(i)%value, &
+                                              os%fs_max(i)%t)
+               end do
+            end if
          end associate
       end do
-      call this%file%add_series('summary/maxima', names, units, 'maxima (minima for joint_*_min) over all ' &
-                                //'accepted steps, as the listing''s summary gives them', id_v, err)
+      call this%file%add_series('summary/maxima', names(1:n), units(1:n), 'maxima (minima for joint_*_min) over ' &
+                                //'all accepted steps, as the listing''s summary gives them', id_v, err)
       units = 's'
-      if (.not. err%failed()) call this%file%add_series('summary/maxima_time', names, units, &
+      if (.not. err%failed()) call this%file%add_series('summary/maxima_time', names(1:n), units(1:n), &
                                                        'when each maximum happened', id_t, err)
-      if (.not. err%failed()) call this%file%append(id_v, values, err)
-      if (.not. err%failed()) call this%file%append(id_t, times, err)
+      if (.not. err%failed()) call this%file%append(id_v, values(1:n), err)
+      if (.not. err%failed()) call this%file%append(id_t, times(1:n), err)
       if (.not. err%failed()) call put_criteria()
       ! written at close
    contains

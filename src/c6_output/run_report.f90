@@ -27,8 +27,9 @@ module run_report
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
-   use effect_base, only: event_t, event_kind_name
-   use run_summary, only: run_summary_t, occupant_summary_t
+   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear
+   use run_summary, only: run_summary_t, occupant_summary_t, extreme_t
+   use force_injuries, only: fc_defined, fs_defined, fc_name, fs_name
    use acceleration_criteria, only: hic_result_t
    use end_tests, only: end_reason_text, end_failure, end_energy
    implicit none
@@ -860,6 +861,7 @@ contains
       type(output_registry_t), intent(in) :: reg
       type(run_summary_t), intent(in) :: res
       character(len=132) :: line
+      character(len=:), allocatable :: head
       integer :: i, o, k
 
       call lst%new_page('SUMMARY (C.6, C.7)')
@@ -890,15 +892,29 @@ contains
          end associate
       end do
 
-      call lst%heading('INJURY EVENTS (C.4.c FIGURE 10)', 3)
+      call lst%heading('INJURY EVENTS (C.4.c FIGURE 10, C.4.f FIGURE 26)', 3)
       if (res%n_events == 0) call lst%put('  none')
       do i = 1, res%n_events
          associate (e => res%events(i))
-            call lst%put('  t ='//fixed(e%t, 10, 5)//' s  '//trim(merge('occupant '//achar(48 + min(e%occupant, 9)), &
-                         '          ', size(res%occ) > 1))//' joint '//joint_name(e%index)//'  ' &
-                         //trim(event_kind_name(e%kind))//': angle'//fixed(e%value/deg, 9, 3)//' deg, limit' &
-                         //fixed(e%limit/deg, 9, 3)//' deg')
+            head = '  t ='//fixed(e%t, 10, 5)//' s  '//trim(merge('occupant '//achar(48 + min(e%occupant, 9)), &
+                   '          ', size(res%occ) > 1))
+            select case (e%kind)
+            case (event_tension)
+               line = head//' joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': force' &
+                      //fixed(e%value, 10, 1)//' lb, limit'//fixed(e%limit, 10, 1)//' lb'
+            case (event_compression, event_shear)
+               line = head//' bone '//merge(fc_name(e%index), fs_name(e%index), e%kind == event_compression) &
+                      //'  '//trim(event_kind_name(e%kind))//': force'//fixed(e%value, 10, 1)//' lb, limit' &
+                      //fixed(e%limit, 10, 1)//' lb'
+            case default
+               line = head//' joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': angle' &
+                      //fixed(e%value/deg, 9, 3)//' deg, limit'//fixed(e%limit/deg, 9, 3)//' deg'
+            end select
+            call lst%put(line)
          end associate
+      end do
+      do o = 1, size(res%occ)
+         if (res%occ(o)%force_checked) call put_force_maxima(lst, m, res%occ(o))
       end do
 
       do o = 1, size(res%occ)
@@ -1004,4 +1020,42 @@ contains
       call lst%put('  chest GSI          '//fixed(os%chest_criteria%gsi, 10, 1))
       call lst%put('  chest 3 ms clip    '//fixed(os%chest_criteria%clip3ms(), 10, 3)//' g')
    end subroutine put_injury_criteria
+
+   !> Table 5's force criteria: the largest tension, compression and shear
+   !! over all accepted steps, and the deck's limits (0: not checked).
+   subroutine put_force_maxima(lst, m, os)
+      type(listing_t), intent(inout) :: lst
+      type(model_t), intent(in) :: m
+      type(occupant_summary_t), intent(in) :: os
+      integer :: i
+      call lst%heading('FORCE INJURY CRITERIA, LARGEST OVER ALL ACCEPTED STEPS (TABLE 5, NEWTON-EULER)', 12)
+      call lst%put('   I  JOINT / BONE     TENSION   AT t (s)      FTD    COMPRESSION AT t (s)      FCF        SHEAR' &
+                   //'   AT t (s)      FSF')
+      do i = 1, n_injury
+         call lst%put(row(i))
+      end do
+   contains
+      function row(i) result(line)
+         integer, intent(in) :: i
+         character(len=132) :: line
+         character(len=12) :: who
+         who = fs_name(i)
+         if (i <= n_joint) who = joint_name(i)
+         write (line, '(i4,2x,a12,9a)') i, who, &
+            cell(i <= n_joint, os%ft_max(min(i, n_joint))), fixed(m%injury%f_tension(i), 9, 0), &
+            cell(fc_defined(i), os%fc_max(i)), fixed(m%injury%f_compression(i), 9, 0), &
+            cell(fs_defined(i), os%fs_max(i)), fixed(m%injury%f_shear(i), 9, 0)
+      end function row
+
+      function cell(defined, e) result(text)
+         logical, intent(in) :: defined
+         type(extreme_t), intent(in) :: e
+         character(len=:), allocatable :: text
+         if (defined) then
+            text = fixed(e%value, 12, 1)//fixed(e%t, 11, 5)
+         else
+            text = repeat(' ', 12)//'          -'
+         end if
+      end function cell
+   end subroutine put_force_maxima
 end module run_report

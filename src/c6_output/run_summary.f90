@@ -4,7 +4,7 @@
 !! with the length of the run (except for events, which are few).
 module run_summary
    use kinds, only: wp, i8
-   use model, only: n_joint
+   use model, only: n_joint, n_injury
    use ode_system, only: step_stats_t
    use effect_base, only: event_t
    use acceleration_criteria, only: acceleration_criteria_t
@@ -24,6 +24,11 @@ module run_summary
       type(extreme_t) :: head_max, chest_max
       !> HIC, GSI, 3 ms clip of the head and chest accelerations (g), accepted steps
       type(acceleration_criteria_t) :: head_criteria, chest_criteria
+      !> Table 5's force criteria when the deck gives limits (force_injuries):
+      !! the largest tension, compression and shear, and which were reported
+      logical :: force_checked = .false.
+      type(extreme_t) :: ft_max(n_joint), fc_max(n_injury), fs_max(n_injury)
+      logical :: force_reported(3, n_injury) = .false.
       type(extreme_t) :: joint_min(n_joint), joint_max(n_joint)
       real(wp) :: e_total0 = 0.0_wp             !< energy total at t = 0
       real(wp) :: e_error_final = 0.0_wp

@@ -9,16 +9,18 @@ module simulation
    use acceleration_criteria, only: criteria_new
    use error_handling, only: error_t, error_set, exit_numerical
    use strings, only: num
-   use model, only: model_t, n_dof, n_joint, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
+   use model, only: model_t, n_dof, n_joint, n_injury, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state, &
       rhs_status_text, rhs_diverged, rhs_not_finite
-   use occupant, only: occupant_state
+   use occupant, only: occupant_t, occupant_state, occupant_point_forces
    use vehicle_motion, only: vehicle_state_at
    use ode_system, only: stepper_t, step_ok, step_rhs_failed, step_status_text
    use runge_kutta4, only: rk4_stepper_t
    use adams_moulton, only: am_stepper_t, am_start_euler, am_start_rk4
    use dormand_prince, only: dopri_stepper_t
-   use effect_base, only: body_state_t, accept_result_t
+   use effect_base, only: body_state_t, accept_result_t, event_t, event_tension, event_compression, event_shear, &
+      point_force_list_t
+   use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined
    use joint_coupling, only: relative_angle
    use output_calc, only: head_chest_acceleration
    use output_registry, only: output_registry_t, output_frame_t
@@ -91,6 +93,10 @@ contains
          summary%occ(o)%e_total0 = total0(o)
          summary%occ(o)%head_criteria = criteria_new()
          summary%occ(o)%chest_criteria = criteria_new(with_hic=.false.)   ! GSI and the 3 ms clip
+         ! Table 5's force criteria only when the deck gives a limit (they cost
+         ! the point forces and the joint reactions at every accepted step)
+         summary%occ(o)%force_checked = any(m%injury%f_tension > 0.0_wp) .or. &
+                                        any(m%injury%f_compression > 0.0_wp) .or. any(m%injury%f_shear > 0.0_wp)
          do i = 1, n_joint
             summary%occ(o)%joint_min(i) = extreme_t(relative_angle(st%z, i), 0.0_wp)
             summary%occ(o)%joint_max(i) = summary%occ(o)%joint_min(i)
@@ -188,6 +194,52 @@ contains
          if (present(sink)) call sink%finish(summary, out_err)
       end subroutine finish
 
+      !> The bone loads at the accepted point against Table 5's limits: an
+      !! event the first time each criterion is passed; the maxima kept.
+      subroutine check_force_injuries(occ, os, occ_i, t_now, injured)
+         type(occupant_t), intent(in) :: occ
+         type(occupant_summary_t), intent(inout) :: os
+         integer, intent(in) :: occ_i
+         real(wp), intent(in) :: t_now
+         logical, intent(inout) :: injured
+         type(point_force_list_t) :: list
+         type(bone_loads_t) :: bl
+         integer :: i
+         call occupant_point_forces(occ, st, y, list)
+         bl = bone_loads(occ%body, st%z, st%zdot, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), list)
+         do i = 1, n_joint
+            call raise(os%ft_max(i), bl%ft(i), t_now)
+            call passed(os, occ_i, t_now, 1, event_tension, i, bl%ft(i), m%injury%f_tension(i), injured)
+         end do
+         do i = 1, n_injury
+            if (fc_defined(i)) then
+               call raise(os%fc_max(i), bl%fc(i), t_now)
+               call passed(os, occ_i, t_now, 2, event_compression, i, bl%fc(i), m%injury%f_compression(i), injured)
+            end if
+            if (fs_defined(i)) then
+               call raise(os%fs_max(i), bl%fs(i), t_now)
+               call passed(os, occ_i, t_now, 3, event_shear, i, bl%fs(i), m%injury%f_shear(i), injured)
+            end if
+         end do
+      end subroutine check_force_injuries
+
+      !> Criterion c (1 tension, 2 compression, 3 shear) of joint or bone
+      !! index: an event the first time value passes a limit that is given.
+      subroutine passed(os, occ_i, t_now, c, kind, index, value, limit, injured)
+         type(occupant_summary_t), intent(inout) :: os
+         integer, intent(in) :: occ_i, c, kind, index
+         real(wp), intent(in) :: t_now, value, limit
+         logical, intent(inout) :: injured
+         type(event_t) :: e
+         if (.not. limit > 0.0_wp .or. os%force_reported(c, index)) return
+         if (.not. value > limit) return
+         os%force_reported(c, index) = .true.
+         e = event_t(t=t_now, kind=kind, index=index, value=value, limit=limit, injury=.true., occupant=occ_i)
+         injured = .true.
+         call summary_add_event(summary, e)
+         if (present(sink) .and. .not. out_err%failed()) call sink%event(e, out_err)
+      end subroutine passed
+
       !> Memory updates after an accepted step (docs/architecture.md, rule 1):
       !! the effects' accept, maxima, the end tests; a restart of the
       !! stepper when an effect's memory made the right-hand side jump.
@@ -208,6 +260,8 @@ contains
                ! the vehicle's state only when something reads it
                call occupant_state(occ, t_now, y, st)
                if (sys%needs_vehicle .or. m%options%nend == nend_rest) st%vehicle = vehicle_state_at(sys%vm, t_now)
+               ! Table 5's force criteria, with the memory the step was taken with
+               if (os%force_checked) call check_force_injuries(occ, os, occ_i, t_now, injured)
                do q = 1, size(occ%remembering)
                   k = occ%remembering(q)
                   ar%restart = .false.
