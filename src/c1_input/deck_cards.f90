@@ -311,8 +311,11 @@ contains
       t(g_injury)%layout = layout_indexed
       t(g_injury)%max_index = 10
       t(g_injury)%index_name = 'row i'
-      t(g_injury)%note = 'Zero or blank means the criterion is not checked. They are read here for the ' &
-         //'contact and belt forces to come (C.4.f, figure 26).'
+      t(g_injury)%note = 'Zero or blank means the criterion is not checked. Checked at every accepted step ' &
+         //'against the forces from the solved dynamics (docs/injury.md): FTD against the tension of joint i ' &
+         //'(1-7), FCF the compression of bone i (1-8 but 4), FSF the load across bone i from outside (now 1-3, ' &
+         //'7, 8; the skull, back, rib and face with the contacts). The first passing of each is an injury event ' &
+         //'(NEND 3 ends the run there).'
       call set_fields(t(g_injury), [ &
          real_field('FSF', 'lb', one, blank_default, zero, zero, big, 'shear fracture force'), &
          real_field('FCF', 'lb', one, blank_default, zero, zero, big, 'compression fracture force'), &
