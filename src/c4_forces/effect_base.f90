@@ -84,8 +84,10 @@ module effect_base
       integer :: segment = 0
       real(wp) :: point(2) = 0.0_wp
       real(wp) :: force(2) = 0.0_wp
-      !> gravity, spread over the segment (not a load across a bone: Table 5's shear)
-      logical :: body_force = .false.
+      !> a load across the segment's bone (Table 5's shear fracture); not so
+      !! gravity, spread over the segment, nor a force at a joint (the seat's
+      !! hip force), which the joint passes on
+      logical :: across_bone = .true.
    end type point_force_t
 
    !> The point forces of an occupant's effects at one state (f(1:n); it
@@ -151,11 +153,11 @@ module effect_base
 contains
 
    !> Append a force to a list.
-   pure subroutine point_force_add(list, segment, point, force, body_force)
+   pure subroutine point_force_add(list, segment, point, force, across_bone)
       type(point_force_list_t), intent(inout) :: list
       integer, intent(in) :: segment
       real(wp), intent(in) :: point(2), force(2)
-      logical, intent(in), optional :: body_force
+      logical, intent(in), optional :: across_bone
       type(point_force_t), allocatable :: longer(:)
       if (.not. allocated(list%f)) allocate (list%f(16))
       if (list%n == size(list%f)) then
@@ -164,8 +166,8 @@ contains
          call move_alloc(longer, list%f)
       end if
       list%n = list%n + 1
-      list%f(list%n) = point_force_t(segment, point, force, .false.)
-      if (present(body_force)) list%f(list%n)%body_force = body_force
+      list%f(list%n) = point_force_t(segment, point, force, .true.)
+      if (present(across_bone)) list%f(list%n)%across_bone = across_bone
    end subroutine point_force_add
 
    !> The forces from outside the body that the effect applies, appended

@@ -78,7 +78,7 @@ contains
       zero = 0.0_wp
       do i = 1, n_seg
          p = segment_cg_state(this%body, st%z, zero, zero, i)
-         call point_force_add(list, i, [p%x, p%y], [0.0_wp, -this%body%mass(i)*this%g], body_force=.true.)
+         call point_force_add(list, i, [p%x, p%y], [0.0_wp, -this%body%mass(i)*this%g], across_bone=.false.)
       end do
    end subroutine gravity_point_forces
 

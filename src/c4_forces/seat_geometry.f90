@@ -242,7 +242,7 @@ contains
       integer, intent(in) :: seg
       type(point_force_list_t), intent(inout) :: list
       if (any(abs(f_hip) > 0.0_wp)) call point_force_add(list, 1, inertial(fr, [fr%x1, fr%y1]) + vpos(1:2), &
-                                                     inertial(fr, f_hip))
+                                                     inertial(fr, f_hip), across_bone=.false.)   ! at the hip joint
       if (any(abs(f_edge) > 0.0_wp)) call point_force_add(list, seg, inertial(fr, edge) + vpos(1:2), inertial(fr, f_edge))
    contains
       pure function inertial(frame, v) result(w)

@@ -13,8 +13,9 @@
 !!   the seat acts, the upper body's push at its top, R_2 . e_1. Table 5
 !!   has no compression limit for bone 4 (the skull): FC_4 is omitted.
 !! - FS_i, the load across bone i from outside: the component normal to
-!!   its axis of the point forces on its segment, gravity apart (the
-!!   belts' and the seat's now, the contacts' later): bones 1-3 (the lower,
+!!   its axis of the point forces on its segment that load it across
+!!   (not gravity, not the seat's hip force at the joint; the belts' and
+!!   the front edge's now, the contacts' later): bones 1-3 (the lower,
 !!   centre and upper spine: the lap belt and the torso sections, the
 !!   report's FS_1-FS_3), 7 (the upper leg: the front edge's F'_s, F7-1), 8
 !!   (the lower leg). FS_4-6 and FS_9 (skull, back, rib, face) are contact
@@ -67,7 +68,7 @@ contains
       across = 0.0_wp
       do k = 1, forces%n
          associate (f => forces%f(k))
-            if (f%body_force) cycle
+            if (.not. f%across_bone) cycle
             across(f%segment) = across(f%segment) - f%force(1)*sin(z(f%segment)) + f%force(2)*cos(z(f%segment))
          end associate
       end do

@@ -1021,40 +1021,45 @@ contains
       call lst%put('  chest 3 ms clip    '//fixed(os%chest_criteria%clip3ms(), 10, 3)//' g')
    end subroutine put_injury_criteria
 
-   !> Table 5's force criteria: the largest tension, compression and shear
-   !! over all accepted steps, and the deck's limits (0: not checked).
+   !> Table 5's force criteria: the largest tension at each joint and
+   !! compression and shear of each bone over all accepted steps, with the
+   !! deck's limits (0: not checked).
    subroutine put_force_maxima(lst, m, os)
       type(listing_t), intent(inout) :: lst
       type(model_t), intent(in) :: m
       type(occupant_summary_t), intent(in) :: os
+      character(len=132) :: line
       integer :: i
-      call lst%heading('FORCE INJURY CRITERIA, LARGEST OVER ALL ACCEPTED STEPS (TABLE 5, NEWTON-EULER)', 12)
-      call lst%put('   I  JOINT / BONE     TENSION   AT t (s)      FTD    COMPRESSION AT t (s)      FCF        SHEAR' &
-                   //'   AT t (s)      FSF')
+      call lst%heading('FORCE INJURY CRITERIA, LARGEST OVER ALL ACCEPTED STEPS (TABLE 5, NEWTON-EULER)', 21)
+      call lst%put('   J  JOINT           TENSION   AT t (s)        FTD')
+      do i = 1, n_joint
+         write (line, '(i4,2x,a12,3a)') i, joint_name(i), fixed(os%ft_max(i)%value, 10, 1), &
+            fixed(os%ft_max(i)%t, 11, 5), fixed(m%injury%f_tension(i), 11, 0)
+         call lst%put(line)
+      end do
+      call lst%put('   I  BONE        COMPRESSION   AT t (s)        FCF    BONE              SHEAR   AT t (s)        FSF')
       do i = 1, n_injury
-         call lst%put(row(i))
+         if (.not. (fc_defined(i) .or. fs_defined(i) .or. m%injury%f_shear(i) > 0.0_wp &
+                    .or. m%injury%f_compression(i) > 0.0_wp)) cycle
+         write (line, '(i4,2x,2a)') i, cell(fc_defined(i), fc_name(i), os%fc_max(i), m%injury%f_compression(i)), &
+            '    '//cell(fs_defined(i), fs_name(i), os%fs_max(i), m%injury%f_shear(i))
+         call lst%put(line)
       end do
    contains
-      function row(i) result(line)
-         integer, intent(in) :: i
-         character(len=132) :: line
-         character(len=12) :: who
-         who = fs_name(i)
-         if (i <= n_joint) who = joint_name(i)
-         write (line, '(i4,2x,a12,9a)') i, who, &
-            cell(i <= n_joint, os%ft_max(min(i, n_joint))), fixed(m%injury%f_tension(i), 9, 0), &
-            cell(fc_defined(i), os%fc_max(i)), fixed(m%injury%f_compression(i), 9, 0), &
-            cell(fs_defined(i), os%fs_max(i)), fixed(m%injury%f_shear(i), 9, 0)
-      end function row
-
-      function cell(defined, e) result(text)
+      !> name, largest value and its time, limit; '-' where the dynamics
+      !! does not give it (yet: the contacts' bones)
+      function cell(defined, name, e, limit) result(text)
          logical, intent(in) :: defined
+         character(len=*), intent(in) :: name
          type(extreme_t), intent(in) :: e
+         real(wp), intent(in) :: limit
          character(len=:), allocatable :: text
+         character(len=12) :: who
+         who = name
          if (defined) then
-            text = fixed(e%value, 12, 1)//fixed(e%t, 11, 5)
+            text = who//fixed(e%value, 10, 1)//fixed(e%t, 11, 5)//fixed(limit, 11, 0)
          else
-            text = repeat(' ', 12)//'          -'
+            text = who//'         -          -'//fixed(limit, 11, 0)
          end if
       end function cell
    end subroutine put_force_maxima
