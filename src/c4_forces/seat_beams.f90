@@ -39,7 +39,7 @@ module seat_beams
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
       energy_supplied, n_energy_kinds, point_force_list_t
    use output_series, only: output_series_t, series_new, column
-   use seat_geometry, only: add_seat_point_forces, &
+   use seat_geometry, only: add_seat_point_forces, contact_reference, &
       seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, hip_friction, &
       slip_of, vehicle_power, add_hip_force, seg_thigh, seat_memory_t, rest_state, case_off, case_a
    implicit none
@@ -261,26 +261,12 @@ contains
       probe_mem = seat_memory_t(case=case_a, leg_on=.true., slip=0)
       probe = beams_state(this, st, probe_mem)
       released = .false.
-      if (new%case == case_off) then
-         new%hip_ref = 0.0_wp
-      else if (.not. before%on) then
-         new%hip_ref = max(0.0_wp, probe%delta_a)
-      else if (new%hip_ref > 0.0_wp .and. probe%delta_a <= 0.0_wp) then
-         new%hip_ref = 0.0_wp
-         released = .true.
-      end if
-      if (.not. new%leg_on) then
-         new%edge_ref = 0.0_wp
-      else if (.not. before%leg) then
-         ! the tip's deflection under the hip alone (beams_forces' w_free)
-         w_free = 0.0_wp
-         if (probe%delta_a > new%hip_ref) w_free = probe%rho*probe%k1*(probe%delta_a - new%hip_ref) &
-                                                   /(probe%k2 + probe%rho**2*probe%k1)
-         new%edge_ref = max(0.0_wp, probe%delta_z - w_free)
-      else if (new%edge_ref > 0.0_wp .and. probe%delta_z <= 0.0_wp) then
-         new%edge_ref = 0.0_wp
-         released = .true.
-      end if
+      call contact_reference(new%case /= case_off, before%on, probe%delta_a, probe%delta_a, new%hip_ref, released)
+      ! the edge starts from the tip's deflection beyond what the hip alone makes (beams_forces' w_free)
+      w_free = 0.0_wp
+      if (probe%delta_a > new%hip_ref) w_free = probe%rho*probe%k1*(probe%delta_a - new%hip_ref) &
+                                                /(probe%k2 + probe%rho**2*probe%k1)
+      call contact_reference(new%leg_on, before%leg, probe%delta_z - w_free, probe%delta_z, new%edge_ref, released)
       new%slip = 0
       if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
       if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip &

@@ -22,7 +22,7 @@ module seat_geometry
    public :: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests
    public :: seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state
    public :: case_off, case_a, case_b, seg_thigh, seg_shank, max_leg_slope
-   public :: add_seat_point_forces
+   public :: add_seat_point_forces, contact_reference
 
    integer, parameter :: seg_thigh = 7, seg_shank = 8
    !> Figure 11's cases: off the seat (z < 0), case A (z > z-hat: hip
@@ -252,6 +252,26 @@ contains
          w = [frame%c_phi*v(1) + frame%s_phi*v(2), -frame%s_phi*v(1) + frame%c_phi*v(2)]
       end function inertial
    end subroutine add_seat_point_forces
+
+   !> D-25: a seat contact's reference (the compression it acts beyond) at
+   !! an accepted step: none while it does not act; when it comes into
+   !! action, start (its present compression), so that no force jumps up; given
+   !! up (released: the stepper restarts) once the body is clear of the
+   !! undeflected cushion (penetration <= 0), where it carries nothing.
+   pure subroutine contact_reference(acting, was_acting, start, penetration, ref, released)
+      logical, intent(in) :: acting, was_acting
+      real(wp), intent(in) :: start, penetration
+      real(wp), intent(inout) :: ref
+      logical, intent(inout) :: released
+      if (.not. acting) then
+         ref = 0.0_wp
+      else if (.not. was_acting) then
+         ref = max(0.0_wp, start)
+      else if (ref > 0.0_wp .and. penetration <= 0.0_wp) then
+         ref = 0.0_wp
+         released = .true.
+      end if
+   end subroutine contact_reference
 
    !> Figure 12 (reconstructed): off the seat when the hip has passed the
    !! front edge (z < 0), case B within z-hat of it, case A behind.

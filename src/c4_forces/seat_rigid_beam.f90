@@ -23,7 +23,7 @@ module seat_rigid_beam
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
       energy_supplied, n_energy_kinds, point_force_list_t
    use output_series, only: output_series_t, series_new, column
-   use seat_geometry, only: add_seat_point_forces, &
+   use seat_geometry, only: add_seat_point_forces, contact_reference, &
       seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
       hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a
    implicit none
@@ -239,22 +239,8 @@ contains
       probe_mem%edge_ref = 0.0_wp
       probe = beam_state(this, st, extra, probe_mem)
       released = .false.
-      if (new%case == case_off) then
-         new%hip_ref = 0.0_wp
-      else if (.not. before%on) then
-         new%hip_ref = max(0.0_wp, probe%p_hip)
-      else if (new%hip_ref > 0.0_wp .and. probe%p_hip <= 0.0_wp) then
-         new%hip_ref = 0.0_wp
-         released = .true.
-      end if
-      if (.not. new%leg_on) then
-         new%edge_ref = 0.0_wp
-      else if (.not. before%leg) then
-         new%edge_ref = max(0.0_wp, probe%p_edge)
-      else if (new%edge_ref > 0.0_wp .and. probe%p_edge <= 0.0_wp) then
-         new%edge_ref = 0.0_wp
-         released = .true.
-      end if
+      call contact_reference(new%case /= case_off, before%on, probe%p_hip, probe%p_hip, new%hip_ref, released)
+      call contact_reference(new%leg_on, before%leg, probe%p_edge, probe%p_edge, new%edge_ref, released)
       new%slip = 0
       if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
       if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip &

@@ -30,7 +30,7 @@ module seat_springs
       energy_supplied, n_energy_kinds, point_force_list_t
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_state_t, segment_cg_state
-   use seat_geometry, only: add_seat_point_forces, &
+   use seat_geometry, only: add_seat_point_forces, contact_reference, &
       seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
       seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, case_b
    implicit none
@@ -237,7 +237,8 @@ contains
       type(seat_memory_t) :: new
       type(springs_state_t) :: before, after
       type(leg_line_t) :: ln
-      logical :: edge_was_on, released
+      logical :: released
+      real(wp) :: start
       associate (u1 => size(extra) + size(aux))
       end associate
       before = springs_state(this, st, this%mem)
@@ -254,17 +255,13 @@ contains
          new%hip_ref = 0.0_wp                 ! the cushion has recovered under a lifted hip
          released = .true.
       end if
-      edge_was_on = before%leg
-      if (.not. new%leg_on) then
-         new%edge_ref = 0.0_wp
-      else if (.not. edge_was_on) then
-         ! the leg comes onto the edge: the spring starts from its present compression
+      ! the leg onto the edge starts from its present compression
+      start = 0.0_wp
+      if (new%leg_on .and. .not. before%leg) then
          ln = leg_line(before%fr, leg_branch(before%fr, this%p%z0), this%p%z0, 0.0_wp, 0.0_wp, this%l7)
-         new%edge_ref = max(0.0_wp, this%y_zo - ln%h)
-      else if (new%edge_ref > 0.0_wp .and. before%delta_e <= 0.0_wp) then
-         new%edge_ref = 0.0_wp                ! the leg has lifted clear of the edge
-         released = .true.
+         start = this%y_zo - ln%h
       end if
+      call contact_reference(new%leg_on, before%leg, start, before%delta_e, new%edge_ref, released)
       new%slip = 0
       if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
       if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip &
