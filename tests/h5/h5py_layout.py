@@ -88,6 +88,24 @@ def main():
         if not head >= f["acceleration"][:, 0].max():
             fail("the summary's head acceleration is below the largest printed one")
 
+        # the acceleration criteria (docs/injury.md): one row, HIC15 <= HIC36,
+        # the HIC window inside its limit and on the run
+        crit = f["summary/injury_criteria"]
+        ccols = list(crit.attrs["columns"])
+        if crit.shape != (1, 9) or ccols[0] != "head_hic15":
+            fail(f"/summary/injury_criteria is {crit.shape} with columns {ccols}")
+        row = dict(zip(ccols, crit[0, :]))
+        if not 0.0 <= row["head_hic15"] <= row["head_hic36"]:
+            fail(f"HIC15 {row['head_hic15']} and HIC36 {row['head_hic36']} out of order")
+        if not 0.0 <= row["head_hic15_t2"] - row["head_hic15_t1"] <= 0.015 + 1e-12:
+            fail("the HIC15 window is longer than 15 ms")
+        if row["chest_clip3ms"] > maxima[0, columns.index("chest_acceleration")] / (9.80665 / 0.0254) + 1e-9:
+            fail("the chest's 3 ms clip exceeds its largest acceleration")
+        # the joint reactions at print times
+        for name in ("joints/tension", "joints/shear"):
+            if f[name].shape != (n, 7):
+                fail(f"/{name} has shape {f[name].shape}, expected ({n}, 7)")
+
         deck = f["input/deck"].asstr()[()]
         if len(deck) == 0 or not all(isinstance(line, str) for line in deck):
             fail("/input/deck does not read as str with .asstr()")
