@@ -1,0 +1,231 @@
+!> The geometry of the contacts of C.4.f (docs/contacts.md 1-3): the body's
+!! contact features (equations f.1 with errata F1-1, F1-2; the segment that
+!! carries each arc, D-C1; the shin capsule, D-C2), the surfaces' features
+!! (a flat piece, an infinite line, the head rest's circle, the lower
+!! panel's edge) and the check of figure 22 (D-C16): which primitive acts
+!! and its penetration delta, normal n (from the surface to the body),
+!! tangent t (n turned by -90 deg), contact point C, position T, and the
+!! rates delta' = -V_C.n and v_T = V_C.t of the material point C (f.2 with
+!! F2-1, f.3 with F3-1, F3-2, F24-1). All in the interior frame of C.4.
+!! Pure functions, no memory: the contact effects are built on them.
+module contact_geometry
+   use kinds, only: wp
+   use model, only: body_section_t, n_seg, n_dof
+   use body_kinematics, only: point_state_t, joint_state, to_interior
+   implicit none
+   private
+
+   public :: contact_feature_t, contact_surface_t, contact_state_t
+   public :: body_feature, shin_alpha0, contact_check, arc_segment
+   public :: surface_flat, surface_line, surface_circle, surface_point
+   public :: region_none, region_face, region_corner, region_circle, region_shin_line, region_shin_knee, &
+      region_shin_ankle
+
+   !> The segment that carries each arc i = 1..10 (D-C1, A-C2, F3-1).
+   integer, parameter :: arc_segment(10) = [1, 3, 3, 4, 5, 5, 7, 8, 8, 6]
+   !> The joint at the proximal end of each segment (the hip for 1 and 7).
+   integer, parameter :: proximal_joint(n_seg) = [1, 2, 3, 4, 5, 6, 1, 7]
+
+   integer, parameter :: surface_flat = 1, surface_line = 2, surface_circle = 3, surface_point = 4
+   integer, parameter :: region_none = 0, region_face = 1, region_corner = 2, region_circle = 3, &
+      region_shin_line = 4, region_shin_knee = 5, region_shin_ankle = 6
+
+   !> A body feature (interior frame): an arc of radius r centred at the
+   !! material point p of segment seg, or (i = 9) the shin capsule.
+   type :: contact_feature_t
+      integer :: arc = 0, seg = 0
+      real(wp) :: p(2) = 0.0_wp, r = 0.0_wp
+      !> the segment's proximal joint and its velocity, its angle and rate
+      real(wp) :: joint(2) = 0.0_wp, joint_vel(2) = 0.0_wp, theta = 0.0_wp, theta_dot = 0.0_wp
+      !> the shin: the ankle's centre, its radius, the knee's radius, alpha_0
+      real(wp) :: ankle(2) = 0.0_wp, r_ankle = 0.0_wp, alpha0 = 0.0_wp
+   end type contact_feature_t
+
+   !> A surface feature (interior frame): a flat piece from s back along
+   !! -e(psi) by d (with an opening between t_open(1) and t_open(2) when
+   !! t_open(2) > t_open(1)), an infinite line through s at psi, a circle
+   !! of diameter d centred at s, or the point s (the lower panel's edge).
+   type :: contact_surface_t
+      integer :: kind = surface_flat
+      real(wp) :: s(2) = 0.0_wp, psi = 0.0_wp, d = 0.0_wp
+      real(wp) :: t_open(2) = 0.0_wp
+   end type contact_surface_t
+
+   type :: contact_state_t
+      integer :: region = region_none
+      real(wp) :: delta = 0.0_wp, delta_dot = 0.0_wp
+      real(wp) :: n(2) = 0.0_wp, t(2) = 0.0_wp, c(2) = 0.0_wp
+      real(wp) :: pos = 0.0_wp           !< T, where along the surface (or the shin) it acts
+      real(wp) :: v_t = 0.0_wp           !< sliding velocity of the body's material point along t
+   end type contact_state_t
+
+contains
+
+   !> alpha_0 of C.2: the angle of the shin (the common tangent of the knee
+   !! circle r_7 and the ankle circle r_A) to the lower leg's centre line.
+   pure real(wp) function shin_alpha0(body) result(a)
+      type(body_section_t), intent(in) :: body
+      a = asin((body%r_arc(7) - body%r_arc(11))/body%length(8))
+   end function shin_alpha0
+
+   !> Body feature i (f.1 with F1-1, F1-2) at the inertial state (z, z')
+   !! and the vehicle's position and rates vpos, vvel, in the interior frame.
+   pure function body_feature(body, z, zdot, vpos, vvel, i) result(f)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), vpos(3), vvel(3)
+      integer, intent(in) :: i
+      type(contact_feature_t) :: f
+      type(point_state_t) :: j
+      real(wp) :: zero(n_dof)
+      zero = 0.0_wp
+      f%arc = i
+      f%seg = arc_segment(i)
+      j = to_interior(joint_state(body, z, zdot, zero, proximal_joint(f%seg)), vpos, vvel)
+      f%joint = [j%x, j%y]
+      f%joint_vel = [j%vx, j%vy]
+      f%theta = z(f%seg) + vpos(3)
+      f%theta_dot = zdot(f%seg) + vvel(3)
+      f%r = body%r_arc(i)
+      select case (i)
+      case (1, 5)                 ! hip, shoulder: the joint itself (F1-2)
+         f%p = f%joint
+      case (2, 3)                 ! upper back, chest: rho'_i at gamma_i from the torso line
+         f%p = f%joint + body%rho_arc(i)*e(f%theta + body%gamma_arc(i))
+      case (4)                    ! head: rho'_4 along its centre line (F1-1)
+         f%p = f%joint + body%rho_arc(4)*e(f%theta)
+      case (6, 7, 10)             ! elbow, knee, hand: the segment's far end
+         f%p = f%joint + body%length(f%seg)*e(f%theta)
+      case (8)                    ! foot: the ankle, L_8 along the shank
+         f%p = f%joint + body%length(8)*e(f%theta)
+      case (9)                    ! the shin: the knee circle and the ankle circle (D-C2)
+         f%p = f%joint
+         f%r = body%r_arc(7)
+         f%ankle = f%joint + body%length(8)*e(f%theta)
+         f%r_ankle = body%r_arc(11)
+         f%alpha0 = shin_alpha0(body)
+      end select
+   end function body_feature
+
+   pure function e(a) result(v)
+      real(wp), intent(in) :: a
+      real(wp) :: v(2)
+      v = [cos(a), sin(a)]
+   end function e
+
+   !> Figure 22 reconstructed (docs/contacts.md 3.2): the primitive that
+   !! acts between body feature f and surface sf, and its state. The region
+   !! is chosen so that delta and its gradient are continuous everywhere.
+   pure function contact_check(f, sf) result(cs)
+      type(contact_feature_t), intent(in) :: f
+      type(contact_surface_t), intent(in) :: sf
+      type(contact_state_t) :: cs
+      real(wp) :: tk(2), nk(2), tt, te
+      if (f%arc == 9) then
+         cs = shin_check(f, sf%s)
+         return
+      end if
+      select case (sf%kind)
+      case (surface_circle)        ! the head rest (F24-1, F4-1)
+         call round(f%p - sf%s, 0.5_wp*sf%d, region_circle, cs)
+         cs%pos = 0.0_wp
+      case (surface_point)
+         call round(f%p - sf%s, 0.0_wp, region_corner, cs)
+         cs%pos = 0.0_wp
+      case default
+         tk = e(sf%psi)
+         nk = [-tk(2), tk(1)]
+         tt = dot_product(sf%s - f%p, tk)                ! f.2's T
+         te = -1.0_wp
+         if (sf%kind == surface_flat) then
+            if (tt < 0.0_wp) then
+               te = 0.0_wp
+            else if (tt > sf%d) then
+               te = sf%d
+            else if (sf%t_open(2) > sf%t_open(1) .and. tt > sf%t_open(1) .and. tt < sf%t_open(2)) then
+               te = merge(sf%t_open(1), sf%t_open(2), tt - sf%t_open(1) <= sf%t_open(2) - tt)
+            end if
+         end if
+         if (te >= 0.0_wp) then   ! a corner at the end (or the opening's edge) nearest (D-C16)
+            call round(f%p - (sf%s - te*tk), 0.0_wp, region_corner, cs)
+            cs%pos = te
+         else                      ! the face: delta = r - (P - S).n_k (f.2)
+            cs%region = region_face
+            cs%n = nk
+            cs%delta = f%r - dot_product(f%p - sf%s, nk)
+            cs%pos = tt
+         end if
+      end select
+      cs%t = [cs%n(2), -cs%n(1)]
+      cs%c = f%p - f%r*cs%n
+      call rates(f, cs)
+   contains
+      !> the body's circle against a circle of radius rad (0: a point) at
+      !! distance d = |v| from its centre, v from that centre to the body
+      pure subroutine round(v, rad, region, st)
+         real(wp), intent(in) :: v(2), rad
+         integer, intent(in) :: region
+         type(contact_state_t), intent(out) :: st
+         real(wp) :: d
+         d = norm2(v)
+         st%region = region
+         st%delta = rad + f%r - d
+         if (d > 0.0_wp) then
+            st%n = v/d
+         else
+            st%n = [0.0_wp, 1.0_wp]          ! (coincident centres: any direction)
+         end if
+      end subroutine round
+   end function contact_check
+
+   !> The shin capsule against the lower panel's edge ed (D-C2): the line
+   !! part (F2-2, F2-3) between the tangent points, the knee or the ankle
+   !! circle beyond them. The normal is the edge's push on the body.
+   pure function shin_check(f, ed) result(cs)
+      type(contact_feature_t), intent(in) :: f
+      real(wp), intent(in) :: ed(2)
+      type(contact_state_t) :: cs
+      real(wp) :: u(2), m(2), tt, t_end, v(2), d
+      u = e(f%theta - f%alpha0)
+      m = [-u(2), u(1)]
+      tt = dot_product(ed - f%joint, u)                  ! T_9 (F2-3)
+      t_end = norm2(f%ankle - f%joint)*cos(f%alpha0)
+      if (tt >= 0.0_wp .and. tt <= t_end) then
+         cs%region = region_shin_line
+         cs%delta = f%r - dot_product(ed - f%joint, m)   ! F2-2
+         cs%n = -m
+         cs%c = f%joint + f%r*m + tt*u
+      else
+         if (tt < 0.0_wp) then
+            cs%region = region_shin_knee
+            v = f%joint - ed
+            cs%delta = f%r - norm2(v)
+            d = norm2(v)
+            cs%c = f%joint
+         else
+            cs%region = region_shin_ankle
+            v = f%ankle - ed
+            cs%delta = f%r_ankle - norm2(v)
+            d = norm2(v)
+            cs%c = f%ankle
+         end if
+         cs%n = [0.0_wp, 1.0_wp]
+         if (d > 0.0_wp) cs%n = v/d
+         cs%c = cs%c - merge(f%r, f%r_ankle, cs%region == region_shin_knee)*cs%n
+      end if
+      cs%pos = tt
+      cs%t = [cs%n(2), -cs%n(1)]
+      call rates(f, cs)
+   end function shin_check
+
+   !> delta' = -V_C.n and v_T = V_C.t, V_C the interior velocity of the
+   !! body's material point at C (the surface is fixed in the interior).
+   pure subroutine rates(f, cs)
+      type(contact_feature_t), intent(in) :: f
+      type(contact_state_t), intent(inout) :: cs
+      real(wp) :: vc(2), rel(2)
+      rel = cs%c - f%joint
+      vc = f%joint_vel + f%theta_dot*[-rel(2), rel(1)]
+      cs%delta_dot = -dot_product(vc, cs%n)
+      cs%v_t = dot_product(vc, cs%t)
+   end subroutine rates
+end module contact_geometry
