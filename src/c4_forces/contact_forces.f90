@@ -1,0 +1,209 @@
+!> One contact pair of C.4.f as an effect (docs/contacts.md 3.1, D-C15):
+!! body point i against surface k. Its normal force P comes from the
+!! surface's material through recurrent loading (Table 4, figure 18; the
+!! chain of one element of increment 3 in docs/contacts.md 6.2: the outer
+!! material, no friction yet); it acts as P n at the contact point C, a
+!! material point of the segment carrying the arc, so its generalized
+!! forces are the virtual work J_C^T F (D-C23: the printed f.8 and its
+!! errata F8-1..F8-6 are not needed). Memory (the loading cycle) changes
+!! only on accepted steps. Energies (E6-2, as the belts): per element W,
+!! E_abs, D_v, and the work supplied by the moving vehicle,
+!! S' = P (delta' + (J_C^T n) . z'), the power of the force at the
+!! surface's material point.
+module contact_forces
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   use kinds, only: wp
+   use strings, only: itoa, num
+   use model, only: body_section_t, n_dof
+   use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
+      energy_supplied, n_energy_kinds, point_force_list_t, point_force_add
+   use output_series, only: output_series_t, series_new, column
+   use body_kinematics, only: point_force_generalized
+   use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
+      arc_segment
+   use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
+      recurrent_is_elastic, n_loading_aux
+   use belt_shared_deflection, only: chain_split_t, chain_split, split_ok
+   implicit none
+   private
+
+   public :: contact_pair_effect_t, contact_pair_effect
+
+   !> Aux: the element's W, E_abs, D_v, then the supplied work.
+   integer, parameter :: aux_supplied = n_loading_aux + 1
+
+   type, extends(effect_t) :: contact_pair_effect_t
+      integer :: i = 0, k = 0
+      type(body_section_t) :: body
+      type(contact_surface_t) :: surface
+      type(recurrent_law_t) :: law(1)
+      type(loading_memory_t) :: mem(1)
+      integer :: max_iter = 60
+   contains
+      procedure :: add_forces => pair_add_forces
+      procedure :: accept => pair_accept
+      procedure :: energy => pair_energy
+      procedure :: outputs => pair_outputs
+      procedure :: output_values => pair_output_values
+      procedure :: point_forces => pair_point_forces
+      procedure :: describe => pair_describe
+   end type contact_pair_effect_t
+
+   !> Everything about the pair at one state.
+   type :: pair_state_t
+      type(contact_state_t) :: cs
+      type(chain_split_t) :: split
+      real(wp) :: c_in(2) = 0.0_wp, n_in(2) = 0.0_wp   !< C and n, inertial
+      real(wp) :: b_unit(n_dof) = 0.0_wp                !< J_C^T n: the generalized force of a unit P
+   end type pair_state_t
+
+contains
+
+   !> The pair (i, k) with surface sf (interior frame) and the law of its
+   !! material.
+   function contact_pair_effect(body, i, k, sf, law) result(e)
+      type(body_section_t), intent(in) :: body
+      integer, intent(in) :: i, k
+      type(contact_surface_t), intent(in) :: sf
+      type(recurrent_law_t), intent(in) :: law
+      type(contact_pair_effect_t) :: e
+      e%name = 'contact_'//itoa(i)//'_'//itoa(k)
+      e%title = 'contact '//itoa(i)//' on '//itoa(k)//' (C.4.f)'
+      e%i = i
+      e%k = k
+      e%body = body
+      e%surface = sf
+      e%law(1) = law
+      e%needs_vehicle = .true.
+      e%external = .true.
+      e%has_energy = .true.
+      e%has_memory = .not. recurrent_is_elastic(law)
+      e%n_aux = aux_supplied
+   end function contact_pair_effect
+
+   !> The contact's geometry (figure 22), force split and virtual work at st.
+   pure function pair_state(this, st) result(ps)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      type(pair_state_t) :: ps
+      type(contact_feature_t) :: f
+      real(wp) :: c, s
+      f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i)
+      ps%cs = contact_check(f, this%surface)
+      ! delta <= 0 is slack: the split gives no force (a contact never pulls)
+      call chain_split(1, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split)
+      c = cos(st%vehicle%pos(3))
+      s = sin(st%vehicle%pos(3))
+      ps%c_in = st%vehicle%pos(1:2) + [c*ps%cs%c(1) + s*ps%cs%c(2), -s*ps%cs%c(1) + c*ps%cs%c(2)]
+      ps%n_in = [c*ps%cs%n(1) + s*ps%cs%n(2), -s*ps%cs%n(1) + c*ps%cs%n(2)]
+      if (ps%split%force > 0.0_wp) ps%b_unit = point_force_generalized(this%body, st%z, arc_segment(this%i), &
+                                                                        ps%c_in, ps%n_in)
+   end function pair_state
+
+   pure subroutine pair_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      type(pair_state_t) :: ps
+      associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
+      end associate
+      ps = pair_state(this, st)
+      if (ps%split%status /= split_ok) then
+         aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)
+         return
+      end if
+      aux_rate(1:n_loading_aux) = ps%split%aux_rate(:, 1)
+      aux_rate(aux_supplied) = 0.0_wp
+      if (.not. ps%split%force > 0.0_wp) return
+      b = b + ps%split%force*ps%b_unit
+      ! the vehicle's work: P (delta' + (J^T n) . z') (the surface moves with it)
+      aux_rate(aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(ps%b_unit, st%zdot))
+   end subroutine pair_add_forces
+
+   !> The loading cycle (figure 18) from the accepted deformation and rate;
+   !! a changed law restarts the stepper.
+   subroutine pair_accept(this, st, extra, aux, result)
+      class(contact_pair_effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(accept_result_t), intent(inout) :: result
+      type(pair_state_t) :: ps
+      logical :: changed
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      ps = pair_state(this, st)
+      ! out of contact the memory stays (as a slack belt's, belt_accept)
+      if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
+      call recurrent_accept(this%law(1), this%mem(1), ps%split%x(1), ps%split%rate(1), changed)
+      result%restart = result%restart .or. changed
+   end subroutine pair_accept
+
+   pure subroutine pair_energy(this, st, extra, aux, e)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      real(wp) :: ce, de
+      associate (u1 => st%t, u2 => size(extra))
+      end associate
+      call recurrent_energies(this%law(1), aux(1:n_loading_aux), ce, de)
+      e(energy_stored) = ce
+      e(energy_dissipated) = de
+      e(energy_supplied) = aux(aux_supplied)
+   end subroutine pair_energy
+
+   pure subroutine pair_point_forces(this, st, extra, aux, list)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(point_force_list_t), intent(inout) :: list
+      type(pair_state_t) :: ps
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      ps = pair_state(this, st)
+      if (.not. ps%split%force > 0.0_wp) return
+      ! an arc centred on a joint (hip, shoulder, elbow, knee) passes its load on
+      ! through the joint: no load across a bone (docs/contacts.md 4.3)
+      call point_force_add(list, arc_segment(this%i), ps%c_in, ps%split%force*ps%n_in, &
+                           across_bone=.not. any(this%i == [1, 5, 6, 7]))
+   end subroutine pair_point_forces
+
+   function pair_outputs(this) result(series)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(output_series_t), allocatable :: series(:)
+      allocate (series(2))
+      series(1) = series_new('force', 'CONTACT '//itoa(this%i)//' ON SURFACE '//itoa(this%k)//' (C.4.F)', &
+                             'normal force P, penetration delta, its rate, and T, where along the surface it acts ' &
+                             //'(docs/contacts.md)', 1)
+      series(1)%col = [column('P', 'lb'), column('delta', 'in'), column('delta_dot', 'in/s'), column('T', 'in')]
+      series(2) = series_new('energy', 'CONTACT '//itoa(this%i)//' ON SURFACE '//itoa(this%k)//': ENERGIES (C.6)', &
+                             'stored CE and dissipated DE of the surface material (E6-2), work supplied by the ' &
+                             //'moving vehicle', 3)
+      series(2)%col = [column('conserved', 'in*lb'), column('dissipated', 'in*lb'), column('supplied', 'in*lb')]
+   end function pair_outputs
+
+   pure subroutine pair_output_values(this, item, st, extra, aux, values)
+      class(contact_pair_effect_t), intent(in) :: this
+      integer, intent(in) :: item
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: values(:)
+      type(pair_state_t) :: ps
+      real(wp) :: e(n_energy_kinds)
+      if (item == 1) then
+         ps = pair_state(this, st)
+         values = [ps%split%force, ps%cs%delta, ps%cs%delta_dot, ps%cs%pos]
+      else
+         call pair_energy(this, st, extra, aux, e)
+         values = e
+      end if
+   end subroutine pair_output_values
+
+   function pair_describe(this) result(text)
+      class(contact_pair_effect_t), intent(in) :: this
+      character(len=:), allocatable :: text
+      text = trim(this%title)//': surface at ('//num(this%surface%s(1))//', '//num(this%surface%s(2))//') in'
+   end function pair_describe
+end module contact_forces
