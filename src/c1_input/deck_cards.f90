@@ -26,6 +26,7 @@ module deck_cards
    public :: g_title, g_options, g_time, g_segments, g_joints, g_restraints, g_stopcurve
    public :: g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates
    public :: g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials, n_groups
+   public :: g_surfaces, g_interior, g_contactoff
    public :: g_loadpoly, g_loadrate, g_loadtable, g_beltloading
    public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
    public :: g_belts, g_beltoptions
@@ -58,7 +59,9 @@ module deck_cards
    integer, parameter :: g_seat = 24, g_seatsprings = 25, g_seatbeam = 26, g_seatbeaminit = 27, g_seatbeams = 28
    !> Belts (C.4.e, Table 2; docs/belts.md).
    integer, parameter :: g_belts = 29, g_beltoptions = 30
-   integer, parameter :: n_groups = 30
+   !> The interior's contact surfaces (C.4.f; docs/contacts.md).
+   integer, parameter :: g_surfaces = 31, g_interior = 32, g_contactoff = 33
+   integer, parameter :: n_groups = 33
 
    !> One field of a card.
    type :: field_spec_t
@@ -89,7 +92,7 @@ module deck_cards
       integer :: n_fields = 0
       type(field_spec_t) :: field(max_fields)
       character(len=72) :: title = ' '
-      character(len=800) :: note = ' '
+      character(len=1200) :: note = ' '
    end type group_spec_t
 
 contains
@@ -449,15 +452,22 @@ contains
          //'conserved to that absorbed (recurrent loading, C.4.e figure 18); R must not exceed 1 - G ' &
          //'(docs/loading.md). CURVE: the number k of its loading curve (*LOADPOLY or *LOADTABLE, as ' &
          //'NLOAD selects), 0 for none. A material without a card ' &
-         //'has no friction, G = 0 and R = 1 (elastic) and no curve.'
+         //'has no friction, G = 0 and R = 1 (elastic) and no curve. ETA (padding 3, floormat 4 only): the ' &
+         //'fraction of the layer''s depth D'''' at which it bottoms out (figure 25). FSW (glass 2 only): the ' &
+         //'force at which the windshield shatters; blank, never (docs/contacts.md).'
       call set_fields(t(g_materials), [ &
          real_field('MU', '-', one, blank_default, zero, zero, 10.0_wp, 'friction coefficient mu_l'), &
          real_field('XI', 'in/s', one, blank_default, 0.1_wp, zero, 1.0e4_wp, 'friction velocity limit xi_l'), &
          real_field('G', '-', one, blank_default, zero, zero, 1.0_wp, 'residual / maximum deformation G_l'), &
          real_field('R', '-', one, blank_default, one, zero, 1.0_wp, 'conserved / absorbed energy R_l'), &
-         int_field('CURVE', blank_default, 0, 0, max_curves, 'loading curve k (0: none)')])
+         int_field('CURVE', blank_default, 0, 0, max_curves, 'loading curve k (0: none)'), &
+         real_field('ETA', '-', one, blank_default, one, zero, 1.0_wp, 'eta = D''/D'''' of padding or mat (3, 4)', &
+                    .true.), &
+         real_field('FSW', 'lb', one, blank_absent, zero, zero, 1.0e6_wp, 'glass (2): force that shatters it', &
+                    .true.)])
 
       call loading_groups(t)
+      call contact_groups(t)
       call belt_groups(t)
 
       call seat_groups(t)
@@ -663,5 +673,56 @@ contains
          int_field('ITER', blank_default, 60, 1, 1000, 'iteration limit of the shared deflection')])
       t(g_beltoptions)%field(1)%default = real(1, wp)
    end subroutine belt_groups
+
+   !> The interior (C.4.f, Tables 3, 7, 8; docs/contacts.md 2.4).
+   pure subroutine contact_groups(t)
+      type(group_spec_t), intent(inout) :: t(:)
+      real(wp), parameter :: zero = 0.0_wp, one_ = 1.0_wp
+
+      t(g_surfaces)%name = 'SURFACES'
+      t(g_surfaces)%title = 'Contact surfaces, Table 3 (C.4.f, f.2)'
+      t(g_surfaces)%layout = layout_indexed
+      t(g_surfaces)%max_index = 32
+      t(g_surfaces)%index_name = 'surface k'
+      t(g_surfaces)%note = 'k: 1 head rest (a circle: X, Y its centre, D its diameter, PSI the way it faces), ' &
+         //'2 windshield, 3 sun visor, 4 upper panel, 5 lower panel, 6 toeboard, 7 back of the front seat, ' &
+         //'8 steering column, 9 seat back, 10 steering-wheel rim, 11 roof, 12 floor; 21 the back of the front ' &
+         //'head rest (1*), 26 the sloping rear floor (6*), 29 the rear seat back (9*), 32 the rear-seat floor ' &
+         //'(12*). In the occupant''s interior frame (origin at the initial hip, x forward, y up): a flat ' &
+         //'surface ends at (X, Y) and runs back from it along -e(PSI) for D; the body lies on the side of ' &
+         //'e(PSI + 90 deg). Derived by f.2''s relations and left blank: X, Y of 4 (the windshield''s lower ' &
+         //'end), PSI of 10 (the column''s), X, PSI, D of 11 (Y, the windshield''s upper end) and of 12 (Y, ' &
+         //'the toeboard''s lower end), and X, PSI, D of 32 (a level line at Y). DPP: the padding''s or mat''s ' &
+         //'depth D''''. A contact pair of the occupant''s position (Tables 7, 8; NBODY) is built only when its ' &
+         //'surface is described here; no deck without *SURFACES has contacts.'
+      call set_fields(t(g_surfaces), [ &
+         real_field('X', 'in', one_, blank_absent, zero, -500.0_wp, 500.0_wp, 'x''''_k: the end at T = 0'), &
+         real_field('Y', 'in', one_, blank_absent, zero, -500.0_wp, 500.0_wp, 'y''''_k'), &
+         real_field('PSI', 'deg', deg, blank_absent, zero, -360.0_wp, 360.0_wp, 'psi_k, direction to (X, Y)'), &
+         real_field('D', 'in', one_, blank_absent, zero, zero, 500.0_wp, 'D_k, length (k = 1: diameter)', .true.), &
+         real_field('DPP', 'in', one_, blank_default, zero, zero, 50.0_wp, 'D''''_k, padding depth')])
+
+      t(g_interior)%name = 'INTERIOR'
+      t(g_interior)%title = 'Interior options, Table 3 "other" (C.4.f)'
+      t(g_interior)%note = 'DFR: the distance between the front and rear seats (listed only; no force uses it, ' &
+         //'D-C10). DI: the steering wheel''s inside diameter: a body point passes the rim''s opening to the ' &
+         //'column (D-C11). DS: the side rim''s equivalent length in the section through the arms (10*, D-C12); ' &
+         //'needed for the driver''s shoulder and hand pairs with the side rim.'
+      call set_fields(t(g_interior), [ &
+         real_field('DFR', 'in', one_, blank_default, zero, zero, 500.0_wp, 'D_fr, front to rear seat'), &
+         real_field('DI', 'in', one_, blank_default, zero, zero, 100.0_wp, 'D_i, wheel inside diameter'), &
+         real_field('DS', 'in', one_, blank_absent, zero, zero, 100.0_wp, 'D_s, side rim length', .true.)])
+
+      t(g_contactoff)%name = 'CONTACTOFF'
+      t(g_contactoff)%title = 'Contact pairs left out (Tables 7, 8)'
+      t(g_contactoff)%layout = layout_list
+      t(g_contactoff)%max_cards = 40
+      t(g_contactoff)%note = 'One card per pair of the occupant''s position to leave out: body point I (1 hip, ' &
+         //'2 back, 3 chest, 4 head, 5 shoulder, 6 elbow, 7 knee, 8 foot, 9 shin, 10 hand) and surface K (as ' &
+         //'*SURFACES; 25 the lower panel''s edge, 30 the side rim). A pair the position does not have is an error.'
+      call set_fields(t(g_contactoff), [ &
+         int_field('I', blank_required, 0, 1, 10, 'body point i'), &
+         int_field('K', blank_required, 0, 1, 32, 'surface k')])
+   end subroutine contact_groups
 
 end module deck_cards

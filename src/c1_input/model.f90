@@ -17,6 +17,7 @@ module model
    public :: stop_curve_t, restraint_t, model_t, pulse_table_t
    public :: options_section_t, time_section_t, numerics_section_t, body_section_t, joints_section_t
    public :: injury_section_t, vehicle_section_t, environment_section_t, end_tests_section_t
+   public :: interior_section_t
    public :: materials_section_t, loading_section_t, max_curves, n_belt_section
    public :: seat_section_t
    public :: seat_none, seat_springs, seat_rigid_beam, seat_beams, seat_form_name
@@ -157,7 +158,20 @@ module model
       real(wp) :: g(n_material) = 0.0_wp     !< residual / maximum deformation
       real(wp) :: r(n_material) = 1.0_wp     !< conserved / absorbed energy
       logical :: given(n_material) = .false. !< the deck has a card for it
+      real(wp) :: eta(n_material) = 1.0_wp   !< padding, floormat: bottoming depth / depth (figure 25)
+      real(wp) :: fsw = 0.0_wp               !< glass: the force that shatters it (0: never)
    end type materials_section_t
+
+   !> The interior's contact surfaces as the deck gives them (Table 3;
+   !! docs/contacts.md 2.4): surface k in 1..32 (20 + k for k*). The
+   !! relations of f.2 and the scene are resolved by contact_scene.
+   type :: interior_section_t
+      logical :: given(32) = .false.
+      real(wp) :: x(32) = 0.0_wp, y(32) = 0.0_wp, psi(32) = 0.0_wp, d(32) = 0.0_wp, dpp(32) = 0.0_wp
+      real(wp) :: dfr = 0.0_wp, di = 0.0_wp
+      real(wp) :: ds = 0.0_wp                   !< 0: not given
+      integer, allocatable :: off(:, :)         !< (i, k) of the pairs left out
+   end type interior_section_t
 
    integer, parameter :: max_curves = 20     !< loading curves k of a deck (*LOADPOLY, *LOADTABLE)
    integer, parameter :: n_belt_section = 3  !< belt sections j of Table 2: lap, torso on 2, torso on 3
@@ -267,6 +281,7 @@ module model
       type(environment_section_t) :: environment
       type(end_tests_section_t) :: end_tests
       type(seat_section_t) :: seat
+      type(interior_section_t) :: interior
       !> Things worth a user's attention that are not errors (listing and stderr).
       type(string_t), allocatable :: warnings(:)
    end type model_t

@@ -13,7 +13,7 @@ module model_builder
       g_stopcurve, g_injury, g_arcs, g_initial, g_vehicle, g_gravity, g_pulse, g_pulserates, &
       g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials, &
       g_loadpoly, g_loadrate, g_loadtable, g_beltloading, g_seat, g_seatsprings, g_seatbeam, &
-      g_seatbeaminit, g_seatbeams, g_belts, g_beltoptions
+      g_seatbeaminit, g_seatbeams, g_belts, g_beltoptions, g_surfaces, g_interior, g_contactoff
    use deck_reader, only: deck_t, group_t, card_t
    use deck_fields, only: card_value, card_int, card_given, group_value, group_int, single_card, default_value, &
       group_given
@@ -21,6 +21,9 @@ module model_builder
       statics_ok, bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    use pulse_csv, only: read_pulse_csv
    use vehicle_motion, only: vehicle_table_differences
+   use contact_tables, only: contact_pair_t, position_pairs, surface_code_valid, surface_name
+   use contact_scene, only: scene_pairs, pair_material
+   use model, only: interior_section_t
    use model, only: model_t, pulse_table_t, stop_curve_t, options_section_t, time_section_t, &
       numerics_section_t, body_section_t, joints_section_t, injury_section_t, vehicle_section_t, &
       materials_section_t, &
@@ -56,7 +59,7 @@ contains
       call build_body(deck, m%body, err)
       call build_joints(deck, m%body, m%joints, err)
       call build_injury(deck, m%injury, err)
-      call build_materials(deck, m%materials)
+      call build_materials(deck, m%materials, err)
       call build_loading(deck, m%options%nload, m%materials, m%loading, m%warnings, err)
       call build_belts(deck, m%options%nbelt, m%body, m%loading, m%belts, m%warnings, err)
       call build_vehicle(deck, m%vehicle, err)
@@ -66,7 +69,131 @@ contains
                                         group_value(deck, g_endtests, 'WREST'), &
                                         group_value(deck, g_endtests, 'THOLD'))
       call build_seat(deck, m, err)
+      call build_interior(deck, m%options%nbody, m%interior, err)
+      if (.not. err%failed()) call check_contact_materials(deck, m, err)
    end subroutine build_model
+
+   !> D-C14: the surfaces f.2's relations derive from are described, and
+   !! every assembled pair's material has a loading curve (a contact
+   !! without one would be rigid).
+   subroutine check_contact_materials(deck, m, err)
+      type(deck_t), intent(in) :: deck
+      type(model_t), intent(in) :: m
+      type(error_t), intent(inout) :: err
+      type(contact_pair_t), allocatable :: pairs(:)
+      integer :: q, l, k
+      integer, parameter :: derived(4) = [4, 10, 11, 12], source(4) = [2, 8, 2, 6]
+      logical :: reported(32)
+      do q = 1, 4
+         if (m%interior%given(derived(q)) .and. .not. m%interior%given(source(q))) call problem_at(deck, err, &
+            g_surfaces, 'surface '//itoa(derived(q))//' ('//surface_name(derived(q))//') follows from surface ' &
+            //itoa(source(q))//' ('//surface_name(source(q))//') by f.2''s relations: describe that one too')
+      end do
+      pairs = scene_pairs(m)
+      reported = .false.
+      do q = 1, size(pairs)
+         k = pairs(q)%k
+         l = pair_material(m%interior, k)
+         if (m%loading%material_curve(l) > 0 .or. reported(k)) cycle
+         reported(k) = .true.
+         call problem_at(deck, err, g_surfaces, 'surface '//itoa(k)//' (' &
+            //surface_name(k)//'): its material '//itoa(l)//' has no loading curve (*MATERIALS CURVE), so the ' &
+            //'contact of body point '//itoa(pairs(q)%i)//' with it would be rigid')
+      end do
+   end subroutine check_contact_materials
+
+   !> *SURFACES, *INTERIOR, *CONTACTOFF (C.4.f, Table 3; docs/contacts.md
+   !! 2.4): each surface's fields as Table 3 marks them, the ones f.2's
+   !! relations derive left blank (D-C5), the pairs left out belonging to
+   !! the occupant's position (D-C13).
+   subroutine build_interior(deck, nbody, it, err)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: nbody
+      type(interior_section_t), intent(out) :: it
+      type(error_t), intent(inout) :: err
+      character(len=3), parameter :: names(4) = ['X  ', 'Y  ', 'PSI', 'D  ']
+      type(contact_pair_t), allocatable :: pairs(:)
+      logical :: need(4), derived(4)
+      integer :: q, k, f, i, kk
+      associate (g => deck%group(g_surfaces))
+         do q = 1, g%n
+            k = g%card(q)%index
+            if (.not. surface_code_valid(k)) then
+               call problem(deck, err, g%card(q), 'surface '//itoa(k)//': not a surface of Table 3 or 7; expected ' &
+                            //'1-12, 21 (1*), 26 (6*), 29 (9*) or 32 (12*)')
+               cycle
+            end if
+            call table3(k, need, derived)
+            do f = 1, 4
+               if (derived(f) .and. card_given(deck, g_surfaces, g%card(q), trim(names(f)))) then
+                  call problem(deck, err, g%card(q), 'surface '//itoa(k)//' ('//surface_name(k)//'): '//trim(names(f)) &
+                               //' follows from f.2''s relations; leave it blank')
+               else if (need(f) .and. .not. card_given(deck, g_surfaces, g%card(q), trim(names(f)))) then
+                  call problem(deck, err, g%card(q), 'surface '//itoa(k)//' ('//surface_name(k)//'): '//trim(names(f)) &
+                               //' is required (Table 3)')
+               end if
+            end do
+            it%given(k) = .true.
+            it%x(k) = card_value(deck, g_surfaces, g%card(q), 'X')
+            it%y(k) = card_value(deck, g_surfaces, g%card(q), 'Y')
+            it%psi(k) = card_value(deck, g_surfaces, g%card(q), 'PSI')
+            it%d(k) = card_value(deck, g_surfaces, g%card(q), 'D')
+            it%dpp(k) = card_value(deck, g_surfaces, g%card(q), 'DPP')
+         end do
+      end associate
+      if (single_card(deck, g_interior)) then
+         it%dfr = group_value(deck, g_interior, 'DFR')
+         it%di = group_value(deck, g_interior, 'DI')
+         if (card_given(deck, g_interior, deck%group(g_interior)%card(1), 'DS')) &
+            it%ds = group_value(deck, g_interior, 'DS')
+      end if
+      pairs = position_pairs(nbody)
+      allocate (it%off(2, 0))
+      associate (g => deck%group(g_contactoff))
+         do q = 1, g%n
+            i = card_int(deck, g_contactoff, g%card(q), 'I')
+            kk = card_int(deck, g_contactoff, g%card(q), 'K')
+            if (.not. any(pairs%i == i .and. pairs%k == kk)) then
+               call problem(deck, err, g%card(q), 'the pair ('//itoa(i)//', '//itoa(kk)//') is not one of NBODY ' &
+                            //itoa(nbody)//'''s (Tables 7, 8); body point '//itoa(i)//' has '//surfaces_of(i))
+               cycle
+            end if
+            it%off = reshape([it%off, [i, kk]], [2, size(it%off, 2) + 1])
+         end do
+      end associate
+   contains
+      !> Table 3 with f.2's relations: which of X, Y, PSI, D surface k needs
+      !! and which are derived (D-C5).
+      pure subroutine table3(k, need, derived)
+         integer, intent(in) :: k
+         logical, intent(out) :: need(4), derived(4)
+         need = .true.
+         derived = .false.
+         select case (k)
+         case (4)
+            derived = [.true., .true., .false., .false.]
+         case (10)
+            derived = [.false., .false., .true., .false.]
+         case (11, 12)
+            derived = .true.
+         case (32)
+            derived = [.true., .false., .true., .true.]
+         end select
+         need = need .and. .not. derived
+      end subroutine table3
+
+      function surfaces_of(ii) result(text)
+         integer, intent(in) :: ii
+         character(len=:), allocatable :: text
+         integer :: p
+         text = ''
+         do p = 1, size(pairs)
+            if (pairs(p)%i == ii) text = text//' '//itoa(pairs(p)%k)
+         end do
+         if (len(text) == 0) text = ' none'
+         text = 'surfaces'//text
+      end function surfaces_of
+   end subroutine build_interior
 
    !> *OPTIONS (C.1) and what this version supports of them.
    subroutine build_options(deck, o, m, err)
@@ -333,9 +460,10 @@ contains
 
    !> Table 4: the materials the deck gives; the others keep the section's
    !! values (no friction, elastic) and the XI default.
-   subroutine build_materials(deck, mat)
+   subroutine build_materials(deck, mat, err)
       type(deck_t), intent(in) :: deck
       type(materials_section_t), intent(out) :: mat
+      type(error_t), intent(inout) :: err
       integer :: k, l
       mat%xi = default_value(deck, g_materials, 'XI')
       associate (g => deck%group(g_materials))
@@ -346,6 +474,18 @@ contains
             mat%g(l) = card_value(deck, g_materials, g%card(k), 'G')
             mat%r(l) = card_value(deck, g_materials, g%card(k), 'R')
             mat%given(l) = .true.
+            ! Table 4's "other": eta for padding and floormat, FSW for glass
+            mat%eta(l) = card_value(deck, g_materials, g%card(k), 'ETA')
+            if (card_given(deck, g_materials, g%card(k), 'ETA') .and. .not. any(l == [3, 4])) &
+               call problem(deck, err, g%card(k), 'material '//itoa(l)//': ETA belongs to padding (3) and ' &
+                            //'floormat (4) only')
+            if (card_given(deck, g_materials, g%card(k), 'FSW')) then
+               if (l == 2) then
+                  mat%fsw = card_value(deck, g_materials, g%card(k), 'FSW')
+               else
+                  call problem(deck, err, g%card(k), 'material '//itoa(l)//': FSW belongs to glass (2) only')
+               end if
+            end if
          end do
       end associate
    end subroutine build_materials

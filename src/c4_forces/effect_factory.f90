@@ -16,6 +16,8 @@ module effect_factory
    use joint_restraints, only: restraint_is_active
    use seat_forces, only: seat_effect
    use belt_forces, only: belt_effect, belt_part_lap, belt_part_torso, belt_part_all
+   use contact_scene, only: scene_contact_effects
+   use contact_forces, only: contact_pair_effect_t
    implicit none
    private
 
@@ -30,6 +32,7 @@ contains
       type(body_constants_t), intent(in) :: bc
       real(wp), intent(in) :: z0(n_dof)
       type(effect_slot_t), allocatable, intent(out) :: effects(:)
+      type(contact_pair_effect_t), allocatable :: contacts(:)
       integer :: i
 
       allocate (effects(0))
@@ -45,6 +48,10 @@ contains
       if (m%options%nbelt > 0 .and. m%belts%coupling == coupling_all) call add(belt_effect(m, belt_part_all)) ! C.4.e
       if (nbelt_lap(m%options%nbelt) .and. m%belts%coupling /= coupling_all) call add(belt_effect(m, belt_part_lap))
       if (nbelt_torso(m%options%nbelt) .and. m%belts%coupling /= coupling_all) call add(belt_effect(m, belt_part_torso))
+      contacts = scene_contact_effects(m)                                               ! C.4.f, one per pair
+      do i = 1, size(contacts)
+         call add(contacts(i))
+      end do
    contains
       subroutine add(e)
          class(effect_t), intent(in) :: e

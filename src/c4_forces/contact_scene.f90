@@ -1,0 +1,130 @@
+!> The scene's contacts (C.4.f; docs/contacts.md 2, 3.1): the surfaces the
+!! deck describes, with f.2's relations resolved (the upper panel from the
+!! windshield's lower end, the rim at the column's angle with its opening,
+!! the side rim 10*, roof and floor, the lower panel's edge 5*), and the
+!! pairs of the occupant's position (Tables 7, 8) whose surface the deck
+!! describes and does not switch off, each with the law of its surface's
+!! outer material (increment 3: one element; docs/contacts.md 6.2).
+module contact_scene
+   use kinds, only: wp, pi
+   use model, only: model_t, interior_section_t
+   use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle, surface_point
+   use contact_tables, only: contact_pair_t, position_pairs, surface_materials
+   use contact_forces, only: contact_pair_effect_t, contact_pair_effect
+   use recurrent_loading, only: material_law
+   implicit none
+   private
+
+   public :: resolved_surface, pair_material, scene_pairs, scene_contact_effects
+
+contains
+
+   pure function e(a) result(v)
+      real(wp), intent(in) :: a
+      real(wp) :: v(2)
+      v = [cos(a), sin(a)]
+   end function e
+
+   !> Surface k with f.2's relations resolved; ok false when the deck does
+   !! not describe it (or what it derives from).
+   pure subroutine resolved_surface(it, k, sf, ok)
+      type(interior_section_t), intent(in) :: it
+      integer, intent(in) :: k
+      type(contact_surface_t), intent(out) :: sf
+      logical, intent(out) :: ok
+      real(wp) :: c_w(2)
+      ok = .false.
+      select case (k)
+      case (1)                                   ! the head rest: a circle (F24-1)
+         if (.not. it%given(1)) return
+         sf = contact_surface_t(kind=surface_circle, s=[it%x(1), it%y(1)], psi=it%psi(1), d=it%d(1))
+      case (4)                                   ! from the windshield's lower end
+         if (.not. (it%given(4) .and. it%given(2))) return
+         sf = contact_surface_t(kind=surface_flat, s=[it%x(2), it%y(2)] - it%d(2)*e(it%psi(2)), psi=it%psi(4), &
+                                d=it%d(4))
+      case (10)                                  ! the rim, at the column's angle, with its opening (D-C11)
+         if (.not. (it%given(10) .and. it%given(8))) return
+         sf = contact_surface_t(kind=surface_flat, s=[it%x(10), it%y(10)], psi=it%psi(8), d=it%d(10))
+         if (it%di > 0.0_wp) sf%t_open = 0.5_wp*[it%d(10) - it%di, it%d(10) + it%di]
+      case (30)                                  ! the side rim: D_s about the wheel's centre (D-C12)
+         if (.not. (it%given(10) .and. it%given(8) .and. it%ds > 0.0_wp)) return
+         c_w = [it%x(10), it%y(10)] - 0.5_wp*it%d(10)*e(it%psi(8))
+         sf = contact_surface_t(kind=surface_flat, s=c_w + 0.5_wp*it%ds*e(it%psi(8)), psi=it%psi(8), d=it%ds)
+      case (11)                                  ! the roof at the windshield's upper end (D-C6)
+         if (.not. (it%given(11) .and. it%given(2))) return
+         sf = contact_surface_t(kind=surface_line, s=[0.0_wp, it%y(2)], psi=pi)
+      case (12)                                  ! the floor at the toeboard's lower end
+         if (.not. (it%given(12) .and. it%given(6))) return
+         sf = contact_surface_t(kind=surface_line, s=[0.0_wp, it%y(6) - it%d(6)*sin(it%psi(6))], psi=0.0_wp)
+      case (32)                                  ! the rear-seat floor, level at Y
+         if (.not. it%given(32)) return
+         sf = contact_surface_t(kind=surface_line, s=[0.0_wp, it%y(32)], psi=0.0_wp)
+      case (25)                                  ! the lower panel's lower edge, for the shin
+         if (.not. it%given(5)) return
+         sf = contact_surface_t(kind=surface_point, s=[it%x(5), it%y(5)] - it%d(5)*e(it%psi(5)))
+      case default                               ! a flat piece of its own
+         if (k < 1 .or. k > size(it%given)) return
+         if (.not. it%given(k)) return
+         sf = contact_surface_t(kind=surface_flat, s=[it%x(k), it%y(k)], psi=it%psi(k), d=it%d(k))
+      end select
+      ok = .true.
+   end subroutine resolved_surface
+
+   !> The material of surface k's outer element (Table 10; D-C22): a padded
+   !! surface's padding or mat when D'' > 0, else its backing.
+   pure integer function pair_material(it, k) result(l)
+      type(interior_section_t), intent(in) :: it
+      integer, intent(in) :: k
+      integer, allocatable :: comp(:)
+      integer :: kd
+      comp = surface_materials(k)
+      l = 0
+      if (size(comp) == 0) return
+      kd = k
+      if (k == 25) kd = 5
+      l = comp(1)
+      if (size(comp) > 1) then
+         if (.not. it%dpp(kd) > 0.0_wp) l = comp(2)
+      end if
+   end function pair_material
+
+   !> The pairs the scene assembles: the position's, less those switched
+   !! off, whose surface the deck describes.
+   pure function scene_pairs(m) result(pairs)
+      type(model_t), intent(in) :: m
+      type(contact_pair_t), allocatable :: pairs(:), candidates(:)
+      type(contact_surface_t) :: sf
+      logical :: ok, off
+      integer :: q, r
+      candidates = position_pairs(m%options%nbody)
+      allocate (pairs(0))
+      if (.not. any(m%interior%given)) return
+      do q = 1, size(candidates)
+         call resolved_surface(m%interior, candidates(q)%k, sf, ok)
+         off = .false.
+         if (allocated(m%interior%off)) then
+            do r = 1, size(m%interior%off, 2)
+               off = off .or. (m%interior%off(1, r) == candidates(q)%i .and. m%interior%off(2, r) == candidates(q)%k)
+            end do
+         end if
+         if (ok .and. .not. off) pairs = [pairs, candidates(q)]
+      end do
+   end function scene_pairs
+
+   !> The contact effects of the scene, one per pair (D-C15).
+   function scene_contact_effects(m) result(effects)
+      type(model_t), intent(in) :: m
+      type(contact_pair_effect_t), allocatable :: effects(:)
+      type(contact_pair_t), allocatable :: pairs(:)
+      type(contact_surface_t) :: sf
+      logical :: ok
+      integer :: q
+      pairs = scene_pairs(m)
+      allocate (effects(size(pairs)))
+      do q = 1, size(pairs)
+         call resolved_surface(m%interior, pairs(q)%k, sf, ok)
+         effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
+                                          material_law(m%materials, m%loading, pair_material(m%interior, pairs(q)%k)))
+      end do
+   end function scene_contact_effects
+end module contact_scene
