@@ -77,6 +77,7 @@ contains
       integer, intent(in) :: k
       integer, allocatable :: comp(:)
       integer :: kd
+      allocate (comp(0))      ! (realloc on assignment: a descriptor set first)
       comp = surface_materials(k)
       l = 0
       if (size(comp) == 0) return
@@ -96,8 +97,8 @@ contains
       type(contact_surface_t) :: sf
       logical :: ok, off
       integer :: q, r
+      allocate (pairs(0), candidates(0))
       candidates = position_pairs(m%options%nbody)
-      allocate (pairs(0))
       if (.not. any(m%interior%given)) return
       do q = 1, size(candidates)
          call resolved_surface(m%interior, candidates(q)%k, sf, ok)
@@ -119,6 +120,7 @@ contains
       type(contact_surface_t) :: sf
       logical :: ok
       integer :: q
+      allocate (pairs(0))
       pairs = scene_pairs(m)
       allocate (effects(size(pairs)))
       do q = 1, size(pairs)
