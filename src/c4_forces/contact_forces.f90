@@ -2,14 +2,17 @@
 !! body point i against surface k. Its normal force P comes from the
 !! surface's material through recurrent loading (Table 4, figure 18; the
 !! chain of one element of increment 3 in docs/contacts.md 6.2: the outer
-!! material, no friction yet); it acts as P n at the contact point C, a
+!! material); the friction P' = mu P s (f.3, f.4) with s the direction of
+!! sliding of the body's material point along t, decided on accepted steps
+!! with the dead band xi (D-C18, D-C22). The force P n - P' t acts at the
+!! contact point C, a
 !! material point of the segment carrying the arc, so its generalized
 !! forces are the virtual work J_C^T F (D-C23: the printed f.8 and its
 !! errata F8-1..F8-6 are not needed). Memory (the loading cycle) changes
 !! only on accepted steps. Energies (E6-2, as the belts): per element W,
-!! E_abs, D_v, and the work supplied by the moving vehicle,
-!! S' = P (delta' + (J_C^T n) . z'), the power of the force at the
-!! surface's material point.
+!! E_abs, D_v, the friction's work P' v_T, and the work supplied by the
+!! moving vehicle, S' = P (delta' + (J_C^T n) . z') - P' ((J_C^T t) . z' -
+!! v_T), the power of the force at the surface's material point.
 module contact_forces
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: wp
@@ -24,13 +27,14 @@ module contact_forces
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
       recurrent_is_elastic, n_loading_aux
    use belt_shared_deflection, only: chain_split_t, chain_split, split_ok
+   use dead_band, only: slip_of
    implicit none
    private
 
    public :: contact_pair_effect_t, contact_pair_effect
 
-   !> Aux: the element's W, E_abs, D_v, then the supplied work.
-   integer, parameter :: aux_supplied = n_loading_aux + 1
+   !> Aux: the element's W, E_abs, D_v, the friction's work, the supplied work.
+   integer, parameter :: aux_friction = n_loading_aux + 1, aux_supplied = n_loading_aux + 2
 
    type, extends(effect_t) :: contact_pair_effect_t
       integer :: i = 0, k = 0
@@ -38,6 +42,8 @@ module contact_forces
       type(contact_surface_t) :: surface
       type(recurrent_law_t) :: law(1)
       type(loading_memory_t) :: mem(1)
+      real(wp) :: mu = 0.0_wp, xi = 0.0_wp     !< the outer material's friction (D-C22)
+      integer :: slip = 0                      !< sliding along t: -1, 0, +1 (memory, D-C18)
       integer :: max_iter = 60
    contains
       procedure :: add_forces => pair_add_forces
@@ -53,19 +59,21 @@ module contact_forces
    type :: pair_state_t
       type(contact_state_t) :: cs
       type(chain_split_t) :: split
-      real(wp) :: c_in(2) = 0.0_wp, n_in(2) = 0.0_wp   !< C and n, inertial
-      real(wp) :: b_unit(n_dof) = 0.0_wp                !< J_C^T n: the generalized force of a unit P
+      real(wp) :: c_in(2) = 0.0_wp, n_in(2) = 0.0_wp, t_in(2) = 0.0_wp   !< C, n, t, inertial
+      real(wp) :: b_n(n_dof) = 0.0_wp, b_t(n_dof) = 0.0_wp  !< J_C^T n, J_C^T t: of unit forces
+      real(wp) :: p_t = 0.0_wp                              !< P', the friction force
    end type pair_state_t
 
 contains
 
-   !> The pair (i, k) with surface sf (interior frame) and the law of its
-   !! material.
-   function contact_pair_effect(body, i, k, sf, law) result(e)
+   !> The pair (i, k) with surface sf (interior frame), the law of its
+   !! material and its friction mu, xi (0: none).
+   function contact_pair_effect(body, i, k, sf, law, mu, xi) result(e)
       type(body_section_t), intent(in) :: body
       integer, intent(in) :: i, k
       type(contact_surface_t), intent(in) :: sf
       type(recurrent_law_t), intent(in) :: law
+      real(wp), intent(in), optional :: mu, xi
       type(contact_pair_effect_t) :: e
       e%name = 'contact_'//itoa(i)//'_'//itoa(k)
       e%title = 'contact '//itoa(i)//' on '//itoa(k)//' (C.4.f)'
@@ -74,10 +82,12 @@ contains
       e%body = body
       e%surface = sf
       e%law(1) = law
+      if (present(mu)) e%mu = mu
+      if (present(xi)) e%xi = xi
       e%needs_vehicle = .true.
       e%external = .true.
       e%has_energy = .true.
-      e%has_memory = .not. recurrent_is_elastic(law)
+      e%has_memory = .not. recurrent_is_elastic(law) .or. e%mu > 0.0_wp
       e%n_aux = aux_supplied
    end function contact_pair_effect
 
@@ -96,8 +106,13 @@ contains
       s = sin(st%vehicle%pos(3))
       ps%c_in = st%vehicle%pos(1:2) + [c*ps%cs%c(1) + s*ps%cs%c(2), -s*ps%cs%c(1) + c*ps%cs%c(2)]
       ps%n_in = [c*ps%cs%n(1) + s*ps%cs%n(2), -s*ps%cs%n(1) + c*ps%cs%n(2)]
-      if (ps%split%force > 0.0_wp) ps%b_unit = point_force_generalized(this%body, st%z, arc_segment(this%i), &
-                                                                        ps%c_in, ps%n_in)
+      ps%t_in = [c*ps%cs%t(1) + s*ps%cs%t(2), -s*ps%cs%t(1) + c*ps%cs%t(2)]
+      if (.not. ps%split%force > 0.0_wp) return
+      ps%b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
+      ! friction (f.3, f.4): P' = mu P in the direction of sliding held in memory
+      ps%p_t = this%mu*ps%split%force*real(this%slip, wp)
+      if (abs(ps%p_t) > 0.0_wp) ps%b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, &
+                                                                 ps%t_in)
    end function pair_state
 
    pure subroutine pair_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
@@ -115,11 +130,14 @@ contains
          return
       end if
       aux_rate(1:n_loading_aux) = ps%split%aux_rate(:, 1)
-      aux_rate(aux_supplied) = 0.0_wp
+      aux_rate(aux_friction:aux_supplied) = 0.0_wp
       if (.not. ps%split%force > 0.0_wp) return
-      b = b + ps%split%force*ps%b_unit
-      ! the vehicle's work: P (delta' + (J^T n) . z') (the surface moves with it)
-      aux_rate(aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(ps%b_unit, st%zdot))
+      b = b + ps%split%force*ps%b_n - ps%p_t*ps%b_t
+      aux_rate(aux_friction) = ps%p_t*ps%cs%v_t
+      ! the vehicle's work (the surface moves with it): the force's power at
+      ! the body's material point plus what the surface absorbs and dissipates
+      aux_rate(aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(ps%b_n, st%zdot)) &
+                               - ps%p_t*(dot_product(ps%b_t, st%zdot) - ps%cs%v_t)
    end subroutine pair_add_forces
 
    !> The loading cycle (figure 18) from the accepted deformation and rate;
@@ -131,9 +149,17 @@ contains
       type(accept_result_t), intent(inout) :: result
       type(pair_state_t) :: ps
       logical :: changed
+      integer :: slip
       associate (u1 => size(extra) + size(aux))
       end associate
       ps = pair_state(this, st)
+      ! the sliding direction at this accepted state; a change moves the
+      ! friction force only while the contact carries load (D-C18)
+      if (this%mu > 0.0_wp) then
+         slip = slip_of(this%xi, ps%cs%v_t)
+         if (slip /= this%slip .and. ps%split%force > 0.0_wp) result%restart = .true.
+         this%slip = slip
+      end if
       ! out of contact the memory stays (as a slack belt's, belt_accept)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
       call recurrent_accept(this%law(1), this%mem(1), ps%split%x(1), ps%split%rate(1), changed)
@@ -150,7 +176,7 @@ contains
       end associate
       call recurrent_energies(this%law(1), aux(1:n_loading_aux), ce, de)
       e(energy_stored) = ce
-      e(energy_dissipated) = de
+      e(energy_dissipated) = de + aux(aux_friction)
       e(energy_supplied) = aux(aux_supplied)
    end subroutine pair_energy
 
@@ -166,7 +192,7 @@ contains
       if (.not. ps%split%force > 0.0_wp) return
       ! an arc centred on a joint (hip, shoulder, elbow, knee) passes its load on
       ! through the joint: no load across a bone (docs/contacts.md 4.3)
-      call point_force_add(list, arc_segment(this%i), ps%c_in, ps%split%force*ps%n_in, &
+      call point_force_add(list, arc_segment(this%i), ps%c_in, ps%split%force*ps%n_in - ps%p_t*ps%t_in, &
                            across_bone=.not. any(this%i == [1, 5, 6, 7]))
    end subroutine pair_point_forces
 
@@ -175,12 +201,13 @@ contains
       type(output_series_t), allocatable :: series(:)
       allocate (series(2))
       series(1) = series_new('force', 'CONTACT '//itoa(this%i)//' ON SURFACE '//itoa(this%k)//' (C.4.F)', &
-                             'normal force P, penetration delta, its rate, and T, where along the surface it acts ' &
-                             //'(docs/contacts.md)', 1)
-      series(1)%col = [column('P', 'lb'), column('delta', 'in'), column('delta_dot', 'in/s'), column('T', 'in')]
+                             'normal force P, friction force P'' (along -t), penetration delta, its rate, the ' &
+                             //'sliding velocity v_T and T, where along the surface it acts (docs/contacts.md)', 1)
+      series(1)%col = [column('P', 'lb'), column('Pprime', 'lb'), column('delta', 'in'), column('delta_dot', 'in/s'), &
+                       column('v_T', 'in/s'), column('T', 'in')]
       series(2) = series_new('energy', 'CONTACT '//itoa(this%i)//' ON SURFACE '//itoa(this%k)//': ENERGIES (C.6)', &
-                             'stored CE and dissipated DE of the surface material (E6-2), work supplied by the ' &
-                             //'moving vehicle', 3)
+                             'stored CE and dissipated DE of the surface material (E6-2) and the friction, work ' &
+                             //'supplied by the moving vehicle', 3)
       series(2)%col = [column('conserved', 'in*lb'), column('dissipated', 'in*lb'), column('supplied', 'in*lb')]
    end function pair_outputs
 
@@ -194,7 +221,7 @@ contains
       real(wp) :: e(n_energy_kinds)
       if (item == 1) then
          ps = pair_state(this, st)
-         values = [ps%split%force, ps%cs%delta, ps%cs%delta_dot, ps%cs%pos]
+         values = [ps%split%force, ps%p_t, ps%cs%delta, ps%cs%delta_dot, ps%cs%v_t, ps%cs%pos]
       else
          call pair_energy(this, st, extra, aux, e)
          values = e

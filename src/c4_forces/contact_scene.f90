@@ -125,8 +125,11 @@ contains
       allocate (effects(size(pairs)))
       do q = 1, size(pairs)
          call resolved_surface(m%interior, pairs(q)%k, sf, ok)
-         effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
-                                          material_law(m%materials, m%loading, pair_material(m%interior, pairs(q)%k)))
+         associate (l => pair_material(m%interior, pairs(q)%k))
+            effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
+                                             material_law(m%materials, m%loading, l), m%materials%mu(l), &
+                                             m%materials%xi(l))
+         end associate
       end do
    end function scene_contact_effects
 end module contact_scene

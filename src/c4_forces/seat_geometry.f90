@@ -16,6 +16,7 @@ module seat_geometry
    use kinds, only: wp, deg
    use model, only: n_dof, n_seg, hip_x, hip_y
    use effect_base, only: body_state_t, point_force_list_t, point_force_add
+   use dead_band, only: slip_of    ! (the hip slides once |x_1'| reaches xi, A-S4)
    implicit none
    private
 
@@ -212,14 +213,6 @@ contains
       integer, intent(in) :: slip
       f = mu*max(n, 0.0_wp)*real(slip, wp)
    end function hip_friction
-
-   !> The direction the hip slides in: sgn x_1' once |x_1'| reaches xi, 0
-   !! below it and at x_1' = 0 whatever xi (as the joints, D-16).
-   pure integer function slip_of(xi, x1dot)
-      real(wp), intent(in) :: xi, x1dot
-      slip_of = 0
-      if (abs(x1dot) >= xi .and. abs(x1dot) > 0.0_wp) slip_of = int(sign(1.0_wp, x1dot))
-   end function slip_of
 
    !> The power that the vehicle delivers through a seat force f (on the
    !! body, interior components) acting at the interior point p: f . R u,
