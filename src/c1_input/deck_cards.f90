@@ -217,7 +217,9 @@ contains
       t(g_options)%title = 'Program options (C.1)'
       t(g_options)%note = 'NBELT selects the belts (C.4.e): their geometry is *BELTS, their loading ' &
          //'*BELTLOADING, their options *BELTOPTIONS. NLOAD selects the loading curves the deck gives: *LOADPOLY (1) or ' &
-         //'*LOADTABLE (2). NEND = 2 needs contact surfaces, which this version does not model yet.'
+         //'*LOADTABLE (2). NBODY selects the contacts of Tables 7 and 8 among the surfaces *SURFACES describes. ' &
+         //'NEND: 1 time, 2 time or an undesired contact of Table 9 (one must be among the assembled pairs), ' &
+         //'3 time or an injury (a dislocation, or a force of Table 5 past its *INJURY limit), 4 time or rest.'
       call set_fields(t(g_options), [ &
          int_field('NBODY', blank_default, 1, 1, 3, 'occupant: 1 driver, 2 front-seat passenger, 3 rear-seat passenger'), &
          int_field('NBELT', blank_default, 0, 0, 3, 'belts: 0 none, 1 lap, 2 torso, 3 lap and torso (C.4.e)'), &

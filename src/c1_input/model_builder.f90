@@ -21,7 +21,7 @@ module model_builder
       statics_ok, bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    use pulse_csv, only: read_pulse_csv
    use vehicle_motion, only: vehicle_table_differences
-   use contact_tables, only: contact_pair_t, position_pairs, surface_code_valid, surface_name
+   use contact_tables, only: contact_pair_t, position_pairs, surface_code_valid, surface_name, is_undesired
    use contact_scene, only: scene_pairs, pair_material
    use model, only: interior_section_t
    use model, only: model_t, pulse_table_t, stop_curve_t, options_section_t, time_section_t, &
@@ -53,7 +53,7 @@ contains
       allocate (m%warnings(0))
       m%title = ' '
       if (single_card(deck, g_title)) m%title = deck%group(g_title)%card(1)%text
-      call build_options(deck, m%options, m, err)
+      call build_options(deck, m%options)
       call build_time(deck, m%options%nint, m%time, err)
       call build_numerics(deck, m%numerics)
       call build_body(deck, m%body, err)
@@ -71,6 +71,10 @@ contains
       call build_seat(deck, m, err)
       call build_interior(deck, m%options%nbody, m%interior, err)
       if (.not. err%failed()) call check_contact_materials(deck, m, err)
+      if (m%options%nbody /= 1 .and. .not. any(m%interior%given)) call append_string(m%warnings, &
+         located(deck, deck%group(g_options)%card(1), 'NBODY = '//itoa(m%options%nbody)//' (the ' &
+         //trim(merge('front-seat passenger', 'rear-seat passenger ', m%options%nbody == 2))//') selects the ' &
+         //'interior contacts (Tables 7, 8); without *SURFACES it changes nothing'))
    end subroutine build_model
 
    !> D-C14: the surfaces f.2's relations derive from are described, and
@@ -90,6 +94,12 @@ contains
             //itoa(source(q))//' ('//surface_name(source(q))//') by f.2''s relations: describe that one too')
       end do
       pairs = scene_pairs(m)
+      if (m%options%nend == nend_contact) then
+         if (.not. any([(is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k), q=1, size(pairs))])) &
+            call problem(deck, err, deck%group(g_options)%card(1), 'field NEND = 2: the undesired-contact test ' &
+                         //'needs a contact of Table 9 for NBODY '//itoa(m%options%nbody)//' among the pairs the ' &
+                         //'deck''s *SURFACES assemble (docs/contacts.md)')
+      end if
       reported = .false.
       do q = 1, size(pairs)
          k = pairs(q)%k
@@ -195,27 +205,17 @@ contains
       end function surfaces_of
    end subroutine build_interior
 
-   !> *OPTIONS (C.1) and what this version supports of them.
-   subroutine build_options(deck, o, m, err)
+   !> *OPTIONS (C.1). (NEND = 2 needs a contact of Table 9: checked with
+   !! the interior, check_contact_materials.)
+   subroutine build_options(deck, o)
       type(deck_t), intent(in) :: deck
       type(options_section_t), intent(out) :: o
-      type(model_t), intent(inout) :: m
-      type(error_t), intent(inout) :: err
-      type(card_t) :: c
       o%nbody = group_int(deck, g_options, 'NBODY')
       o%nbelt = group_int(deck, g_options, 'NBELT')
       o%nend = group_int(deck, g_options, 'NEND')
       o%nload = group_int(deck, g_options, 'NLOAD')
       o%nout = group_int(deck, g_options, 'NOUT')
       o%nint = group_int(deck, g_options, 'NINT')
-      if (.not. single_card(deck, g_options)) return
-      c = deck%group(g_options)%card(1)
-      if (o%nend == nend_contact) call problem(deck, err, c, 'field NEND = 2: the ' &
-         //'undesired-contact test needs contact surfaces (C.4.f), not implemented in this version')
-      if (o%nbody /= 1) call append_string(m%warnings, located(deck, c, 'NBODY = '//itoa(o%nbody) &
-         //' (the '//trim(merge('front-seat passenger', 'rear-seat passenger ', o%nbody == 2)) &
-         //') changes nothing in this version: the occupant positions select the interior contacts ' &
-         //'(C.4.f), which do not exist yet'))
    end subroutine build_options
 
    !> *TIME (C.3, C.6, C.7).

@@ -19,7 +19,8 @@ module contact_forces
    use strings, only: itoa, num
    use model, only: body_section_t, n_dof
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
-      energy_supplied, n_energy_kinds, point_force_list_t, point_force_add
+      energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
+      max_events_per_step
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
@@ -44,6 +45,11 @@ module contact_forces
       type(loading_memory_t) :: mem(1)
       real(wp) :: mu = 0.0_wp, xi = 0.0_wp     !< the outer material's friction (D-C22)
       integer :: slip = 0                      !< sliding along t: -1, 0, +1 (memory, D-C18)
+      !> Table 9: a contact the end test NEND = 2 watches; it counts when the
+      !! pair comes into contact at an accepted step, not when it is loaded
+      !! at the start (D-C28)
+      logical :: undesired = .false.
+      logical :: accepted_once = .false., was_loaded = .false.
       integer :: max_iter = 60
    contains
       procedure :: add_forces => pair_add_forces
@@ -68,12 +74,13 @@ contains
 
    !> The pair (i, k) with surface sf (interior frame), the law of its
    !! material and its friction mu, xi (0: none).
-   function contact_pair_effect(body, i, k, sf, law, mu, xi) result(e)
+   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired) result(e)
       type(body_section_t), intent(in) :: body
       integer, intent(in) :: i, k
       type(contact_surface_t), intent(in) :: sf
       type(recurrent_law_t), intent(in) :: law
       real(wp), intent(in), optional :: mu, xi
+      logical, intent(in), optional :: undesired
       type(contact_pair_effect_t) :: e
       e%name = 'contact_'//itoa(i)//'_'//itoa(k)
       e%title = 'contact '//itoa(i)//' on '//itoa(k)//' (C.4.f)'
@@ -84,10 +91,11 @@ contains
       e%law(1) = law
       if (present(mu)) e%mu = mu
       if (present(xi)) e%xi = xi
+      if (present(undesired)) e%undesired = undesired
       e%needs_vehicle = .true.
       e%external = .true.
       e%has_energy = .true.
-      e%has_memory = .not. recurrent_is_elastic(law) .or. e%mu > 0.0_wp
+      e%has_memory = .not. recurrent_is_elastic(law) .or. e%mu > 0.0_wp .or. e%undesired
       e%n_aux = aux_supplied
    end function contact_pair_effect
 
@@ -153,6 +161,17 @@ contains
       associate (u1 => size(extra) + size(aux))
       end associate
       ps = pair_state(this, st)
+      ! Table 9 (C.7): coming into contact (D-C28)
+      if (this%undesired) then
+         if (this%accepted_once .and. .not. this%was_loaded .and. ps%split%force > 0.0_wp .and. &
+             result%n_events < max_events_per_step) then
+            result%n_events = result%n_events + 1
+            result%events(result%n_events) = event_t(t=st%t, kind=event_undesired, index=this%i, &
+                                                     value=ps%split%force, surface=this%k)
+         end if
+         this%was_loaded = ps%split%force > 0.0_wp
+         this%accepted_once = .true.
+      end if
       ! the sliding direction at this accepted state; a change moves the
       ! friction force only while the contact carries load (D-C18)
       if (this%mu > 0.0_wp) then

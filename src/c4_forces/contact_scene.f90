@@ -9,7 +9,7 @@ module contact_scene
    use kinds, only: wp, pi
    use model, only: model_t, interior_section_t
    use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle, surface_point
-   use contact_tables, only: contact_pair_t, position_pairs, surface_materials
+   use contact_tables, only: contact_pair_t, position_pairs, surface_materials, is_undesired
    use contact_forces, only: contact_pair_effect_t, contact_pair_effect
    use recurrent_loading, only: material_law
    implicit none
@@ -128,7 +128,7 @@ contains
          associate (l => pair_material(m%interior, pairs(q)%k))
             effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
                                              material_law(m%materials, m%loading, l), m%materials%mu(l), &
-                                             m%materials%xi(l))
+                                             m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k))
          end associate
       end do
    end function scene_contact_effects

@@ -31,7 +31,7 @@ module effect_base
    public :: effect_t, effect_slot_t, body_state_t, event_t, accept_result_t
    public :: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    public :: event_dislocation_low, event_dislocation_high, event_kind_name, max_events_per_step
-   public :: event_tension, event_compression, event_shear
+   public :: event_tension, event_compression, event_shear, event_undesired
    public :: point_force_t, point_force_list_t, point_force_add
 
    !> Kinds of energy an effect reports (C.6): stored in a conservative
@@ -45,9 +45,11 @@ module effect_base
    integer, parameter :: event_dislocation_low = 1, event_dislocation_high = 2
    !> Table 5's force criteria (force_injuries): joint j, bone i
    integer, parameter :: event_tension = 3, event_compression = 4, event_shear = 5
-   character(len=28), parameter :: event_kind_name(5) = [character(len=28) :: &
+   !> Table 9's undesired contact of body point `index` with surface `surface` (C.7, NEND = 2)
+   integer, parameter :: event_undesired = 6
+   character(len=28), parameter :: event_kind_name(6) = [character(len=28) :: &
       'dislocation (below limit)', 'dislocation (above limit)', 'tension dislocation', 'compression fracture', &
-      'shear fracture']
+      'shear fracture', 'undesired contact']
    !> Events one effect may report at one accepted step.
    integer, parameter :: max_events_per_step = 16
 
@@ -73,6 +75,7 @@ module effect_base
       real(wp) :: limit = 0.0_wp    !< the limit it passed
       logical :: injury = .false.   !< counts for the injury end test (C.7)
       integer :: occupant = 1
+      integer :: surface = 0        !< the surface k of a contact event
    end type event_t
 
    !> A force from outside the body (gravity, seat, belt, contact) on one

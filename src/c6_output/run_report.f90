@@ -27,7 +27,8 @@ module run_report
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
-   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear
+   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired
+   use contact_tables, only: surface_name
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t
    use force_injuries, only: fc_defined, fs_defined, fc_name, fs_name
    use acceleration_criteria, only: hic_result_t
@@ -902,6 +903,9 @@ contains
             case (event_tension)
                line = head//' joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': force' &
                       //fixed(e%value, 10, 1)//' lb, limit'//fixed(e%limit, 10, 1)//' lb'
+            case (event_undesired)
+               line = head//' point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
+                      //'): undesired contact (Table 9), force'//fixed(e%value, 10, 1)//' lb'
             case (event_compression, event_shear)
                line = head//' bone '//merge(fc_name(e%index), fs_name(e%index), e%kind == event_compression) &
                       //'  '//trim(event_kind_name(e%kind))//': force'//fixed(e%value, 10, 1)//' lb, limit' &

@@ -1,20 +1,20 @@
 !> Report C.7, the end-of-program tests: time (always), time + injury,
-!! and time + cessation of body motion relative to the vehicle. (Time +
-!! undesired contact needs the contacts of C.4.f.) A run also ends when it
+!! time + undesired contact (Table 9, the contacts' events), and time +
+!! cessation of body motion relative to the vehicle. A run also ends when it
 !! fails numerically or when its energy balance fails (*NUMERICS EBFAIL).
 module end_tests
    use kinds, only: wp
-   use model, only: body_section_t, end_tests_section_t, n_dof, n_seg, n_joint, nend_injury, nend_rest
+   use model, only: body_section_t, end_tests_section_t, n_dof, n_seg, n_joint, nend_injury, nend_rest, nend_contact
    use body_kinematics, only: point_state_t, joint_state, to_interior
    use vehicle_motion, only: vehicle_state_t
    implicit none
    private
 
-   public :: end_state_t, end_none, end_time, end_injury, end_rest, end_failure, end_energy
+   public :: end_state_t, end_none, end_time, end_injury, end_rest, end_failure, end_energy, end_contact
    public :: end_reason_text, end_test_update, body_at_rest
 
    integer, parameter :: end_none = 0, end_time = 1, end_injury = 2, end_rest = 3, end_failure = 4, &
-      end_energy = 5
+      end_energy = 5, end_contact = 6
 
    !> Memory of the rest test: when the body came to rest (negative: moving).
    type :: end_state_t
@@ -28,7 +28,8 @@ contains
       character(len=:), allocatable :: text
       select case (reason)
       case (end_time);    text = 'time: TMAX reached'
-      case (end_injury);  text = 'injury: a joint dislocated (NEND = 3)'
+      case (end_injury);  text = 'injury (NEND = 3)'
+      case (end_contact); text = 'undesired contact (NEND = 2, Table 9)'
       case (end_rest);    text = 'rest: body motion relative to the vehicle ceased (NEND = 4)'
       case (end_failure); text = 'numerical failure'
       case (end_energy);  text = 'numerical failure: the energy balance exceeded its tolerance (*NUMERICS EBTOL)'
@@ -60,15 +61,20 @@ contains
 
    !> After an accepted step: the end reason, or end_none to go on.
    !! t_max is checked by the driver (it knows the step count).
-   pure subroutine end_test_update(nend, et, state, t, injured, at_rest, reason)
+   pure subroutine end_test_update(nend, et, state, t, injured, at_rest, reason, undesired)
       integer, intent(in) :: nend
       type(end_tests_section_t), intent(in) :: et
       type(end_state_t), intent(inout) :: state
       real(wp), intent(in) :: t
       logical, intent(in) :: injured, at_rest
       integer, intent(out) :: reason
+      logical, intent(in), optional :: undesired   !< a Table 9 contact began at this step
       reason = end_none
       select case (nend)
+      case (nend_contact)
+         if (present(undesired)) then
+            if (undesired) reason = end_contact
+         end if
       case (nend_injury)
          if (injured) reason = end_injury
       case (nend_rest)

@@ -19,7 +19,7 @@ module simulation
    use adams_moulton, only: am_stepper_t, am_start_euler, am_start_rk4
    use dormand_prince, only: dopri_stepper_t
    use effect_base, only: body_state_t, accept_result_t, event_t, event_tension, event_compression, event_shear, &
-      point_force_list_t
+      point_force_list_t, event_undesired
    use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined
    use joint_coupling, only: relative_angle
    use output_calc, only: head_chest_acceleration
@@ -250,10 +250,11 @@ contains
          type(accept_result_t) :: ar
          real(wp) :: a_head, a_chest, delta
          integer :: k, q, j, occ_i, xo, ao, restart_status
-         logical :: at_rest, injured, restart
+         logical :: at_rest, injured, restart, undesired
 
          restart = .false.
          injured = .false.
+         undesired = .false.
          at_rest = .true.
          do occ_i = 1, n_occ
             associate (occ => sys%occupants(occ_i), os => summary%occ(occ_i))
@@ -275,6 +276,7 @@ contains
                   do j = 1, ar%n_events
                      ar%events(j)%occupant = occ_i
                      injured = injured .or. ar%events(j)%injury
+                     undesired = undesired .or. ar%events(j)%kind == event_undesired
                      call summary_add_event(summary, ar%events(j))
                      if (present(sink) .and. .not. out_err%failed()) call sink%event(ar%events(j), out_err)
                   end do
@@ -296,7 +298,7 @@ contains
          end do
          if (summary%n_events > 0) injured = injured .or. any(summary%events(1:summary%n_events)%injury)
          call end_test_update(m%options%nend, m%end_tests, end_state, t_now, injured, &
-                              m%options%nend == nend_rest .and. at_rest, reason_out)
+                              m%options%nend == nend_rest .and. at_rest, reason_out, undesired)
          if (restart .and. reason_out == end_none .and. .not. last) then
             ! the derivative at the accepted point is kept, for the frame of a
             ! restart that fails

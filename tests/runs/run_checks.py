@@ -10,7 +10,7 @@ Usage: run_checks.py HSRI2D DECK_DIRECTORY WORK_DIRECTORY
 - No number in any listing is printed as asterisks, and no line of any
   listing (every shipped deck, with NOUT = 3 too) is wider than 132 columns.
 - NBODY = 2 warns, on standard error and in the listing, that the occupant
-  positions change nothing yet (the body-only deck).
+  position changes nothing without *SURFACES (the body-only deck).
 """
 import os
 import re
@@ -118,7 +118,7 @@ for deck in sorted(os.listdir(decks)):
         for problem in listing_problems(out):
             fail(problem)
 
-# 3. an option that changes nothing yet says so
+# 3. an option that changes nothing here says so
 write("passenger.deck", "*OPTIONS\n" + card(2, 0, 1, 1, 2, 2))
 p = run(body_only, "passenger.deck", "-o", "passenger.lst")
 if p.returncode != 0:
