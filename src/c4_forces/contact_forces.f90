@@ -20,7 +20,7 @@ module contact_forces
    use model, only: body_section_t, n_dof
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
       energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
-      max_events_per_step
+      max_events_per_step, event_shatter, event_cut
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
@@ -50,6 +50,13 @@ module contact_forces
       !! at the start (D-C28)
       logical :: undesired = .false.
       logical :: accepted_once = .false., was_loaded = .false.
+      !> the windshield (D-C24, D-C25): glass shatters at an accepted state
+      !! whose P reaches fsw, and from then on carries nothing; its stored
+      !! energy moves to the switch account (dissipated); a head through the
+      !! broken glass is cut, once per episode of contact
+      real(wp) :: fsw = 0.0_wp                  !< 0: never shatters
+      logical :: shattered = .false., cutting = .false.
+      real(wp) :: e_switch = 0.0_wp
       integer :: max_iter = 60
    contains
       procedure :: add_forces => pair_add_forces
@@ -74,13 +81,14 @@ contains
 
    !> The pair (i, k) with surface sf (interior frame), the law of its
    !! material and its friction mu, xi (0: none).
-   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired) result(e)
+   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired, fsw) result(e)
       type(body_section_t), intent(in) :: body
       integer, intent(in) :: i, k
       type(contact_surface_t), intent(in) :: sf
       type(recurrent_law_t), intent(in) :: law
       real(wp), intent(in), optional :: mu, xi
       logical, intent(in), optional :: undesired
+      real(wp), intent(in), optional :: fsw
       type(contact_pair_effect_t) :: e
       e%name = 'contact_'//itoa(i)//'_'//itoa(k)
       e%title = 'contact '//itoa(i)//' on '//itoa(k)//' (C.4.f)'
@@ -92,10 +100,11 @@ contains
       if (present(mu)) e%mu = mu
       if (present(xi)) e%xi = xi
       if (present(undesired)) e%undesired = undesired
+      if (present(fsw)) e%fsw = fsw
       e%needs_vehicle = .true.
       e%external = .true.
       e%has_energy = .true.
-      e%has_memory = .not. recurrent_is_elastic(law) .or. e%mu > 0.0_wp .or. e%undesired
+      e%has_memory = .not. recurrent_is_elastic(law) .or. e%mu > 0.0_wp .or. e%undesired .or. e%fsw > 0.0_wp
       e%n_aux = aux_supplied
    end function contact_pair_effect
 
@@ -108,8 +117,13 @@ contains
       real(wp) :: c, s
       f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i)
       ps%cs = contact_check(f, this%surface)
-      ! delta <= 0 is slack: the split gives no force (a contact never pulls)
-      call chain_split(1, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split)
+      ! delta <= 0 is slack: the split gives no force (a contact never pulls);
+      ! broken glass carries nothing (D-C24)
+      if (this%shattered) then
+         call chain_split(1, this%law, this%mem, -1.0_wp, 0.0_wp, this%max_iter, ps%split)
+      else
+         call chain_split(1, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split)
+      end if
       c = cos(st%vehicle%pos(3))
       s = sin(st%vehicle%pos(3))
       ps%c_in = st%vehicle%pos(1:2) + [c*ps%cs%c(1) + s*ps%cs%c(2), -s*ps%cs%c(1) + c*ps%cs%c(2)]
@@ -158,19 +172,31 @@ contains
       type(pair_state_t) :: ps
       logical :: changed
       integer :: slip
+      real(wp) :: ce, de
       associate (u1 => size(extra) + size(aux))
       end associate
       ps = pair_state(this, st)
       ! Table 9 (C.7): coming into contact (D-C28)
       if (this%undesired) then
-         if (this%accepted_once .and. .not. this%was_loaded .and. ps%split%force > 0.0_wp .and. &
-             result%n_events < max_events_per_step) then
-            result%n_events = result%n_events + 1
-            result%events(result%n_events) = event_t(t=st%t, kind=event_undesired, index=this%i, &
-                                                     value=ps%split%force, surface=this%k)
-         end if
+         if (this%accepted_once .and. .not. this%was_loaded .and. ps%split%force > 0.0_wp) &
+            call add_event(event_t(t=st%t, kind=event_undesired, index=this%i, value=ps%split%force, surface=this%k))
          this%was_loaded = ps%split%force > 0.0_wp
          this%accepted_once = .true.
+      end if
+      ! the windshield (D-C24, D-C25): shattered at an accepted state whose force
+      ! reaches FSW (never by a trial state); then a head through it is cut
+      if (this%fsw > 0.0_wp .and. .not. this%shattered .and. ps%split%force >= this%fsw) then
+         this%shattered = .true.
+         call recurrent_energies(this%law(1), aux(1:n_loading_aux), ce, de)
+         this%e_switch = ce                       ! the glass's stored energy, released
+         result%restart = .true.
+         call add_event(event_t(t=st%t, kind=event_shatter, index=this%i, value=ps%split%force, limit=this%fsw, &
+                                surface=this%k))
+      end if
+      if (this%shattered) then
+         if (ps%cs%delta > 0.0_wp .and. .not. this%cutting) call add_event(event_t(t=st%t, kind=event_cut, &
+            index=this%i, value=ps%cs%delta, injury=.true., surface=this%k))
+         this%cutting = ps%cs%delta > 0.0_wp
       end if
       ! the sliding direction at this accepted state; a change moves the
       ! friction force only while the contact carries load (D-C18)
@@ -183,6 +209,13 @@ contains
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
       call recurrent_accept(this%law(1), this%mem(1), ps%split%x(1), ps%split%rate(1), changed)
       result%restart = result%restart .or. changed
+   contains
+      subroutine add_event(ev)
+         type(event_t), intent(in) :: ev
+         if (result%n_events >= max_events_per_step) return
+         result%n_events = result%n_events + 1
+         result%events(result%n_events) = ev
+      end subroutine add_event
    end subroutine pair_accept
 
    pure subroutine pair_energy(this, st, extra, aux, e)
@@ -194,8 +227,8 @@ contains
       associate (u1 => st%t, u2 => size(extra))
       end associate
       call recurrent_energies(this%law(1), aux(1:n_loading_aux), ce, de)
-      e(energy_stored) = ce
-      e(energy_dissipated) = de + aux(aux_friction)
+      e(energy_stored) = ce - this%e_switch
+      e(energy_dissipated) = de + aux(aux_friction) + this%e_switch
       e(energy_supplied) = aux(aux_supplied)
    end subroutine pair_energy
 

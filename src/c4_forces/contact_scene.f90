@@ -128,7 +128,8 @@ contains
          associate (l => pair_material(m%interior, pairs(q)%k))
             effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
                                              material_law(m%materials, m%loading, l), m%materials%mu(l), &
-                                             m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k))
+                                             m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k), &
+                                             merge(m%materials%fsw, 0.0_wp, l == 2))
          end associate
       end do
    end function scene_contact_effects

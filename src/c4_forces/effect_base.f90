@@ -31,7 +31,7 @@ module effect_base
    public :: effect_t, effect_slot_t, body_state_t, event_t, accept_result_t
    public :: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    public :: event_dislocation_low, event_dislocation_high, event_kind_name, max_events_per_step
-   public :: event_tension, event_compression, event_shear, event_undesired
+   public :: event_tension, event_compression, event_shear, event_undesired, event_shatter, event_cut
    public :: point_force_t, point_force_list_t, point_force_add
 
    !> Kinds of energy an effect reports (C.6): stored in a conservative
@@ -47,9 +47,11 @@ module effect_base
    integer, parameter :: event_tension = 3, event_compression = 4, event_shear = 5
    !> Table 9's undesired contact of body point `index` with surface `surface` (C.7, NEND = 2)
    integer, parameter :: event_undesired = 6
-   character(len=28), parameter :: event_kind_name(6) = [character(len=28) :: &
+   !> The windshield shattered (FSW reached), and the head cut on its broken glass (an injury)
+   integer, parameter :: event_shatter = 7, event_cut = 8
+   character(len=28), parameter :: event_kind_name(8) = [character(len=28) :: &
       'dislocation (below limit)', 'dislocation (above limit)', 'tension dislocation', 'compression fracture', &
-      'shear fracture', 'undesired contact']
+      'shear fracture', 'undesired contact', 'windshield shattered', 'cut on broken glass']
    !> Events one effect may report at one accepted step.
    integer, parameter :: max_events_per_step = 16
 

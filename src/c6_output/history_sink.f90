@@ -11,7 +11,8 @@ module history_sink
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
-   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired
+   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired, &
+      event_shatter, event_cut
    use force_injuries, only: fc_defined, fs_defined
    use run_summary, only: run_summary_t
    use acceleration_criteria, only: hic_result_t
@@ -114,6 +115,8 @@ contains
       case (event_compression, event_shear)
          write (text, '(a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of bone ', e%index, ': force ', &
             e%value, ' lb'
+      case (event_shatter, event_cut)
+         write (text, '(a,i0,a,es12.5)') trim(event_kind_name(e%kind))//', body point ', e%index, ': ', e%value
       case (event_undesired)
          write (text, '(a,i0,a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of body point ', e%index, &
             ' with surface ', e%surface, ': force ', e%value, ' lb'

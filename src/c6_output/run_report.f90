@@ -27,7 +27,8 @@ module run_report
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
-   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired
+   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired, &
+      event_shatter, event_cut
    use contact_tables, only: surface_name
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t
    use force_injuries, only: fc_defined, fs_defined, fc_name, fs_name
@@ -903,6 +904,12 @@ contains
             case (event_tension)
                line = head//' joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': force' &
                       //fixed(e%value, 10, 1)//' lb, limit'//fixed(e%limit, 10, 1)//' lb'
+            case (event_shatter)
+               line = head//' windshield shattered by point '//arc_name(e%index)//': force'//fixed(e%value, 10, 1) &
+                      //' lb, FSW'//fixed(e%limit, 10, 1)//' lb'
+            case (event_cut)
+               line = head//' point '//arc_name(e%index)//' cut on the broken windshield: penetration' &
+                      //fixed(e%value, 9, 3)//' in'
             case (event_undesired)
                line = head//' point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
                       //'): undesired contact (Table 9), force'//fixed(e%value, 10, 1)//' lb'
