@@ -93,6 +93,7 @@ contains
             g_surfaces, 'surface '//itoa(derived(q))//' ('//surface_name(derived(q))//') follows from surface ' &
             //itoa(source(q))//' ('//surface_name(source(q))//') by f.2''s relations: describe that one too')
       end do
+      allocate (pairs(0))      ! (realloc on assignment: a descriptor set first)
       pairs = scene_pairs(m)
       if (m%options%nend == nend_contact) then
          if (.not. any([(is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k), q=1, size(pairs))])) &
@@ -157,6 +158,7 @@ contains
          if (card_given(deck, g_interior, deck%group(g_interior)%card(1), 'DS')) &
             it%ds = group_value(deck, g_interior, 'DS')
       end if
+      allocate (pairs(0))
       pairs = position_pairs(nbody)
       allocate (it%off(2, 0))
       associate (g => deck%group(g_contactoff))
