@@ -22,7 +22,7 @@ module model_builder
    use pulse_csv, only: read_pulse_csv
    use vehicle_motion, only: vehicle_table_differences
    use contact_tables, only: contact_pair_t, position_pairs, surface_code_valid, surface_name, is_undesired
-   use contact_scene, only: scene_pairs, pair_material
+   use contact_scene, only: scene_pairs, pair_material, backing_material
    use model, only: interior_section_t
    use model, only: model_t, pulse_table_t, stop_curve_t, options_section_t, time_section_t, &
       numerics_section_t, body_section_t, joints_section_t, injury_section_t, vehicle_section_t, &
@@ -85,7 +85,7 @@ contains
       type(model_t), intent(in) :: m
       type(error_t), intent(inout) :: err
       type(contact_pair_t), allocatable :: pairs(:)
-      integer :: q, l, k
+      integer :: q, l, k, lb
       integer, parameter :: derived(4) = [4, 10, 11, 12], source(4) = [2, 8, 2, 6]
       logical :: reported(32)
       do q = 1, 4
@@ -104,12 +104,22 @@ contains
       reported = .false.
       do q = 1, size(pairs)
          k = pairs(q)%k
+         if (reported(k)) cycle
          l = pair_material(m%interior, k)
-         if (m%loading%material_curve(l) > 0 .or. reported(k)) cycle
-         reported(k) = .true.
-         call problem_at(deck, err, g_surfaces, 'surface '//itoa(k)//' (' &
-            //surface_name(k)//'): its material '//itoa(l)//' has no loading curve (*MATERIALS CURVE), so the ' &
-            //'contact of body point '//itoa(pairs(q)%i)//' with it would be rigid')
+         lb = backing_material(m%interior, k)
+         if (m%loading%material_curve(l) == 0) then
+            reported(k) = .true.
+            call problem_at(deck, err, g_surfaces, 'surface '//itoa(k)//' (' &
+               //surface_name(k)//'): its material '//itoa(l)//' has no loading curve (*MATERIALS CURVE), so the ' &
+               //'contact of body point '//itoa(pairs(q)%i)//' with it would be rigid')
+         else if (lb > 0) then
+            if (m%loading%material_curve(lb) == 0) then
+               reported(k) = .true.
+               call problem_at(deck, err, g_surfaces, 'surface '//itoa(k)//' ('//surface_name(k)//'): its ' &
+                  //'padding bottoms out at ETA*DPP onto material '//itoa(lb)//', which has no loading curve ' &
+                  //'(*MATERIALS CURVE): give it one, or DPP = 0 for no padding')
+            end if
+         end if
       end do
    end subroutine check_contact_materials
 

@@ -346,7 +346,10 @@ contains
    !! start for the search's unknown (split%guess of a nearby state, e.g.
    !! integrated with the motion from split%guess_rate); the result does not
    !! depend on it beyond the tolerance, only the number of iterations does.
-   pure subroutine chain_split(n, law, mem, s, s_dot, max_iter, split, guess)
+   !! cap (two elements; > 0 where given): an element that bottoms out at
+   !! deformation cap (a contact's padding, figure 25, D-C19): there its
+   !! graph turns vertical and the other element takes the rest.
+   pure subroutine chain_split(n, law, mem, s, s_dot, max_iter, split, guess, cap)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
@@ -354,6 +357,7 @@ contains
       integer, intent(in) :: max_iter
       type(chain_split_t), intent(out) :: split
       real(wp), intent(in), optional :: guess
+      real(wp), intent(in), optional :: cap(:)
       real(wp) :: z(max_chain), zsum, slope(max_chain), w(max_chain), fv(max_chain), fv_chain, lambda
       logical :: loading(max_chain)
       integer :: i
@@ -402,7 +406,13 @@ contains
          end associate
          split%iterations = 1
       case (2)
-         call pair_split(law, mem, s, z, max_iter, split, slope, loading, guess)
+         if (present(cap)) then
+            call capped_split(cap(1:2), split, slope, loading)
+         else
+            split%status = split_ok
+            split%iterations = -1
+         end if
+         if (split%iterations < 0) call pair_split(law, mem, s, z, max_iter, split, slope, loading, guess)
       case default
          call chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess)
       end select
@@ -446,6 +456,38 @@ contains
          if (loading(i) .and. split%rate(i) > 0.0_wp) split%aux_rate(aux_absorbed, i) = split%branch*split%rate(i)
          split%aux_rate(aux_rate_work, i) = lambda*fv(i)*split%rate(i)
       end do
+   contains
+      !> Figure 25: element i bottomed out at cap(i) when the other, at s -
+      !! cap(i), carries at least the force i has there; iterations = -1
+      !! when no cap acts (the ordinary search follows).
+      pure subroutine capped_split(cap2, sp, slope2, loading2)
+         real(wp), intent(in) :: cap2(2)
+         type(chain_split_t), intent(inout) :: sp
+         real(wp), intent(out) :: slope2(:)
+         logical, intent(out) :: loading2(:)
+         type(branch_point_t) :: bi, bj
+         integer :: ic, jc
+         sp%iterations = -1
+         do ic = 1, 2
+            if (.not. cap2(ic) > 0.0_wp) cycle
+            jc = 3 - ic
+            if (.not. s - cap2(ic) > z(jc)) cycle
+            bi = branch_at(law(ic), mem(ic), cap2(ic))
+            bj = branch_at(law(jc), mem(jc), s - cap2(ic))
+            if (bj%force < bi%force) cycle
+            sp%x(ic) = cap2(ic)
+            sp%x(jc) = s - cap2(ic)
+            sp%branch = bj%force
+            slope2(ic) = rigid_slope
+            loading2(ic) = .false.
+            slope2(jc) = bj%slope
+            loading2(jc) = bj%loading
+            sp%iterations = 2
+            return
+         end do
+         slope2 = 0.0_wp
+         loading2 = .false.
+      end subroutine capped_split
    end subroutine chain_split
 
    !> No deformation, rate or work in the chain's n elements.

@@ -34,15 +34,20 @@ module contact_forces
 
    public :: contact_pair_effect_t, contact_pair_effect
 
-   !> Aux: the element's W, E_abs, D_v, the friction's work, the supplied work.
-   integer, parameter :: aux_friction = n_loading_aux + 1, aux_supplied = n_loading_aux + 2
 
    type, extends(effect_t) :: contact_pair_effect_t
       integer :: i = 0, k = 0
       type(body_section_t) :: body
       type(contact_surface_t) :: surface
-      type(recurrent_law_t) :: law(1)
-      type(loading_memory_t) :: mem(1)
+      !> the surface's elements in series, outer first (Table 10): one, or a
+      !! padding (or mat) that bottoms out at cap = eta D'' and its backing
+      !! (figure 25, D-C19)
+      integer :: n_elem = 1
+      type(recurrent_law_t) :: law(2)
+      type(loading_memory_t) :: mem(2)
+      real(wp) :: cap(2) = 0.0_wp
+      !> aux: each element's W, E_abs, D_v, then the friction's work and the supplied work
+      integer :: aux_friction = 0, aux_supplied = 0
       real(wp) :: mu = 0.0_wp, xi = 0.0_wp     !< the outer material's friction (D-C22)
       integer :: slip = 0                      !< sliding along t: -1, 0, +1 (memory, D-C18)
       !> Table 9: a contact the end test NEND = 2 watches; it counts when the
@@ -81,7 +86,7 @@ contains
 
    !> The pair (i, k) with surface sf (interior frame), the law of its
    !! material and its friction mu, xi (0: none).
-   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired, fsw) result(e)
+   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired, fsw, backing, cap) result(e)
       type(body_section_t), intent(in) :: body
       integer, intent(in) :: i, k
       type(contact_surface_t), intent(in) :: sf
@@ -89,6 +94,8 @@ contains
       real(wp), intent(in), optional :: mu, xi
       logical, intent(in), optional :: undesired
       real(wp), intent(in), optional :: fsw
+      type(recurrent_law_t), intent(in), optional :: backing   !< behind a padding that bottoms out
+      real(wp), intent(in), optional :: cap                    !< the padding's bottoming depth eta D''
       type(contact_pair_effect_t) :: e
       e%name = 'contact_'//itoa(i)//'_'//itoa(k)
       e%title = 'contact '//itoa(i)//' on '//itoa(k)//' (C.4.f)'
@@ -97,6 +104,11 @@ contains
       e%body = body
       e%surface = sf
       e%law(1) = law
+      if (present(backing)) then
+         e%n_elem = 2
+         e%law(2) = backing
+         if (present(cap)) e%cap(1) = cap
+      end if
       if (present(mu)) e%mu = mu
       if (present(xi)) e%xi = xi
       if (present(undesired)) e%undesired = undesired
@@ -105,7 +117,10 @@ contains
       e%external = .true.
       e%has_energy = .true.
       e%has_memory = .not. recurrent_is_elastic(law) .or. e%mu > 0.0_wp .or. e%undesired .or. e%fsw > 0.0_wp
-      e%n_aux = aux_supplied
+      if (e%n_elem == 2) e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%law(2))
+      e%aux_friction = n_loading_aux*e%n_elem + 1
+      e%aux_supplied = e%aux_friction + 1
+      e%n_aux = e%aux_supplied
    end function contact_pair_effect
 
    !> The contact's geometry (figure 22), force split and virtual work at st.
@@ -120,7 +135,9 @@ contains
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
-         call chain_split(1, this%law, this%mem, -1.0_wp, 0.0_wp, this%max_iter, ps%split)
+         call chain_split(this%n_elem, this%law, this%mem, -1.0_wp, 0.0_wp, this%max_iter, ps%split)
+      else if (this%n_elem == 2) then
+         call chain_split(2, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split, cap=this%cap)
       else
          call chain_split(1, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split)
       end if
@@ -144,6 +161,7 @@ contains
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: extra_rate(:), aux_rate(:)
       type(pair_state_t) :: ps
+      integer :: q
       associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
       end associate
       ps = pair_state(this, st)
@@ -151,14 +169,16 @@ contains
          aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)
          return
       end if
-      aux_rate(1:n_loading_aux) = ps%split%aux_rate(:, 1)
-      aux_rate(aux_friction:aux_supplied) = 0.0_wp
+      do q = 1, this%n_elem
+         aux_rate(n_loading_aux*(q - 1) + 1:n_loading_aux*q) = ps%split%aux_rate(:, q)
+      end do
+      aux_rate(this%aux_friction:this%aux_supplied) = 0.0_wp
       if (.not. ps%split%force > 0.0_wp) return
       b = b + ps%split%force*ps%b_n - ps%p_t*ps%b_t
-      aux_rate(aux_friction) = ps%p_t*ps%cs%v_t
+      aux_rate(this%aux_friction) = ps%p_t*ps%cs%v_t
       ! the vehicle's work (the surface moves with it): the force's power at
       ! the body's material point plus what the surface absorbs and dissipates
-      aux_rate(aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(ps%b_n, st%zdot)) &
+      aux_rate(this%aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(ps%b_n, st%zdot)) &
                                - ps%p_t*(dot_product(ps%b_t, st%zdot) - ps%cs%v_t)
    end subroutine pair_add_forces
 
@@ -171,8 +191,7 @@ contains
       type(accept_result_t), intent(inout) :: result
       type(pair_state_t) :: ps
       logical :: changed
-      integer :: slip
-      real(wp) :: ce, de
+      integer :: slip, q
       associate (u1 => size(extra) + size(aux))
       end associate
       ps = pair_state(this, st)
@@ -187,8 +206,7 @@ contains
       ! reaches FSW (never by a trial state); then a head through it is cut
       if (this%fsw > 0.0_wp .and. .not. this%shattered .and. ps%split%force >= this%fsw) then
          this%shattered = .true.
-         call recurrent_energies(this%law(1), aux(1:n_loading_aux), ce, de)
-         this%e_switch = ce                       ! the glass's stored energy, released
+         this%e_switch = stored_energy(this, aux)   ! the glass's stored energy, released
          result%restart = .true.
          call add_event(event_t(t=st%t, kind=event_shatter, index=this%i, value=ps%split%force, limit=this%fsw, &
                                 surface=this%k))
@@ -207,8 +225,10 @@ contains
       end if
       ! out of contact the memory stays (as a slack belt's, belt_accept)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
-      call recurrent_accept(this%law(1), this%mem(1), ps%split%x(1), ps%split%rate(1), changed)
-      result%restart = result%restart .or. changed
+      do q = 1, this%n_elem
+         call recurrent_accept(this%law(q), this%mem(q), ps%split%x(q), ps%split%rate(q), changed)
+         result%restart = result%restart .or. changed
+      end do
    contains
       subroutine add_event(ev)
          type(event_t), intent(in) :: ev
@@ -224,13 +244,32 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(out) :: e(n_energy_kinds)
       real(wp) :: ce, de
+      integer :: q
       associate (u1 => st%t, u2 => size(extra))
       end associate
-      call recurrent_energies(this%law(1), aux(1:n_loading_aux), ce, de)
-      e(energy_stored) = ce - this%e_switch
-      e(energy_dissipated) = de + aux(aux_friction) + this%e_switch
-      e(energy_supplied) = aux(aux_supplied)
+      e = 0.0_wp
+      do q = 1, this%n_elem
+         call recurrent_energies(this%law(q), aux(n_loading_aux*(q - 1) + 1:n_loading_aux*q), ce, de)
+         e(energy_stored) = e(energy_stored) + ce
+         e(energy_dissipated) = e(energy_dissipated) + de
+      end do
+      e(energy_stored) = e(energy_stored) - this%e_switch
+      e(energy_dissipated) = e(energy_dissipated) + aux(this%aux_friction) + this%e_switch
+      e(energy_supplied) = aux(this%aux_supplied)
    end subroutine pair_energy
+
+   !> The elements' stored energy (E6-2), before any switch.
+   pure real(wp) function stored_energy(this, aux) result(total)
+      class(contact_pair_effect_t), intent(in) :: this
+      real(wp), intent(in) :: aux(:)
+      real(wp) :: ce, de
+      integer :: q
+      total = 0.0_wp
+      do q = 1, this%n_elem
+         call recurrent_energies(this%law(q), aux(n_loading_aux*(q - 1) + 1:n_loading_aux*q), ce, de)
+         total = total + ce
+      end do
+   end function stored_energy
 
    pure subroutine pair_point_forces(this, st, extra, aux, list)
       class(contact_pair_effect_t), intent(in) :: this

@@ -15,7 +15,7 @@ module contact_scene
    implicit none
    private
 
-   public :: resolved_surface, pair_material, scene_pairs, scene_contact_effects
+   public :: resolved_surface, pair_material, backing_material, scene_pairs, scene_contact_effects
 
 contains
 
@@ -89,6 +89,23 @@ contains
       end if
    end function pair_material
 
+   !> The material behind a padding or mat that bottoms out (figure 25,
+   !! D-C19): the backing of a padded surface with D'' > 0; 0 for none.
+   pure integer function backing_material(it, k) result(l)
+      type(interior_section_t), intent(in) :: it
+      integer, intent(in) :: k
+      integer, allocatable :: comp(:)
+      integer :: kd
+      allocate (comp(0))
+      comp = surface_materials(k)
+      l = 0
+      kd = k
+      if (k == 25) kd = 5
+      if (size(comp) > 1) then
+         if (it%dpp(kd) > 0.0_wp) l = comp(2)
+      end if
+   end function backing_material
+
    !> The pairs the scene assembles: the position's, less those switched
    !! off, whose surface the deck describes.
    pure function scene_pairs(m) result(pairs)
@@ -125,11 +142,20 @@ contains
       allocate (effects(size(pairs)))
       do q = 1, size(pairs)
          call resolved_surface(m%interior, pairs(q)%k, sf, ok)
-         associate (l => pair_material(m%interior, pairs(q)%k))
-            effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
-                                             material_law(m%materials, m%loading, l), m%materials%mu(l), &
-                                             m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k), &
-                                             merge(m%materials%fsw, 0.0_wp, l == 2))
+         associate (l => pair_material(m%interior, pairs(q)%k), lb => backing_material(m%interior, pairs(q)%k), &
+                    kd => merge(5, pairs(q)%k, pairs(q)%k == 25))
+            if (lb > 0) then       ! padding (or mat) bottoming out at eta D'' on its backing
+               effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
+                                                material_law(m%materials, m%loading, l), m%materials%mu(l), &
+                                                m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
+                                                pairs(q)%k), backing=material_law(m%materials, m%loading, lb), &
+                                                cap=m%materials%eta(l)*m%interior%dpp(kd))
+            else
+               effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
+                                                material_law(m%materials, m%loading, l), m%materials%mu(l), &
+                                                m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
+                                                pairs(q)%k), merge(m%materials%fsw, 0.0_wp, l == 2))
+            end if
          end associate
       end do
    end function scene_contact_effects
