@@ -29,7 +29,9 @@ module run_report
    use equations_of_motion, only: crash_system_t
    use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired, &
       event_shatter, event_cut
-   use contact_tables, only: surface_name
+   use contact_tables, only: surface_name, contact_pair_t, is_undesired
+   use contact_scene, only: scene_pairs, resolved_surface, pair_material, backing_material
+   use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t
    use force_injuries, only: fc_defined, fs_defined, fc_name, fs_name
    use acceleration_criteria, only: hic_result_t
@@ -360,6 +362,7 @@ contains
       call write_loading_curves(lst, m)
       call write_seat(lst, m, deck)
       call write_belts(lst, m)
+      call write_interior(lst, m)
 
       associate (b => m%body)
          call lst%heading('TABLE 1 - CONTACT ARCS', 13)
@@ -1013,6 +1016,68 @@ contains
          start = cut + 1
       end do
    end subroutine put_wrapped
+
+   !> The interior (C.4.f, Table 3; docs/contacts.md): each surface as the
+   !! scene resolves it (both ends, direction, normal, padding), and the
+   !! position's pairs that the scene assembles with their materials, the
+   !! undesired ones (Table 9) marked.
+   subroutine write_interior(lst, m)
+      type(listing_t), intent(inout) :: lst
+      type(model_t), intent(in) :: m
+      type(contact_pair_t), allocatable :: pairs(:)
+      type(contact_surface_t) :: sf
+      character(len=132) :: line
+      logical :: ok
+      integer :: q, k, n
+      if (.not. any(m%interior%given)) return
+      allocate (pairs(0))
+      pairs = scene_pairs(m)
+      n = 0
+      do k = 1, 32
+         call resolved_surface(m%interior, k, sf, ok)
+         if (ok) n = n + 1
+      end do
+      call lst%heading('INTERIOR SURFACES (C.4.f, TABLE 3; OCCUPANT''S INTERIOR FRAME)', n + 3)
+      call lst%put('   K  SURFACE                KIND       X''''         Y''''         PSI (deg)   D           D''''' &
+                   //'        FAR END X   FAR END Y')
+      do k = 1, 32
+         call resolved_surface(m%interior, k, sf, ok)
+         if (.not. ok) cycle
+         write (line, '(i4,2x,a22,1x,a10,7a)') k, name22(surface_name(k)), surface_kind(sf%kind), &
+            fixed(sf%s(1), 11, 3), fixed(sf%s(2), 11, 3), fixed(sf%psi/deg, 11, 2), fixed(sf%d, 11, 3), &
+            fixed(m%interior%dpp(merge(5, min(k, 32), k == 25)), 11, 3), &
+            fixed(sf%s(1) - sf%d*cos(sf%psi), 11, 3), fixed(sf%s(2) - sf%d*sin(sf%psi), 11, 3)
+         call lst%put(line)
+      end do
+      call lst%heading('CONTACT PAIRS OF NBODY '//itoa(m%options%nbody)//' ASSEMBLED (TABLES 7, 8, 9, 10)', &
+                       size(pairs) + 3)
+      call lst%put('   I  BODY POINT      K  SURFACE                MATERIAL  BACKING  UNDESIRED (TABLE 9)')
+      do q = 1, size(pairs)
+         write (line, '(i4,2x,a12,i5,2x,a22,i6,i9,5x,a)') pairs(q)%i, arc_name(pairs(q)%i), pairs(q)%k, &
+            name22(surface_name(pairs(q)%k)), pair_material(m%interior, pairs(q)%k), &
+            backing_material(m%interior, pairs(q)%k), &
+            trim(merge('yes', '   ', is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k)))
+         call lst%put(line)
+      end do
+   contains
+      !> a name left-justified in 22 columns
+      pure function name22(name) result(text)
+         character(len=*), intent(in) :: name
+         character(len=22) :: text
+         text = name
+      end function name22
+
+      pure function surface_kind(kind) result(text)
+         integer, intent(in) :: kind
+         character(len=10) :: text
+         select case (kind)
+         case (surface_flat); text = 'flat'
+         case (surface_line); text = 'line'
+         case (surface_circle); text = 'circle'
+         case default; text = 'edge point'
+         end select
+      end function surface_kind
+   end subroutine write_interior
 
    !> HIC15, HIC36, GSI and the chest's 3 ms clip (docs/injury.md): not the
    !! report's criteria, which predate them, but what users now expect.
