@@ -284,7 +284,8 @@ contains
       ! an arc centred on a joint (hip, shoulder, elbow, knee) passes its load on
       ! through the joint: no load across a bone (docs/contacts.md 4.3)
       call point_force_add(list, arc_segment(this%i), ps%c_in, ps%split%force*ps%n_in - ps%p_t*ps%t_in, &
-                           across_bone=.not. any(this%i == [1, 5, 6, 7]))
+                           across_bone=.not. any(this%i == [1, 5, 6, 7]), arc=this%i, surface=this%k, &
+                           normal_force=ps%split%force)
    end subroutine pair_point_forces
 
    function pair_outputs(this) result(series)

@@ -93,6 +93,10 @@ module effect_base
       !! gravity, spread over the segment, nor a force at a joint (the seat's
       !! hip force), which the joint passes on
       logical :: across_bone = .true.
+      !> a contact's body point i, surface k and normal force P (Table 5's
+      !! skull, back, rib, lower leg and face loads); 0 for other forces
+      integer :: arc = 0, surface = 0
+      real(wp) :: normal_force = 0.0_wp
    end type point_force_t
 
    !> The point forces of an occupant's effects at one state (f(1:n); it
@@ -158,11 +162,13 @@ module effect_base
 contains
 
    !> Append a force to a list.
-   pure subroutine point_force_add(list, segment, point, force, across_bone)
+   pure subroutine point_force_add(list, segment, point, force, across_bone, arc, surface, normal_force)
       type(point_force_list_t), intent(inout) :: list
       integer, intent(in) :: segment
       real(wp), intent(in) :: point(2), force(2)
       logical, intent(in), optional :: across_bone
+      integer, intent(in), optional :: arc, surface
+      real(wp), intent(in), optional :: normal_force
       type(point_force_t), allocatable :: longer(:)
       if (.not. allocated(list%f)) allocate (list%f(16))
       if (list%n == size(list%f)) then
@@ -171,8 +177,11 @@ contains
          call move_alloc(longer, list%f)
       end if
       list%n = list%n + 1
-      list%f(list%n) = point_force_t(segment, point, force, .true.)
+      list%f(list%n) = point_force_t(segment=segment, point=point, force=force)
       if (present(across_bone)) list%f(list%n)%across_bone = across_bone
+      if (present(arc)) list%f(list%n)%arc = arc
+      if (present(surface)) list%f(list%n)%surface = surface
+      if (present(normal_force)) list%f(list%n)%normal_force = normal_force
    end subroutine point_force_add
 
    !> The forces from outside the body that the effect applies, appended

@@ -12,14 +12,16 @@
 !!   knee for the shank); for bone 1, whose proximal end is the hip, where
 !!   the seat acts, the upper body's push at its top, R_2 . e_1. Table 5
 !!   has no compression limit for bone 4 (the skull): FC_4 is omitted.
-!! - FS_i, the load across bone i from outside: the component normal to
-!!   its axis of the point forces on its segment that load it across
-!!   (not gravity, not the seat's hip force at the joint; the belts' and
-!!   the front edge's now, the contacts' later): bones 1-3 (the lower,
-!!   centre and upper spine: the lap belt and the torso sections, the
-!!   report's FS_1-FS_3), 7 (the upper leg: the front edge's F'_s, F7-1), 8
-!!   (the lower leg). FS_4-6 and FS_9 (skull, back, rib, face) are contact
-!!   forces of particular body points: they come with the contacts.
+!! - FS_i, the load across bone i from outside. For the spine (1-3) and
+!!   the leg bones (7, 8): the component normal to the bone of the belts'
+!!   and the seat's forces on its segment that load it across (not gravity,
+!!   not the seat's hip force at the joint): the lap belt and the torso
+!!   sections (the report's FS_1-FS_3), the front edge's F'_s on the thigh
+!!   (F7-1). From the contacts (f.7): the skull (4) the head's contact
+!!   force P_4 on surfaces it does not meet face-on, the back (5) and the
+!!   ribs (6) those of the upper back (P_2) and the chest (P_3), the lower
+!!   leg (8) the shin's P_9, the face (9) the head's on the windshield,
+!!   panel, front seat back, column and rims (F7-1).
 module force_injuries
    use kinds, only: wp
    use model, only: body_section_t, n_seg, n_dof, n_joint, n_injury
@@ -39,9 +41,13 @@ module force_injuries
    !> The bones whose compression Table 5 defines (not the skull, 4).
    logical, parameter :: fc_defined(n_injury) = [.true., .true., .true., .false., .true., .true., .true., .true., &
                                                  .false., .false.]
-   !> The bones whose shear the dynamics gives now (the others need contacts).
-   logical, parameter :: fs_defined(n_injury) = [.true., .true., .true., .false., .false., .false., .true., .true., &
-                                                 .false., .false.]
+   !> The bones with a shear fracture criterion (Table 5: all but row 10).
+   logical, parameter :: fs_defined(n_injury) = [.true., .true., .true., .true., .true., .true., .true., .true., &
+                                                 .true., .false.]
+   !> The surfaces the face meets head-on (F7-1): windshield, upper panel,
+   !! back of the front seat, column, rim, side rim; the head's other
+   !! contacts load the skull.
+   integer, parameter :: face_on(6) = [2, 4, 7, 8, 10, 30]
    !> The joint at whose reaction bone i's compression is taken (i = 1..8).
    integer, parameter :: fc_joint(n_seg) = [2, 2, 3, 4, 5, 6, 1, 7]
 
@@ -58,7 +64,7 @@ contains
       real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
       type(point_force_list_t), intent(in) :: forces
       type(bone_loads_t) :: bl
-      real(wp) :: r(2, n_joint), shear(n_joint), across(n_seg)
+      real(wp) :: r(2, n_joint), shear(n_joint), across(n_seg), contact(n_injury)
       integer :: i, k
       r = joint_reaction_forces(body, z, zdot, zdd, forces)
       call bone_components(r, z, bl%ft, shear)
@@ -66,14 +72,31 @@ contains
          if (fc_defined(i)) bl%fc(i) = r(1, fc_joint(i))*cos(z(i)) + r(2, fc_joint(i))*sin(z(i))
       end do
       across = 0.0_wp
+      contact = 0.0_wp
       do k = 1, forces%n
          associate (f => forces%f(k))
             if (.not. f%across_bone) cycle
-            across(f%segment) = across(f%segment) - f%force(1)*sin(z(f%segment)) + f%force(2)*cos(z(f%segment))
+            select case (f%arc)
+            case (0)            ! belts and the seat: their normal component on the bone
+               across(f%segment) = across(f%segment) - f%force(1)*sin(z(f%segment)) + f%force(2)*cos(z(f%segment))
+            case (2)            ! the upper back's contact: the back (Table 5 row 5)
+               contact(5) = contact(5) + f%normal_force
+            case (3)            ! the chest's: the ribs (row 6)
+               contact(6) = contact(6) + f%normal_force
+            case (4)            ! the head's: the face head-on (row 9, F7-1), else the skull (row 4)
+               if (any(face_on == f%surface)) then
+                  contact(9) = contact(9) + f%normal_force
+               else
+                  contact(4) = contact(4) + f%normal_force
+               end if
+            case (9)            ! the shin's: the lower leg (row 8)
+               contact(8) = contact(8) + f%normal_force
+            end select
          end associate
       end do
+      bl%fs = merge(contact, 0.0_wp, fs_defined)
       do i = 1, n_seg
-         if (fs_defined(i)) bl%fs(i) = abs(across(i))
+         if (.not. any(i == [4, 5, 6])) bl%fs(i) = bl%fs(i) + abs(across(i))
       end do
    end function bone_loads
 end module force_injuries
