@@ -346,9 +346,9 @@ contains
    !! start for the search's unknown (split%guess of a nearby state, e.g.
    !! integrated with the motion from split%guess_rate); the result does not
    !! depend on it beyond the tolerance, only the number of iterations does.
-   !! cap (two elements; > 0 where given): an element that bottoms out at
-   !! deformation cap (a contact's padding, figure 25, D-C19): there its
-   !! graph turns vertical and the other element takes the rest.
+   !! cap (> 0 where given): an element that bottoms out at deformation cap
+   !! (a contact's padding, figure 25, D-C19): there its graph turns
+   !! vertical and the other elements take the rest.
    pure subroutine chain_split(n, law, mem, s, s_dot, max_iter, split, guess, cap)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
@@ -414,7 +414,7 @@ contains
          end if
          if (split%iterations < 0) call pair_split(law, mem, s, z, max_iter, split, slope, loading, guess)
       case default
-         call chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess)
+         call chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess, cap)
       end select
       if (split%status /= split_ok) then
          call clear(split, n)
@@ -630,7 +630,7 @@ contains
    !! deformation at force F (each an inner search on [z_i, s - sum z + z_i]),
    !! h' = sum 1/k_i. Where the bracket closes on a flat branch or a jump,
    !! the deformations are interpolated between its ends so that they add up.
-   pure subroutine chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess)
+   pure subroutine chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess, cap)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
@@ -640,15 +640,25 @@ contains
       real(wp), intent(out) :: slope(:)
       logical, intent(out) :: loading(:)
       real(wp), intent(in), optional :: guess
+      real(wp), intent(in), optional :: cap(:)
       type(root_search_t) :: r
       real(wp) :: x_max(max_chain), secant(max_chain), f_max(max_chain), f_hi, f0, h, dh, x(max_chain)
       real(wp) :: x_lo(max_chain), x_hi(max_chain), h_lo, h_hi, theta
+      real(wp) :: f_cap(max_chain)           ! a capped element's force at its cap (huge: no cap)
       integer :: i, status, seg(max_chain)
       type(branch_point_t) :: bp
 
       seg(1:n) = 0
+      f_cap(1:n) = huge(1.0_wp)
       do i = 1, n
          x_max(i) = s - sum(z(1:n)) + z(i)
+         if (present(cap)) then
+            if (cap(i) > 0.0_wp .and. cap(i) < x_max(i)) then
+               x_max(i) = cap(i)               ! it cannot deform beyond its cap (figure 25)
+               call branch_eval(law(i), mem(i), cap(i), seg(i), bp)
+               f_cap(i) = bp%force
+            end if
+         end if
          call branch_eval(law(i), mem(i), x_max(i), seg(i), bp)
          f_max(i) = bp%force
          secant(i) = f_max(i)/(x_max(i) - z(i))
@@ -689,8 +699,8 @@ contains
       end if
       split%x(1:n) = x(1:n)
       do i = 1, n
-         if (held_plastic(law(i), mem(i)) .and. split%branch <= mem(i)%f_max) then
-            slope(i) = rigid_slope        ! held at delta_max (D-B9)
+         if ((held_plastic(law(i), mem(i)) .and. split%branch <= mem(i)%f_max) .or. split%branch >= f_cap(i)) then
+            slope(i) = rigid_slope        ! held at delta_max (D-B9), or bottomed out at its cap
             loading(i) = .false.
          else
             call branch_eval(law(i), mem(i), x(i), seg(i), bp)
@@ -714,6 +724,10 @@ contains
          do k = 1, n
             if (held_plastic(law(k), mem(k)) .and. f <= mem(k)%f_max) then
                xs(k) = mem(k)%delta_max    ! held, rigid: no compliance (D-B9)
+               cycle
+            end if
+            if (f >= f_cap(k)) then
+               xs(k) = x_max(k)            ! bottomed out at its cap: rigid beyond (figure 25)
                cycle
             end if
             if (.not. f > 0.0_wp) then

@@ -39,13 +39,14 @@ module contact_forces
       integer :: i = 0, k = 0
       type(body_section_t) :: body
       type(contact_surface_t) :: surface
-      !> the surface's elements in series, outer first (Table 10): one, or a
-      !! padding (or mat) that bottoms out at cap = eta D'' and its backing
-      !! (figure 25, D-C19)
+      !> the elements in series: the body's material in front where Table 11
+      !! shares the deflection (figure 23), then the surface's (Table 10): one,
+      !! or a padding (or mat) that bottoms out at its cap eta D'' and its
+      !! backing (figure 25, D-C19)
       integer :: n_elem = 1
-      type(recurrent_law_t) :: law(2)
-      type(loading_memory_t) :: mem(2)
-      real(wp) :: cap(2) = 0.0_wp
+      type(recurrent_law_t) :: law(3)
+      type(loading_memory_t) :: mem(3)
+      real(wp) :: cap(3) = 0.0_wp
       !> aux: each element's W, E_abs, D_v, then the friction's work and the supplied work
       integer :: aux_friction = 0, aux_supplied = 0
       real(wp) :: mu = 0.0_wp, xi = 0.0_wp     !< the outer material's friction (D-C22)
@@ -86,7 +87,7 @@ contains
 
    !> The pair (i, k) with surface sf (interior frame), the law of its
    !! material and its friction mu, xi (0: none).
-   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired, fsw, backing, cap) result(e)
+   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired, fsw, backing, cap, body_law) result(e)
       type(body_section_t), intent(in) :: body
       integer, intent(in) :: i, k
       type(contact_surface_t), intent(in) :: sf
@@ -96,19 +97,28 @@ contains
       real(wp), intent(in), optional :: fsw
       type(recurrent_law_t), intent(in), optional :: backing   !< behind a padding that bottoms out
       real(wp), intent(in), optional :: cap                    !< the padding's bottoming depth eta D''
+      type(recurrent_law_t), intent(in), optional :: body_law  !< the body's material (Table 11)
       type(contact_pair_effect_t) :: e
+      integer :: q
       e%name = 'contact_'//itoa(i)//'_'//itoa(k)
       e%title = 'contact '//itoa(i)//' on '//itoa(k)//' (C.4.f)'
       e%i = i
       e%k = k
       e%body = body
       e%surface = sf
-      e%law(1) = law
-      if (present(backing)) then
-         e%n_elem = 2
-         e%law(2) = backing
-         if (present(cap)) e%cap(1) = cap
+      q = 0
+      if (present(body_law)) then
+         q = q + 1
+         e%law(q) = body_law
       end if
+      q = q + 1
+      e%law(q) = law
+      if (present(backing)) then
+         if (present(cap)) e%cap(q) = cap
+         q = q + 1
+         e%law(q) = backing
+      end if
+      e%n_elem = q
       if (present(mu)) e%mu = mu
       if (present(xi)) e%xi = xi
       if (present(undesired)) e%undesired = undesired
@@ -117,7 +127,9 @@ contains
       e%external = .true.
       e%has_energy = .true.
       e%has_memory = .not. recurrent_is_elastic(law) .or. e%mu > 0.0_wp .or. e%undesired .or. e%fsw > 0.0_wp
-      if (e%n_elem == 2) e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%law(2))
+      do q = 2, e%n_elem
+         e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%law(q))
+      end do
       e%aux_friction = n_loading_aux*e%n_elem + 1
       e%aux_supplied = e%aux_friction + 1
       e%n_aux = e%aux_supplied
@@ -136,8 +148,9 @@ contains
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
          call chain_split(this%n_elem, this%law, this%mem, -1.0_wp, 0.0_wp, this%max_iter, ps%split)
-      else if (this%n_elem == 2) then
-         call chain_split(2, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split, cap=this%cap)
+      else if (this%n_elem > 1) then
+         call chain_split(this%n_elem, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split, &
+                          cap=this%cap)
       else
          call chain_split(1, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split)
       end if

@@ -9,7 +9,7 @@ module contact_scene
    use kinds, only: wp, pi
    use model, only: model_t, interior_section_t
    use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle, surface_point
-   use contact_tables, only: contact_pair_t, position_pairs, surface_materials, is_undesired
+   use contact_tables, only: contact_pair_t, position_pairs, surface_materials, is_undesired, is_shared, body_material
    use contact_forces, only: contact_pair_effect_t, contact_pair_effect
    use recurrent_loading, only: material_law
    implicit none
@@ -106,6 +106,18 @@ contains
       end if
    end function backing_material
 
+   !> Table 11 (figure 23): the body material (chest 12, face 13, shoulder
+   !! 14) that shares a pair's deflection, when it has a loading curve (a
+   !! body material without one is rigid, D-B6); 0 otherwise.
+   pure integer function shared_material(m, pair) result(l)
+      type(model_t), intent(in) :: m
+      type(contact_pair_t), intent(in) :: pair
+      l = 0
+      if (.not. is_shared(m%options%nbody, pair%i, pair%k)) return
+      if (body_material(pair%i) == 0) return
+      if (m%loading%material_curve(body_material(pair%i)) > 0) l = body_material(pair%i)
+   end function shared_material
+
    !> The pairs the scene assembles: the position's, less those switched
    !! off, whose surface the deck describes.
    pure function scene_pairs(m) result(pairs)
@@ -143,8 +155,21 @@ contains
       do q = 1, size(pairs)
          call resolved_surface(m%interior, pairs(q)%k, sf, ok)
          associate (l => pair_material(m%interior, pairs(q)%k), lb => backing_material(m%interior, pairs(q)%k), &
-                    kd => merge(5, pairs(q)%k, pairs(q)%k == 25))
-            if (lb > 0) then       ! padding (or mat) bottoming out at eta D'' on its backing
+                    kd => merge(5, pairs(q)%k, pairs(q)%k == 25), lbody => shared_material(m, pairs(q)))
+            if (lbody > 0 .and. lb > 0) then    ! Table 11: the body's material in front (figure 23)
+               effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
+                                                material_law(m%materials, m%loading, l), m%materials%mu(l), &
+                                                m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
+                                                pairs(q)%k), backing=material_law(m%materials, m%loading, lb), &
+                                                cap=m%materials%eta(l)*m%interior%dpp(kd), &
+                                                body_law=material_law(m%materials, m%loading, lbody))
+            else if (lbody > 0) then
+               effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
+                                                material_law(m%materials, m%loading, l), m%materials%mu(l), &
+                                                m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
+                                                pairs(q)%k), merge(m%materials%fsw, 0.0_wp, l == 2), &
+                                                body_law=material_law(m%materials, m%loading, lbody))
+            else if (lb > 0) then       ! padding (or mat) bottoming out at eta D'' on its backing
                effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
                                                 material_law(m%materials, m%loading, l), m%materials%mu(l), &
                                                 m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
