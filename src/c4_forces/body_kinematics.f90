@@ -16,7 +16,7 @@ module body_kinematics
    private
 
    public :: point_state_t, segment_cg_state, joint_state, to_interior, joint_segment
-   public :: point_force_generalized
+   public :: point_force_generalized, joint_position_velocity
 
    integer, parameter :: max_links = 4
    integer, parameter :: n_links(n_seg) = [0, 1, 2, 3, 3, 4, 0, 1]
@@ -97,6 +97,26 @@ contains
       type(point_state_t) :: p
       p = point_on_segment(body, z, zdot, zdd, joint_segment(k), 0.0_wp)
    end function joint_state
+
+   !> Position and velocity (inertial) of the proximal joint of segment i
+   !! from the cosines c and sines s of the angles, already at hand (the
+   !! effects' body state): point_on_segment at d = 0 without its trig.
+   pure subroutine joint_position_velocity(body, z, zdot, c, s, i, p, v)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), c(n_seg), s(n_seg)
+      integer, intent(in) :: i
+      real(wp), intent(out) :: p(2), v(2)
+      integer :: k, j
+      real(wp) :: len
+      p = [z(hip_x), z(hip_y)]
+      v = [zdot(hip_x), zdot(hip_y)]
+      do k = 1, n_links(i)
+         j = chain_seg(k, i)
+         len = body%length(chain_len(k, i))
+         p = p + len*[c(j), s(j)]
+         v = v + len*zdot(j)*[-s(j), c(j)]
+      end do
+   end subroutine joint_position_velocity
 
    !> The generalized force of a force f (inertial) at the inertial point p
    !! of segment i: its virtual work J^T f, J = dp/dz for the material point

@@ -142,7 +142,14 @@ contains
       type(pair_state_t) :: ps
       type(contact_feature_t) :: f
       real(wp) :: c, s
-      f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i)
+      ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
+      c = 1.0_wp
+      s = st%vehicle%pos(3)
+      if (abs(st%vehicle%pos(3)) > 0.0_wp) then
+         c = cos(st%vehicle%pos(3))
+         s = sin(st%vehicle%pos(3))
+      end if
+      f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
       ps%cs = contact_check(f, this%surface)
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
@@ -154,8 +161,6 @@ contains
       else
          call chain_split(1, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split)
       end if
-      c = cos(st%vehicle%pos(3))
-      s = sin(st%vehicle%pos(3))
       ps%c_in = st%vehicle%pos(1:2) + [c*ps%cs%c(1) + s*ps%cs%c(2), -s*ps%cs%c(1) + c*ps%cs%c(2)]
       ps%n_in = [c*ps%cs%n(1) + s*ps%cs%n(2), -s*ps%cs%n(1) + c*ps%cs%n(2)]
       ps%t_in = [c*ps%cs%t(1) + s*ps%cs%t(2), -s*ps%cs%t(1) + c*ps%cs%t(2)]

@@ -11,7 +11,7 @@
 module contact_geometry
    use kinds, only: wp
    use model, only: body_section_t, n_seg, n_dof
-   use body_kinematics, only: point_state_t, joint_state, to_interior
+   use body_kinematics, only: point_state_t, joint_state, to_interior, joint_position_velocity
    implicit none
    private
 
@@ -70,37 +70,57 @@ contains
 
    !> Body feature i (f.1 with F1-1, F1-2) at the inertial state (z, z')
    !! and the vehicle's position and rates vpos, vvel, in the interior frame.
-   pure function body_feature(body, z, zdot, vpos, vvel, i) result(f)
+   !! (c, s: the cosines and sines of the segment angles when at hand, as in
+   !! the effects' body state; cp, sp those of the pitch: no trig repeated)
+   pure function body_feature(body, z, zdot, vpos, vvel, i, c, s, cp, sp) result(f)
       type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: z(n_dof), zdot(n_dof), vpos(3), vvel(3)
       integer, intent(in) :: i
+      real(wp), intent(in), optional :: c(n_seg), s(n_seg), cp, sp
       type(contact_feature_t) :: f
       type(point_state_t) :: j
-      real(wp) :: zero(n_dof)
-      zero = 0.0_wp
+      real(wp) :: zero(n_dof), p(2), v(2), d(2), dv(2), cph, sph, et(2)
       f%arc = i
       f%seg = arc_segment(i)
-      j = to_interior(joint_state(body, z, zdot, zero, proximal_joint(f%seg)), vpos, vvel)
-      f%joint = [j%x, j%y]
-      f%joint_vel = [j%vx, j%vy]
+      if (present(c) .and. present(s) .and. present(cp) .and. present(sp)) then
+         ! to_interior with the trig at hand: x = R(Phi)(X - x_c) and its rate
+         call joint_position_velocity(body, z, zdot, c, s, f%seg, p, v)
+         cph = cp
+         sph = sp
+         d = p - vpos(1:2)
+         dv = v - vvel(1:2)
+         f%joint = [d(1)*cph - d(2)*sph, d(1)*sph + d(2)*cph]
+         f%joint_vel = [dv(1)*cph - dv(2)*sph - f%joint(2)*vvel(3), dv(1)*sph + dv(2)*cph + f%joint(1)*vvel(3)]
+      else
+         zero = 0.0_wp
+         j = to_interior(joint_state(body, z, zdot, zero, proximal_joint(f%seg)), vpos, vvel)
+         f%joint = [j%x, j%y]
+         f%joint_vel = [j%vx, j%vy]
+      end if
       f%theta = z(f%seg) + vpos(3)
       f%theta_dot = zdot(f%seg) + vvel(3)
       f%r = body%r_arc(i)
+      ! e(theta) of the carrying segment, from the trig at hand when given
+      if (present(c) .and. present(s) .and. present(cp) .and. present(sp)) then
+         et = [c(f%seg)*cp - s(f%seg)*sp, s(f%seg)*cp + c(f%seg)*sp]
+      else
+         et = e(f%theta)
+      end if
       select case (i)
       case (1, 5)                 ! hip, shoulder: the joint itself (F1-2)
          f%p = f%joint
       case (2, 3)                 ! upper back, chest: rho'_i at gamma_i from the torso line
          f%p = f%joint + body%rho_arc(i)*e(f%theta + body%gamma_arc(i))
       case (4)                    ! head: rho'_4 along its centre line (F1-1)
-         f%p = f%joint + body%rho_arc(4)*e(f%theta)
+         f%p = f%joint + body%rho_arc(4)*et
       case (6, 7, 10)             ! elbow, knee, hand: the segment's far end
-         f%p = f%joint + body%length(f%seg)*e(f%theta)
+         f%p = f%joint + body%length(f%seg)*et
       case (8)                    ! foot: the ankle, L_8 along the shank
-         f%p = f%joint + body%length(8)*e(f%theta)
+         f%p = f%joint + body%length(8)*et
       case (9)                    ! the shin: the knee circle and the ankle circle (D-C2)
          f%p = f%joint
          f%r = body%r_arc(7)
-         f%ankle = f%joint + body%length(8)*e(f%theta)
+         f%ankle = f%joint + body%length(8)*et
          f%r_ankle = body%r_arc(11)
          f%alpha0 = shin_alpha0(body)
       end select
