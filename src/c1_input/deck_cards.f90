@@ -318,8 +318,9 @@ contains
       t(g_injury)%index_name = 'row i'
       t(g_injury)%note = 'Zero or blank means the criterion is not checked. Checked at every accepted step ' &
          //'against the forces from the solved dynamics (docs/injury.md): FTD against the tension of joint i ' &
-         //'(1-7), FCF the compression of bone i (1-8 but 4), FSF the load across bone i from outside (now 1-3, ' &
-         //'7, 8; the skull, back, rib and face with the contacts). The first passing of each is an injury event ' &
+         //'(1-7), FCF the compression of bone i (1-8 but 4), FSF the load across bone i from outside (1-9: ' &
+         //'belts and seat across the spine and leg bones, the contacts of skull, back, ribs, lower leg and ' &
+         //'face). The first passing of each is an injury event ' &
          //'(NEND 3 ends the run there).'
       call set_fields(t(g_injury), [ &
          real_field('FSF', 'lb', one, blank_default, zero, zero, big, 'shear fracture force'), &
