@@ -348,8 +348,11 @@ contains
    !! depend on it beyond the tolerance, only the number of iterations does.
    !! cap (> 0 where given): an element that bottoms out at deformation cap
    !! (a contact's padding, figure 25, D-C19): there its graph turns
-   !! vertical and the other elements take the rest.
-   pure subroutine chain_split(n, law, mem, s, s_dot, max_iter, split, guess, cap)
+   !! vertical and the other elements take the rest. gate (> 0 where given):
+   !! an element that does not move until the chain's force exceeds gate,
+   !! and then carries gate plus its own curve (the steering column behind
+   !! its padding, C.4.f, D-C19).
+   pure subroutine chain_split(n, law, mem, s, s_dot, max_iter, split, guess, cap, gate)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
@@ -357,7 +360,7 @@ contains
       integer, intent(in) :: max_iter
       type(chain_split_t), intent(out) :: split
       real(wp), intent(in), optional :: guess
-      real(wp), intent(in), optional :: cap(:)
+      real(wp), intent(in), optional :: cap(:), gate(:)
       real(wp) :: z(max_chain), zsum, slope(max_chain), w(max_chain), fv(max_chain), fv_chain, lambda
       logical :: loading(max_chain)
       integer :: i
@@ -406,7 +409,17 @@ contains
          end associate
          split%iterations = 1
       case (2)
-         if (present(cap)) then
+         if (present(gate)) then
+            if (any(gate(1:2) > 0.0_wp) .and. present(cap)) then
+               call gated_split(cap(1:2), gate(1:2), split, slope, loading)
+            else if (any(gate(1:2) > 0.0_wp)) then
+               call gated_split(gate2=gate(1:2), sp=split, slope2=slope, loading2=loading)
+            else if (present(cap)) then
+               call capped_split(cap(1:2), split, slope, loading)
+            else
+               split%iterations = -1
+            end if
+         else if (present(cap)) then
             call capped_split(cap(1:2), split, slope, loading)
          else
             split%status = split_ok
@@ -414,7 +427,7 @@ contains
          end if
          if (split%iterations < 0) call pair_split(law, mem, s, z, max_iter, split, slope, loading, guess)
       case default
-         call chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess, cap)
+         call chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess, cap, gate)
       end select
       if (split%status /= split_ok) then
          call clear(split, n)
@@ -457,6 +470,47 @@ contains
          split%aux_rate(aux_rate_work, i) = lambda*fv(i)*split%rate(i)
       end do
    contains
+      !> A gated element (the column) and a capped one (its padding): the
+      !! column stays at its zero-force extent while the padding takes the
+      !! deformation up to its cap (where its force is the gate), then the
+      !! padding is solid and the column carries gate + its own curve.
+      pure subroutine gated_split(cap2, gate2, sp, slope2, loading2)
+         real(wp), intent(in), optional :: cap2(2)
+         real(wp), intent(in) :: gate2(2)
+         type(chain_split_t), intent(inout) :: sp
+         real(wp), intent(out) :: slope2(:)
+         logical, intent(out) :: loading2(:)
+         type(branch_point_t) :: bp
+         real(wp) :: pad_cap
+         integer :: ig, ip
+         ig = merge(1, 2, gate2(1) > 0.0_wp)
+         ip = 3 - ig
+         pad_cap = huge(1.0_wp)
+         if (present(cap2)) then
+            if (cap2(ip) > 0.0_wp) pad_cap = cap2(ip)
+         end if
+         sp%iterations = 1
+         if (s - z(ig) <= pad_cap) then      ! the column at rest, the padding compressing
+            sp%x(ig) = z(ig)
+            sp%x(ip) = s - z(ig)
+            bp = branch_at(law(ip), mem(ip), sp%x(ip))
+            sp%branch = bp%force
+            slope2(ig) = rigid_slope
+            loading2(ig) = .false.
+            slope2(ip) = bp%slope
+            loading2(ip) = bp%loading
+         else                                ! the padding solid, the column moving
+            sp%x(ip) = pad_cap
+            sp%x(ig) = s - pad_cap
+            bp = branch_at(law(ig), mem(ig), sp%x(ig))
+            sp%branch = gate2(ig) + bp%force
+            slope2(ip) = rigid_slope
+            loading2(ip) = .false.
+            slope2(ig) = bp%slope
+            loading2(ig) = bp%loading
+         end if
+      end subroutine gated_split
+
       !> Figure 25: element i bottomed out at cap(i) when the other, at s -
       !! cap(i), carries at least the force i has there; iterations = -1
       !! when no cap acts (the ordinary search follows).
@@ -630,7 +684,7 @@ contains
    !! deformation at force F (each an inner search on [z_i, s - sum z + z_i]),
    !! h' = sum 1/k_i. Where the bracket closes on a flat branch or a jump,
    !! the deformations are interpolated between its ends so that they add up.
-   pure subroutine chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess, cap)
+   pure subroutine chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess, cap, gate)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
@@ -640,16 +694,19 @@ contains
       real(wp), intent(out) :: slope(:)
       logical, intent(out) :: loading(:)
       real(wp), intent(in), optional :: guess
-      real(wp), intent(in), optional :: cap(:)
+      real(wp), intent(in), optional :: cap(:), gate(:)
       type(root_search_t) :: r
       real(wp) :: x_max(max_chain), secant(max_chain), f_max(max_chain), f_hi, f0, h, dh, x(max_chain)
       real(wp) :: x_lo(max_chain), x_hi(max_chain), h_lo, h_hi, theta
       real(wp) :: f_cap(max_chain)           ! a capped element's force at its cap (huge: no cap)
+      real(wp) :: f_gate(max_chain)          ! a gated element's force before it moves (0: no gate)
       integer :: i, status, seg(max_chain)
       type(branch_point_t) :: bp
 
       seg(1:n) = 0
       f_cap(1:n) = huge(1.0_wp)
+      f_gate(1:n) = 0.0_wp
+      if (present(gate)) f_gate(1:n) = max(gate(1:n), 0.0_wp)
       do i = 1, n
          x_max(i) = s - sum(z(1:n)) + z(i)
          if (present(cap)) then
@@ -660,7 +717,7 @@ contains
             end if
          end if
          call branch_eval(law(i), mem(i), x_max(i), seg(i), bp)
-         f_max(i) = bp%force
+         f_max(i) = bp%force + f_gate(i)
          secant(i) = f_max(i)/(x_max(i) - z(i))
       end do
       split%iterations = n
@@ -699,8 +756,9 @@ contains
       end if
       split%x(1:n) = x(1:n)
       do i = 1, n
-         if ((held_plastic(law(i), mem(i)) .and. split%branch <= mem(i)%f_max) .or. split%branch >= f_cap(i)) then
-            slope(i) = rigid_slope        ! held at delta_max (D-B9), or bottomed out at its cap
+         if ((held_plastic(law(i), mem(i)) .and. split%branch <= mem(i)%f_max) .or. split%branch >= f_cap(i) &
+             .or. (f_gate(i) > 0.0_wp .and. split%branch <= f_gate(i))) then
+            slope(i) = rigid_slope        ! held (D-B9), bottomed out at its cap, or held by its gate
             loading(i) = .false.
          else
             call branch_eval(law(i), mem(i), x(i), seg(i), bp)
@@ -730,15 +788,19 @@ contains
                xs(k) = x_max(k)            ! bottomed out at its cap: rigid beyond (figure 25)
                cycle
             end if
+            if (f_gate(k) > 0.0_wp .and. f <= f_gate(k)) then
+               xs(k) = z(k)                ! the gate holds it (the column before it moves)
+               cycle
+            end if
             if (.not. f > 0.0_wp) then
                xs(k) = z(k)
                call branch_eval(law(k), mem(k), z(k), hint(k), b)
             else
-               call root_begin(q, z(k), x_max(k), z(k) + f/max(secant(k), min_slope), defl_tol*s, &
+               call root_begin(q, z(k), x_max(k), z(k) + (f - f_gate(k))/max(secant(k), min_slope), defl_tol*s, &
                                force_tol, max_iter)
                do
                   call branch_eval(law(k), mem(k), q%x, hint(k), b)
-                  call root_update(q, b%force - f, b%slope, f)
+                  call root_update(q, b%force + f_gate(k) - f, b%slope, f)
                   if (q%state /= root_running) exit
                end do
                iterations = iterations + q%iterations

@@ -27,7 +27,7 @@ module contact_forces
       arc_segment
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
       recurrent_is_elastic, n_loading_aux
-   use belt_shared_deflection, only: chain_split_t, chain_split, split_ok
+   use belt_shared_deflection, only: chain_split_t, chain_split, split_ok, branch_point_t, branch_at
    use dead_band, only: slip_of
    implicit none
    private
@@ -47,6 +47,9 @@ module contact_forces
       type(recurrent_law_t) :: law(3)
       type(loading_memory_t) :: mem(3)
       real(wp) :: cap(3) = 0.0_wp
+      !> the backing is the steering column: it does not move until its
+      !! padding has bottomed out (C.4.f; its gate the padding's force at the cap)
+      logical :: gated = .false.
       !> aux: each element's W, E_abs, D_v, then the friction's work and the supplied work
       integer :: aux_friction = 0, aux_supplied = 0
       real(wp) :: mu = 0.0_wp, xi = 0.0_wp     !< the outer material's friction (D-C22)
@@ -87,7 +90,8 @@ contains
 
    !> The pair (i, k) with surface sf (interior frame), the law of its
    !! material and its friction mu, xi (0: none).
-   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired, fsw, backing, cap, body_law) result(e)
+   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired, fsw, backing, cap, body_law, gated) &
+      result(e)
       type(body_section_t), intent(in) :: body
       integer, intent(in) :: i, k
       type(contact_surface_t), intent(in) :: sf
@@ -98,6 +102,7 @@ contains
       type(recurrent_law_t), intent(in), optional :: backing   !< behind a padding that bottoms out
       real(wp), intent(in), optional :: cap                    !< the padding's bottoming depth eta D''
       type(recurrent_law_t), intent(in), optional :: body_law  !< the body's material (Table 11)
+      logical, intent(in), optional :: gated                   !< the backing moves only once the padding is solid
       type(contact_pair_effect_t) :: e
       integer :: q
       e%name = 'contact_'//itoa(i)//'_'//itoa(k)
@@ -119,6 +124,7 @@ contains
          e%law(q) = backing
       end if
       e%n_elem = q
+      if (present(gated) .and. present(backing)) e%gated = gated
       if (present(mu)) e%mu = mu
       if (present(xi)) e%xi = xi
       if (present(undesired)) e%undesired = undesired
@@ -141,7 +147,8 @@ contains
       type(body_state_t), intent(in) :: st
       type(pair_state_t) :: ps
       type(contact_feature_t) :: f
-      real(wp) :: c, s
+      type(branch_point_t) :: bp
+      real(wp) :: c, s, gate(3)
       ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
       c = 1.0_wp
       s = st%vehicle%pos(3)
@@ -155,6 +162,13 @@ contains
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
          call chain_split(this%n_elem, this%law, this%mem, -1.0_wp, 0.0_wp, this%max_iter, ps%split)
+      else if (this%gated) then
+         ! the column's gate: the padding's force at its cap, with its memory
+         gate = 0.0_wp
+         bp = branch_at(this%law(this%n_elem - 1), this%mem(this%n_elem - 1), this%cap(this%n_elem - 1))
+         gate(this%n_elem) = bp%force
+         call chain_split(this%n_elem, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split, &
+                          cap=this%cap, gate=gate)
       else if (this%n_elem > 1) then
          call chain_split(this%n_elem, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split, &
                           cap=this%cap)

@@ -162,7 +162,8 @@ contains
                                                 m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
                                                 pairs(q)%k), backing=material_law(m%materials, m%loading, lb), &
                                                 cap=m%materials%eta(l)*m%interior%dpp(kd), &
-                                                body_law=material_law(m%materials, m%loading, lbody))
+                                                body_law=material_law(m%materials, m%loading, lbody), &
+                                                gated=lb == 10)
             else if (lbody > 0) then
                effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
                                                 material_law(m%materials, m%loading, l), m%materials%mu(l), &
@@ -174,7 +175,7 @@ contains
                                                 material_law(m%materials, m%loading, l), m%materials%mu(l), &
                                                 m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
                                                 pairs(q)%k), backing=material_law(m%materials, m%loading, lb), &
-                                                cap=m%materials%eta(l)*m%interior%dpp(kd))
+                                                cap=m%materials%eta(l)*m%interior%dpp(kd), gated=lb == 10)
             else
                effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
                                                 material_law(m%materials, m%loading, l), m%materials%mu(l), &
