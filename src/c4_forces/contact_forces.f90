@@ -24,7 +24,7 @@ module contact_forces
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
-      arc_segment
+      arc_segment, front_side, surface_flat
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
       recurrent_is_elastic, n_loading_aux
    use belt_shared_deflection, only: chain_split_t, chain_split, split_ok, branch_point_t, branch_at
@@ -50,6 +50,8 @@ module contact_forces
       !> the backing is the steering column: it does not move until its
       !! padding has bottomed out (C.4.f; its gate the padding's force at the cap)
       logical :: gated = .false.
+      !> D-C16a: the point came at a flat surface from behind its line (memory)
+      logical :: behind = .false.
       !> aux: each element's W, E_abs, D_v, then the friction's work and the supplied work
       integer :: aux_friction = 0, aux_supplied = 0
       real(wp) :: mu = 0.0_wp, xi = 0.0_wp     !< the outer material's friction (D-C22)
@@ -132,7 +134,8 @@ contains
       e%needs_vehicle = .true.
       e%external = .true.
       e%has_energy = .true.
-      e%has_memory = .not. recurrent_is_elastic(law) .or. e%mu > 0.0_wp .or. e%undesired .or. e%fsw > 0.0_wp
+      e%has_memory = .not. recurrent_is_elastic(law) .or. e%mu > 0.0_wp .or. e%undesired .or. e%fsw > 0.0_wp &
+                     .or. sf%kind == surface_flat      ! the side it came from (D-C16a)
       do q = 2, e%n_elem
          e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%law(q))
       end do
@@ -140,6 +143,15 @@ contains
       e%aux_supplied = e%aux_friction + 1
       e%n_aux = e%aux_supplied
    end function contact_pair_effect
+
+   !> The body feature of the pair's point at st.
+   pure function feature_at(this, st) result(f)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      type(contact_feature_t) :: f
+      f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, &
+                       cos(st%vehicle%pos(3)), sin(st%vehicle%pos(3)))
+   end function feature_at
 
    !> The contact's geometry (figure 22), force split and virtual work at st.
    pure function pair_state(this, st) result(ps)
@@ -157,7 +169,7 @@ contains
          s = sin(st%vehicle%pos(3))
       end if
       f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
-      ps%cs = contact_check(f, this%surface)
+      ps%cs = contact_check(f, this%surface, this%behind)
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
@@ -223,10 +235,13 @@ contains
       type(accept_result_t), intent(inout) :: result
       type(pair_state_t) :: ps
       logical :: changed
-      integer :: slip, q
+      integer :: slip, q, side
       associate (u1 => size(extra) + size(aux))
       end associate
       ps = pair_state(this, st)
+      ! D-C16a: the side of the surface's line the point is on, where it is decided
+      side = front_side(feature_at(this, st), this%surface)
+      if (side /= 0) this%behind = side < 0
       ! Table 9 (C.7): coming into contact (D-C28)
       if (this%undesired) then
          if (this%accepted_once .and. .not. this%was_loaded .and. ps%split%force > 0.0_wp) &

@@ -16,7 +16,7 @@ module contact_geometry
    private
 
    public :: contact_feature_t, contact_surface_t, contact_state_t
-   public :: body_feature, shin_alpha0, contact_check, arc_segment
+   public :: body_feature, shin_alpha0, contact_check, arc_segment, front_side
    public :: surface_flat, surface_line, surface_circle, surface_point
    public :: region_none, region_face, region_corner, region_circle, region_shin_line, region_shin_knee, &
       region_shin_ankle
@@ -135,9 +135,12 @@ contains
    !> Figure 22 reconstructed (docs/contacts.md 3.2): the primitive that
    !! acts between body feature f and surface sf, and its state. The region
    !! is chosen so that delta and its gradient are continuous everywhere.
-   pure function contact_check(f, sf) result(cs)
+   !! behind (the pair's memory): the point came at the surface from behind
+   !! its line, where a flat surface meets it with its ends only (D-C16a).
+   pure function contact_check(f, sf, behind) result(cs)
       type(contact_feature_t), intent(in) :: f
       type(contact_surface_t), intent(in) :: sf
+      logical, intent(in), optional :: behind
       type(contact_state_t) :: cs
       real(wp) :: tk(2), nk(2), tt, te
       if (f%arc == 9) then
@@ -163,6 +166,9 @@ contains
                te = sf%d
             else if (sf%t_open(2) > sf%t_open(1) .and. tt > sf%t_open(1) .and. tt < sf%t_open(2)) then
                te = merge(sf%t_open(1), sf%t_open(2), tt - sf%t_open(1) <= sf%t_open(2) - tt)
+            end if
+            if (te < 0.0_wp .and. present(behind)) then
+               if (behind) te = merge(0.0_wp, sf%d, tt <= 0.5_wp*sf%d)   ! from behind: the nearer end
             end if
          end if
          if (te >= 0.0_wp) then   ! a corner at the end (or the opening's edge) nearest (D-C16)
@@ -196,6 +202,24 @@ contains
          end if
       end subroutine round
    end function contact_check
+
+   !> D-C16a: which side of a flat surface's line a body point is on, for
+   !! the pair's memory, or 0 where it is not decided: a point over the
+   !! surface's extent and within r of its line keeps the side it came from.
+   !! Deciding only where face and ends give the same (no contact or the
+   !! ends' region) makes the switch continuous.
+   pure integer function front_side(f, sf) result(side)
+      type(contact_feature_t), intent(in) :: f
+      type(contact_surface_t), intent(in) :: sf
+      real(wp) :: tk(2), nk(2), tt, h
+      side = 0
+      if (sf%kind /= surface_flat) return
+      tk = e(sf%psi)
+      nk = [-tk(2), tk(1)]
+      tt = dot_product(sf%s - f%p, tk)
+      h = dot_product(f%p - sf%s, nk)
+      if (tt < 0.0_wp .or. tt > sf%d .or. h >= f%r) side = merge(1, -1, h >= 0.0_wp)
+   end function front_side
 
    !> The shin capsule against the lower panel's edge ed (D-C2): the line
    !! part (F2-2, F2-3) between the tangent points, the knee or the ankle
