@@ -14,8 +14,9 @@
 !!   grid of spacing h (10 kHz unless the caller says, the sampling of
 !!   SAE J211 data), every pair of them within W: every window, not only
 !!   the longest from each start. HIC^2 = dV^5/dt^3 is compared, which
-!!   needs no power; a window is skipped when dV^2 a_max^3, a bound of
-!!   HIC^2 over every window ending there, cannot beat the best.
+!!   needs no power; the window lengths go in blocks, each skipped when
+!!   its bound (its longest window's dV over its shortest window's dt)
+!!   cannot beat the best.
 !! - The 3 ms clip: the level L that a(t) >= L for a cumulative 3 ms
 !!   ("except for intervals whose cumulative duration is not more than
 !!   3 milliseconds"); 0 when the history is shorter than 3 ms. The linear
@@ -53,14 +54,13 @@ module acceleration_criteria
       real(wp) :: v = 0.0_wp                     !< V at the last sample
       real(wp) :: t0 = 0.0_wp                    !< the first sample's time (grid point 0)
       real(wp) :: gsi = 0.0_wp
-      ! the grid: point k at t0 + k h; V there and a's largest over (k-1, k]
+      ! the grid: point k at t0 + k h, V there
       integer :: k = -1                          !< the last grid point reached
-      real(wp) :: a_int = 0.0_wp                 !< a's largest since grid point k
-      !> the last n_buf grid points' V and a's largest over (k-1, k], oldest
-      !! first in buf(p + 1 : p + n_buf): each written at p and p + n_buf,
-      !! so that every window is one contiguous slice (and its loops vectorize)
+      !> the last n_buf grid points' V, oldest first in v_buf(p + 1 : p +
+      !! n_buf): each written at p and p + n_buf, so that every window is one
+      !! contiguous slice
       integer :: n_buf = 0, p = 0
-      real(wp), allocatable :: v_buf(:), a_buf(:)
+      real(wp), allocatable :: v_buf(:)
       real(wp), allocatable :: inv_dt3(:)        !< 1/(m h)^3, m = 1 .. n_buf - 1
       logical :: with_hic = .true.               !< the HIC searches (the head's)
       type(hic_search_t) :: hic(2)               !< 15 ms and 36 ms
@@ -96,9 +96,8 @@ contains
       c%hic(1)%n_window = nint(15.0e-3_wp/c%h)
       c%hic(2)%n_window = nint(36.0e-3_wp/c%h)
       c%n_buf = maxval(c%hic%n_window) + 1
-      allocate (c%v_buf(0:2*c%n_buf - 1), c%a_buf(0:2*c%n_buf - 1), c%piece(3, 256))
+      allocate (c%v_buf(0:2*c%n_buf - 1), c%piece(3, 256))
       c%v_buf = 0.0_wp
-      c%a_buf = 0.0_wp
       c%p = c%n_buf - 1
       c%inv_dt3 = [(1.0_wp/(real(m, wp)*c%h)**3, m=1, c%n_buf - 1)]
    end subroutine setup
@@ -116,7 +115,6 @@ contains
          this%t = t
          this%a = a
          this%k = -1
-         this%a_int = a
          call next_grid_point(this, 0.0_wp)
          return
       end if
@@ -130,10 +128,8 @@ contains
          if (tk > t) exit
          ak = this%a
          if (dt > 0.0_wp) ak = this%a + (a - this%a)*(tk - this%t)/dt
-         this%a_int = max(this%a_int, this%a, ak)
          call next_grid_point(this, this%v + 0.5_wp*(tk - this%t)*(this%a + ak))
       end do
-      this%a_int = max(this%a_int, this%a, a)
       this%v = this%v + 0.5_wp*dt*(this%a + a)
       this%t = t
       this%a = a
@@ -157,34 +153,27 @@ contains
       top = this%p + n
       this%v_buf(this%p) = v_k
       this%v_buf(top) = v_k
-      this%a_buf(this%p) = this%a_int              ! a's largest over (k-1, k]
-      this%a_buf(top) = this%a_int
-      this%a_int = 0.0_wp
       if (.not. this%with_hic) return
       do q = 1, size(this%hic)
          w = min(this%hic(q)%n_window, this%k)
-         if (w > 0) call search_windows(this%hic(q), this%v_buf(top - w:top), this%a_buf(top - w + 1:top), &
-                                        this%inv_dt3, this%k)
+         if (w > 0) call search_windows(this%hic(q), this%v_buf(top - w:top), this%inv_dt3, this%k)
       end do
    end subroutine next_grid_point
 
    !> The windows (k - m, k], m = 1 .. w, against the best so far: v holds
-   !! V at grid points k - w .. k, a the largest a over the w intervals. The
-   !! windows go in blocks of hic_block lengths, each skipped when its bound
-   !! (its longest window's dV over its shortest window's dt) cannot beat the
-   !! best: in a plateau only the blocks near the best length are evaluated.
-   pure subroutine search_windows(s, v, a, inv_dt3, k)
+   !! V at grid points k - w .. k. The windows go in blocks of hic_block
+   !! lengths, each skipped when its bound (its longest window's dV over its
+   !! shortest window's dt) cannot beat the best: in a plateau only the
+   !! blocks near the best length are evaluated.
+   pure subroutine search_windows(s, v, inv_dt3, k)
       type(hic_search_t), intent(inout) :: s
-      real(wp), intent(in) :: v(0:), a(:), inv_dt3(:)
+      real(wp), intent(in) :: v(0:), inv_dt3(:)
       integer, intent(in) :: k
       integer, parameter :: hic_block = 8
       real(wp) :: vk, x, r, r_best
       integer :: w, m, m_lo, m_hi, m_best
-      w = size(a)
+      w = size(v) - 1
       vk = v(w)
-      ! dV^5/dt^3 = dV^2 (dV/dt)^3 <= (V_k - V_{k-w})^2 a_max^3 for every window
-      x = vk - v(0)
-      if (.not. x*x*maxval(a)**3 > s%best2) return
       r_best = s%best2
       m_best = 0
       do m_hi = w, 1, -hic_block
