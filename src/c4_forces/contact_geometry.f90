@@ -168,7 +168,7 @@ contains
                te = merge(sf%t_open(1), sf%t_open(2), tt - sf%t_open(1) <= sf%t_open(2) - tt)
             end if
             if (te < 0.0_wp .and. present(behind)) then
-               if (behind) te = merge(0.0_wp, sf%d, tt <= 0.5_wp*sf%d)   ! from behind: the nearer end
+               if (behind) te = nearest_end(sf, tt)      ! from behind: the nearest free end
             end if
          end if
          if (te >= 0.0_wp) then   ! a corner at the end (or the opening's edge) nearest (D-C16)
@@ -218,8 +218,26 @@ contains
       nk = [-tk(2), tk(1)]
       tt = dot_product(sf%s - f%p, tk)
       h = dot_product(f%p - sf%s, nk)
-      if (tt < 0.0_wp .or. tt > sf%d .or. h >= f%r) side = merge(1, -1, h >= 0.0_wp)
+      ! decided where only the ends act (beyond them, or in the rim's opening)
+      ! or where nothing touches (r in front): face and ends agree there
+      if (tt < 0.0_wp .or. tt > sf%d .or. h >= f%r) then
+         side = merge(1, -1, h >= 0.0_wp)
+      else if (sf%t_open(2) > sf%t_open(1) .and. tt > sf%t_open(1) .and. tt < sf%t_open(2)) then
+         side = merge(1, -1, h >= 0.0_wp)
+      end if
    end function front_side
+
+   !> The free end of a flat surface nearest to position tt along it: its
+   !! two ends and, for the rim, the edges of its opening.
+   pure real(wp) function nearest_end(sf, tt) result(te)
+      type(contact_surface_t), intent(in) :: sf
+      real(wp), intent(in) :: tt
+      te = merge(0.0_wp, sf%d, tt <= 0.5_wp*sf%d)
+      if (sf%t_open(2) > sf%t_open(1)) then
+         if (abs(tt - sf%t_open(1)) < abs(tt - te)) te = sf%t_open(1)
+         if (abs(tt - sf%t_open(2)) < abs(tt - te)) te = sf%t_open(2)
+      end if
+   end function nearest_end
 
    !> The shin capsule against the lower panel's edge ed (D-C2): the line
    !! part (F2-2, F2-3) between the tangent points, the knee or the ankle
