@@ -95,6 +95,17 @@ contains
       end do
       allocate (pairs(0))      ! (realloc on assignment: a descriptor set first)
       pairs = scene_pairs(m)
+      ! an opening narrower than a body point's arc would flip its force at the
+      ! middle (only the nearer edge acts): refused (review of issue 7)
+      if (m%interior%di > 0.0_wp) then
+         do q = 1, size(pairs)
+            if (pairs(q)%k /= 10) cycle
+            if (m%interior%di < 2.0_wp*m%body%r_arc(pairs(q)%i)) call problem_at(deck, err, g_interior, &
+               'DI = '//num(m%interior%di)//' in: the rim''s opening is narrower than the arc of body point ' &
+               //itoa(pairs(q)%i)//' (diameter '//num(2.0_wp*m%body%r_arc(pairs(q)%i))//' in), which would meet ' &
+               //'both its edges; give DI at least that, or 0 for no opening')
+         end do
+      end if
       if (m%options%nend == nend_contact) then
          if (.not. any([(is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k), q=1, size(pairs))])) &
             call problem(deck, err, deck%group(g_options)%card(1), 'field NEND = 2: the undesired-contact test ' &

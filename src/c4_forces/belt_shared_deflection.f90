@@ -469,6 +469,17 @@ contains
          if (loading(i) .and. split%rate(i) > 0.0_wp) split%aux_rate(aux_absorbed, i) = split%branch*split%rate(i)
          split%aux_rate(aux_rate_work, i) = lambda*fv(i)*split%rate(i)
       end do
+      ! a gated element (the column): the gate's share of its work is crush
+      ! work, dissipated, not part of what its own law absorbs and returns
+      ! (so its stored energy comes from its own curve only; review of issue 7)
+      if (present(gate)) then
+         do i = 1, n
+            if (.not. gate(i) > 0.0_wp) cycle
+            if (split%aux_rate(aux_absorbed, i) > 0.0_wp) split%aux_rate(aux_absorbed, i) = &
+               (split%branch - gate(i))*split%rate(i)
+            split%aux_rate(aux_rate_work, i) = split%aux_rate(aux_rate_work, i) + gate(i)*split%rate(i)
+         end do
+      end if
    contains
       !> A gated element (the column) and a capped one (its padding): the
       !! column stays at its zero-force extent while the padding takes the

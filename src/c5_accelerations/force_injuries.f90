@@ -45,9 +45,9 @@ module force_injuries
    logical, parameter :: fs_defined(n_injury) = [.true., .true., .true., .true., .true., .true., .true., .true., &
                                                  .true., .false.]
    !> The surfaces the face meets head-on (F7-1): windshield, upper panel,
-   !! back of the front seat, column, rim, side rim; the head's other
-   !! contacts load the skull.
-   integer, parameter :: face_on(6) = [2, 4, 7, 8, 10, 30]
+   !! back of the front seat and of its head rest (1*), column, rim, side
+   !! rim; the head's other contacts load the skull.
+   integer, parameter :: face_on(7) = [2, 4, 7, 8, 10, 21, 30]
    !> The joint at whose reaction bone i's compression is taken (i = 1..8).
    integer, parameter :: fc_joint(n_seg) = [2, 2, 3, 4, 5, 6, 1, 7]
 
