@@ -246,9 +246,19 @@ contains
       type(contact_feature_t), intent(in) :: f
       real(wp), intent(in) :: ed(2)
       type(contact_state_t) :: cs
-      real(wp) :: u(2), m(2), tt, t_end, v(2), d
-      u = e(f%theta - f%alpha0)
-      m = [-u(2), u(1)]
+      real(wp) :: u(2), m(2), tt, t_end, v(2), d, axis_n(2)
+      ! the capsule's side the edge is on: the front tangent (F2-2, F2-3) or,
+      ! for an edge behind the shank's axis, the back one (its mirror), so
+      ! the shin is the convex hull of its two circles on both sides (D-C2;
+      ! review of issue 7). They agree on the axis.
+      axis_n = [-sin(f%theta), cos(f%theta)]
+      if (dot_product(ed - f%joint, axis_n) >= 0.0_wp) then
+         u = e(f%theta - f%alpha0)
+         m = [-u(2), u(1)]
+      else
+         u = e(f%theta + f%alpha0)
+         m = [u(2), -u(1)]
+      end if
       tt = dot_product(ed - f%joint, u)                  ! T_9 (F2-3)
       t_end = norm2(f%ankle - f%joint)*cos(f%alpha0)
       if (tt >= 0.0_wp .and. tt <= t_end) then
