@@ -130,9 +130,6 @@ contains
       type(vehicle_section_t), intent(in) :: v
       real(wp), intent(out) :: rate_diff(3), rate_time(3), pos_diff(3), pos_time(3)
       type(vehicle_section_t) :: lower
-      type(vehicle_motion_t) :: vm
-      type(vehicle_state_t) :: vs
-      integer :: k, j
       rate_diff = 0.0_wp
       rate_time = 0.0_wp
       pos_diff = 0.0_wp
@@ -140,32 +137,37 @@ contains
       lower = v
       if (allocated(lower%pulse_pos%t)) then
          deallocate (lower%pulse_pos%t, lower%pulse_pos%v)
-         call vehicle_motion_init(lower, vm)
-         do k = 1, size(v%pulse_pos%t)
-            vs = vehicle_state_at(vm, v%pulse_pos%t(k))
-            do j = 1, 3
-               if (.not. v%pulse_pos%given(j)) cycle
-               if (abs(v%pulse_pos%v(k, j) - vs%pos(j)) > pos_diff(j)) then
-                  pos_diff(j) = abs(v%pulse_pos%v(k, j) - vs%pos(j))
-                  pos_time(j) = v%pulse_pos%t(k)
-               end if
-            end do
-         end do
+         call largest_difference(lower, v%pulse_pos, .true., pos_diff, pos_time)
       end if
       if (allocated(lower%pulse_vel%t)) then
          deallocate (lower%pulse_vel%t, lower%pulse_vel%v)
+         call largest_difference(lower, v%pulse_vel, .false., rate_diff, rate_time)
+      end if
+   contains
+      !> Table tab against the motion of `lower` (the tables below it):
+      !! positions if is_pos, else rates.
+      pure subroutine largest_difference(lower, tab, is_pos, diff, time)
+         type(vehicle_section_t), intent(in) :: lower
+         type(pulse_table_t), intent(in) :: tab
+         logical, intent(in) :: is_pos
+         real(wp), intent(inout) :: diff(3), time(3)
+         type(vehicle_motion_t) :: vm
+         type(vehicle_state_t) :: vs
+         real(wp) :: moved(3)
+         integer :: k, j
          call vehicle_motion_init(lower, vm)
-         do k = 1, size(v%pulse_vel%t)
-            vs = vehicle_state_at(vm, v%pulse_vel%t(k))
+         do k = 1, size(tab%t)
+            vs = vehicle_state_at(vm, tab%t(k))
+            moved = merge(vs%pos, vs%vel, is_pos)
             do j = 1, 3
-               if (.not. v%pulse_vel%given(j)) cycle
-               if (abs(v%pulse_vel%v(k, j) - vs%vel(j)) > rate_diff(j)) then
-                  rate_diff(j) = abs(v%pulse_vel%v(k, j) - vs%vel(j))
-                  rate_time(j) = v%pulse_vel%t(k)
+               if (.not. tab%given(j)) cycle
+               if (abs(tab%v(k, j) - moved(j)) > diff(j)) then
+                  diff(j) = abs(tab%v(k, j) - moved(j))
+                  time(j) = tab%t(k)
                end if
             end do
          end do
-      end if
+      end subroutine largest_difference
    end subroutine vehicle_table_differences
 
    !> The vehicle's position, rate and acceleration at time t.

@@ -39,7 +39,7 @@
 module belt_forces
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
    use kinds, only: wp, deg
-   use strings, only: num, itoa
+   use strings, only: num, itoa, upper
    use model, only: model_t, n_dof, n_seg, belt_card_lap2, coupling_torso
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
       point_force_list_t, point_force_add, &
@@ -454,16 +454,6 @@ contains
          series(out_energy)%col = [series(out_energy)%col, &
                                    column(trim(this%label(this%chain(c)%section(1)))//'_supplied', 'in*lb')]
       end do
-   contains
-      pure function upper(s) result(u)
-         character(len=*), intent(in) :: s
-         character(len=len(s)) :: u
-         integer :: i
-         u = s
-         do i = 1, len(s)
-            if (s(i:i) >= 'a' .and. s(i:i) <= 'z') u(i:i) = achar(iachar(s(i:i)) - 32)
-         end do
-      end function upper
    end function belt_outputs
 
    pure subroutine belt_output_values(this, item, st, extra, aux, values)
