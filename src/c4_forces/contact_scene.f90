@@ -11,7 +11,7 @@ module contact_scene
    use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle, surface_point
    use contact_tables, only: contact_pair_t, position_pairs, surface_materials, is_undesired, is_shared, body_material
    use contact_forces, only: contact_pair_effect_t, contact_pair_effect
-   use recurrent_loading, only: material_law
+   use recurrent_loading, only: recurrent_law_t, material_law
    implicit none
    private
 
@@ -141,12 +141,17 @@ contains
       end do
    end function scene_pairs
 
-   !> The contact effects of the scene, one per pair (D-C15).
+   !> The contact effects of the scene, one per pair (D-C15). A backing
+   !! (padding or mat bottoming out at eta D'' on it) and the body's own
+   !! material in front (Table 11, figure 23) are passed only where the
+   !! scene has them: an unallocated actual argument is an absent optional.
    function scene_contact_effects(m) result(effects)
       type(model_t), intent(in) :: m
       type(contact_pair_effect_t), allocatable :: effects(:)
       type(contact_pair_t), allocatable :: pairs(:)
       type(contact_surface_t) :: sf
+      type(recurrent_law_t), allocatable :: backing, body_law
+      real(wp), allocatable :: cap
       logical :: ok
       integer :: q
       allocate (pairs(0))
@@ -156,32 +161,18 @@ contains
          call resolved_surface(m%interior, pairs(q)%k, sf, ok)
          associate (l => pair_material(m%interior, pairs(q)%k), lb => backing_material(m%interior, pairs(q)%k), &
                     kd => merge(5, pairs(q)%k, pairs(q)%k == 25), lbody => shared_material(m, pairs(q)))
-            if (lbody > 0 .and. lb > 0) then    ! Table 11: the body's material in front (figure 23)
-               effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
-                                                material_law(m%materials, m%loading, l), m%materials%mu(l), &
-                                                m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
-                                                pairs(q)%k), backing=material_law(m%materials, m%loading, lb), &
-                                                cap=m%materials%eta(l)*m%interior%dpp(kd), &
-                                                body_law=material_law(m%materials, m%loading, lbody), &
-                                                gated=lb == 10)
-            else if (lbody > 0) then
-               effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
-                                                material_law(m%materials, m%loading, l), m%materials%mu(l), &
-                                                m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
-                                                pairs(q)%k), merge(m%materials%fsw, 0.0_wp, l == 2), &
-                                                body_law=material_law(m%materials, m%loading, lbody))
-            else if (lb > 0) then       ! padding (or mat) bottoming out at eta D'' on its backing
-               effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
-                                                material_law(m%materials, m%loading, l), m%materials%mu(l), &
-                                                m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
-                                                pairs(q)%k), backing=material_law(m%materials, m%loading, lb), &
-                                                cap=m%materials%eta(l)*m%interior%dpp(kd), gated=lb == 10)
-            else
-               effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
-                                                material_law(m%materials, m%loading, l), m%materials%mu(l), &
-                                                m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, &
-                                                pairs(q)%k), merge(m%materials%fsw, 0.0_wp, l == 2))
+            if (allocated(backing)) deallocate (backing, cap)
+            if (allocated(body_law)) deallocate (body_law)
+            if (lb > 0) then
+               backing = material_law(m%materials, m%loading, lb)
+               cap = m%materials%eta(l)*m%interior%dpp(kd)
             end if
+            if (lbody > 0) body_law = material_law(m%materials, m%loading, lbody)
+            effects(q) = contact_pair_effect(m%body, pairs(q)%i, pairs(q)%k, sf, &
+                                             material_law(m%materials, m%loading, l), m%materials%mu(l), &
+                                             m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k), &
+                                             merge(m%materials%fsw, 0.0_wp, l == 2), backing=backing, cap=cap, &
+                                             body_law=body_law, gated=lb == 10)
          end associate
       end do
    end function scene_contact_effects
