@@ -106,6 +106,12 @@ contains
                //'both its edges; give DI at least that, or 0 for no opening')
          end do
       end if
+      ! the shin (body point 9) is the common tangent of the knee and ankle
+      ! circles (D-C2, alpha_0 of C.2): it needs |r_7 - r_A| < L8
+      if (any(pairs%i == 9) .and. .not. abs(m%body%r_arc(7) - m%body%r_arc(11)) < m%body%length(8)) &
+         call problem_at(deck, err, g_arcs, 'the shin''s contacts need |r_7 - r_A| < L8 (the knee and ankle ' &
+            //'arcs and the lower leg''s length, *ARCS and *SEGMENTS): here |' //num(m%body%r_arc(7))//' - ' &
+            //num(m%body%r_arc(11))//'| against '//num(m%body%length(8))//' in')
       if (m%options%nend == nend_contact) then
          if (.not. any([(is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k), q=1, size(pairs))])) &
             call problem(deck, err, deck%group(g_options)%card(1), 'field NEND = 2: the undesired-contact test ' &

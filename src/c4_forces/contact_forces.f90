@@ -134,9 +134,9 @@ contains
       e%needs_vehicle = .true.
       e%external = .true.
       e%has_energy = .true.
-      e%has_memory = .not. recurrent_is_elastic(law) .or. e%mu > 0.0_wp .or. e%undesired .or. e%fsw > 0.0_wp &
+      e%has_memory = e%mu > 0.0_wp .or. e%undesired .or. e%fsw > 0.0_wp &
                      .or. sf%kind == surface_flat      ! the side it came from (D-C16a)
-      do q = 2, e%n_elem
+      do q = 1, e%n_elem                               ! (the body's material too)
          e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%law(q))
       end do
       e%aux_friction = n_loading_aux*e%n_elem + 1
