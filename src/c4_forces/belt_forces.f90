@@ -537,7 +537,7 @@ contains
       do c = 1, this%n_chains
          if (bs%split(c)%status == split_ok) cycle
          text = trim(this%title)//', '//trim(this%label(this%chain(c)%section(1)))//': ' &
-                //chain_split_text(bs%split(c), bs%s(c), bs%s_dot(c), this%max_iter)
+                //chain_split_text(bs%split(c), bs%s(c), bs%s_dot(c), this%max_iter, ' (*BELTOPTIONS ITER)')
          return
       end do
    end function belt_failure_text

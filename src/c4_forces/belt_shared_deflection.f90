@@ -833,15 +833,17 @@ contains
    end subroutine chain_split_by_force
 
    !> Why a split failed, for the failure message.
-   pure function chain_split_text(split, s, s_dot, max_iter) result(text)
+   pure function chain_split_text(split, s, s_dot, max_iter, setting) result(text)
       type(chain_split_t), intent(in) :: split
       real(wp), intent(in) :: s, s_dot
       integer, intent(in) :: max_iter
+      character(len=*), intent(in), optional :: setting   !< where the deck sets max_iter, e.g. ' (*BELTOPTIONS ITER)'
       character(len=:), allocatable :: text
       select case (split%status)
       case (split_no_convergence)
-         text = 'the shared deflection did not converge within '//itoa(max_iter)//' iterations ' &
-                //'(*BELTOPTIONS ITER) at the deformation '//num(s)//' in, rate '//num(s_dot)//' in/s'
+         text = 'the shared deflection did not converge within '//itoa(max_iter)//' iterations'
+         if (present(setting)) text = text//setting
+         text = text//' at the deformation '//num(s)//' in, rate '//num(s_dot)//' in/s'
       case (split_not_finite)
          text = 'the shared deflection met a value that is not finite (deformation '//num(s)//' in, rate ' &
                 //num(s_dot)//' in/s)'

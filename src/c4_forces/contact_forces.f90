@@ -27,7 +27,8 @@ module contact_forces
       arc_segment, front_side, surface_flat
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
       recurrent_is_elastic, n_loading_aux
-   use belt_shared_deflection, only: chain_split_t, chain_split, split_ok, branch_point_t, branch_at
+   use belt_shared_deflection, only: chain_split_t, chain_split, split_ok, branch_point_t, branch_at, &
+      chain_split_text
    use dead_band, only: slip_of
    implicit none
    private
@@ -77,6 +78,7 @@ module contact_forces
       procedure :: output_values => pair_output_values
       procedure :: point_forces => pair_point_forces
       procedure :: describe => pair_describe
+      procedure :: failure_text => pair_failure_text
    end type contact_pair_effect_t
 
    !> Everything about the pair at one state.
@@ -372,4 +374,20 @@ contains
       character(len=:), allocatable :: text
       text = trim(this%title)//': surface at ('//num(this%surface%s(1))//', '//num(this%surface%s(2))//') in'
    end function pair_describe
+
+   !> Why the last evaluation at this state failed ('' when it did not):
+   !! the chain's split of the deflection (figure 23) found no force.
+   pure function pair_failure_text(this, st, extra, aux) result(text)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      character(len=:), allocatable :: text
+      type(pair_state_t) :: ps
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      text = ''
+      ps = pair_state(this, st)
+      if (ps%split%status /= split_ok) text = trim(this%title)//': ' &
+         //chain_split_text(ps%split, ps%cs%delta, ps%cs%delta_dot, this%max_iter)
+   end function pair_failure_text
 end module contact_forces
