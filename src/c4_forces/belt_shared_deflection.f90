@@ -298,7 +298,7 @@ contains
       end if
    end subroutine branch_eval
 
-   !> (D-B9) A plastic element (R = 0) that has turned: its graph is a
+   !> (D-B10) A plastic element (R = 0) that has turned: its graph is a
    !! vertical segment at delta_max, from 0 to f_max, where it is rigid -
    !! for a force up to f_max it keeps delta_max, beyond it it reloads.
    pure logical function held_plastic(law, mem)
@@ -606,9 +606,11 @@ contains
             if (slope(i) < rigid_slope) w(i) = 1.0_wp/slope(i)
             total = total + w(i)
          end do
-         do i = 1, n
-            w(i) = w(i)/total
-         end do
+         if (total > 0.0_wp) then
+            w(1:n) = w(1:n)/total
+         else
+            w(1:n) = 0.0_wp                        ! every element rigid: the chain takes no rate
+         end if
       end if
    end subroutine rate_weights
 
@@ -631,7 +633,7 @@ contains
       seg1 = 0
       seg2 = 0
       split%iterations = 0
-      ! (D-B9) a plastic element held at delta_max while the other carries no
+      ! (D-B10) a plastic element held at delta_max while the other carries no
       ! more than its f_max: the other takes the whole change
       do i = 1, 2
          if (.not. held_plastic(law(i), mem(i))) cycle
@@ -729,7 +731,11 @@ contains
          end if
          call branch_eval(law(i), mem(i), x_max(i), seg(i), bp)
          f_max(i) = bp%force + f_gate(i)
-         secant(i) = f_max(i)/(x_max(i) - z(i))
+         if (x_max(i) > z(i)) then
+            secant(i) = f_max(i)/(x_max(i) - z(i))
+         else
+            secant(i) = huge(1.0_wp)           ! a cap at or below its residual deformation: rigid
+         end if
       end do
       split%iterations = n
       f_hi = maxval(f_max(1:n))
@@ -769,7 +775,7 @@ contains
       do i = 1, n
          if ((held_plastic(law(i), mem(i)) .and. split%branch <= mem(i)%f_max) .or. split%branch >= f_cap(i) &
              .or. (f_gate(i) > 0.0_wp .and. split%branch <= f_gate(i))) then
-            slope(i) = rigid_slope        ! held (D-B9), bottomed out at its cap, or held by its gate
+            slope(i) = rigid_slope        ! held (D-B10), bottomed out at its cap, or held by its gate
             loading(i) = .false.
          else
             call branch_eval(law(i), mem(i), x(i), seg(i), bp)
@@ -792,7 +798,7 @@ contains
          dhf = 0.0_wp
          do k = 1, n
             if (held_plastic(law(k), mem(k)) .and. f <= mem(k)%f_max) then
-               xs(k) = mem(k)%delta_max    ! held, rigid: no compliance (D-B9)
+               xs(k) = mem(k)%delta_max    ! held, rigid: no compliance (D-B10)
                cycle
             end if
             if (f >= f_cap(k)) then
