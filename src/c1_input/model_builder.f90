@@ -98,6 +98,10 @@ contains
       ! an opening narrower than a body point's arc would flip its force at the
       ! middle (only the nearer edge acts): refused (review of issue 7)
       if (m%interior%di > 0.0_wp) then
+         ! an opening as wide as the rim would leave no rim (D-C11)
+         if (m%interior%given(10) .and. .not. m%interior%di < m%interior%d(10)) call problem_at(deck, err, &
+            g_interior, 'DI = '//num(m%interior%di)//' in: the rim''s opening must be narrower than the rim, ' &
+            //'D = '//num(m%interior%d(10))//' in (*SURFACES 10)')
          do q = 1, size(pairs)
             if (pairs(q)%k /= 10) cycle
             if (m%interior%di < 2.0_wp*m%body%r_arc(pairs(q)%i)) call problem_at(deck, err, g_interior, &
