@@ -120,7 +120,7 @@ contains
    end function recurrent_law
 
    !> What is wrong with G and R, or '' (docs/loading.md 3): 0 <= G <= 1,
-   !! 0 <= R <= 1 and R <= 1 - G. An unloading curve that ends at G d_max and
+   !! 0 <= R <= 1, R <= 1 - G, and G = 1 where R = 0. An unloading curve that ends at G d_max and
    !! does not rise above the loading curve returns at most (1 - G) times the
    !! loading work along the curves of docs/loading.md; more would need an
    !! unloading path above the loading path, which would create energy on the
@@ -133,6 +133,10 @@ contains
          message = 'G = '//num(g)//' must lie from 0 to 1'
       else if (r < 0.0_wp .or. r > 1.0_wp) then
          message = 'R = '//num(r)//' must lie from 0 to 1'
+      else if (r <= 0.0_wp .and. g < 1.0_wp - ratio_slack) then
+         message = 'R = 0 needs G = 1 (here G = '//num(g)//'): an element that returns none of the energy ' &
+                   //'it absorbed falls straight to zero force at its maximum deformation and keeps all of it ' &
+                   //'(docs/loading.md 3)'
       else if (r > 1.0_wp - g + ratio_slack) then
          message = 'R = '//num(r)//' exceeds 1 - G = '//num(1.0_wp - g)//': an element that keeps G of ' &
                    //'its maximum deformation cannot return more than 1 - G of the energy it absorbed ' &
