@@ -16,7 +16,7 @@ module contact_geometry
    private
 
    public :: contact_feature_t, contact_surface_t, contact_state_t
-   public :: body_feature, shin_alpha0, contact_check, arc_segment, front_side
+   public :: body_feature, shin_alpha0, contact_check, arc_segment, front_side, e
    public :: surface_flat, surface_line, surface_circle, surface_point
    public :: region_none, region_face, region_corner, region_circle, region_shin_line, region_shin_knee, &
       region_shin_ankle
@@ -126,6 +126,7 @@ contains
       end select
    end function body_feature
 
+   !> The unit vector at angle a: (cos a, sin a).
    pure function e(a) result(v)
       real(wp), intent(in) :: a
       real(wp) :: v(2)

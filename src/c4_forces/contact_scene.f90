@@ -8,7 +8,7 @@
 module contact_scene
    use kinds, only: wp, pi
    use model, only: model_t, interior_section_t
-   use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle, surface_point
+   use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle, surface_point, e
    use contact_tables, only: contact_pair_t, position_pairs, surface_materials, is_undesired, is_shared, body_material
    use contact_forces, only: contact_pair_effect_t, contact_pair_effect
    use recurrent_loading, only: recurrent_law_t, material_law
@@ -18,12 +18,6 @@ module contact_scene
    public :: resolved_surface, pair_material, backing_material, scene_pairs, scene_contact_effects
 
 contains
-
-   pure function e(a) result(v)
-      real(wp), intent(in) :: a
-      real(wp) :: v(2)
-      v = [cos(a), sin(a)]
-   end function e
 
    !> Surface k with f.2's relations resolved; ok false when the deck does
    !! not describe it (or what it derives from).
