@@ -45,7 +45,7 @@ module belt_shared_deflection
    implicit none
    private
 
-   public :: max_chain, branch_point_t, branch_at, zero_extent, curve_slope, scaled_law
+   public :: max_chain, branch_point_t, branch_at, zero_extent, scaled_law
    public :: chain_split_t, chain_split, chain_split_text
    public :: split_ok, split_no_convergence, split_not_finite
    public :: region_slack, region_unloaded, region_loaded
@@ -223,26 +223,6 @@ contains
       end if
       lo = table_interval(defl, d)
    end function table_interval_from
-
-   !> dF_e/dd of a curve (right derivative; 0 for d <= 0).
-   pure real(wp) function curve_slope(c, d) result(k)
-      type(loading_curve_t), intent(in) :: c
-      real(wp), intent(in) :: d
-      integer :: n, lo
-      k = 0.0_wp
-      if (.not. d > 0.0_wp) return
-      select case (c%form)
-      case (curve_polynomial)
-         do n = c%order, 2, -1
-            k = (k + real(n, wp)*c%sigma(n))*d
-         end do
-         k = k + c%sigma(1)
-      case (curve_table)
-         lo = table_interval(c%defl, d)      ! the last one beyond the table
-         k = (c%force(lo + 1) - c%force(lo))/(c%defl(lo + 1) - c%defl(lo))
-      end select
-      k = max(k, 0.0_wp)
-   end function curve_slope
 
    !> The branch of figure 18 at deformation x with the memory as it stands:
    !! the same selection and force as recurrent_loading's recurrent_eval
