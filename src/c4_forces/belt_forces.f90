@@ -379,6 +379,8 @@ contains
             if (s_dot > 0.0_wp .and. .not. any(ch%mem(1:n)%unloading)) cycle
             call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, &
                              aux(ch%start_aux))
+            ! a split that fails here fails again at the next step's first
+            ! evaluation of this state, which ends the run with failure_text
             if (sp%status /= split_ok) cycle
             do i = 1, n
                call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), sp%rate(i), changed)
