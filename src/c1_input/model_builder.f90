@@ -201,6 +201,10 @@ contains
                             //itoa(nbody)//'''s (Tables 7, 8); body point '//itoa(i)//' has '//surfaces_of(i))
                cycle
             end if
+            if (any(it%off(1, :) == i .and. it%off(2, :) == kk)) then
+               call problem(deck, err, g%card(q), 'the pair ('//itoa(i)//', '//itoa(kk)//') is switched off twice')
+               cycle
+            end if
             it%off = reshape([it%off, [i, kk]], [2, size(it%off, 2) + 1])
          end do
       end associate
