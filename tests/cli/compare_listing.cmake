@@ -3,7 +3,8 @@
 # 1e-9. The listings are archived from the Debug build the tests use; a
 # Release build differs in printed last digits (lap_belt, free_fall's time
 # of a tied maximum) and, for the interior deck, from the first contact
-# impacts on (docs/contacts.md, status), so compare with the Debug build.
+# impacts on, the friction's held direction (docs/contacts.md, open point 11),
+# so compare with the Debug build.
 # The deck is named relative to its directory so that the listing, which
 # names its decks, does not depend on where the source tree lies.
 file(MAKE_DIRECTORY ${WORK})
