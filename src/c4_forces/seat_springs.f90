@@ -293,7 +293,9 @@ contains
       real(wp) :: u, lo, hi, mid, ue, step
       integer :: it, j
       integer, parameter :: n_scan = 64
-      if (.not. f0 > 0.0_wp .or. .not. d > 0.0_wp) then
+      ! (no load, or an energy too small to give a positive compression:
+      ! u = 2 v0/f0 would be 0 and k = f0/u infinite)
+      if (.not. f0 > 0.0_wp .or. .not. d > 0.0_wp .or. .not. v0 > 0.0_wp) then
          ref = max(ref0, d, 0.0_wp)
          if (case == case_b) k = beta(1)
          return
