@@ -866,7 +866,7 @@ contains
       type(output_registry_t), intent(in) :: reg
       type(run_summary_t), intent(in) :: res
       character(len=132) :: line
-      character(len=:), allocatable :: head
+      character(len=:), allocatable :: head, ev
       integer :: i, o, k
 
       call lst%new_page('SUMMARY (C.6, C.7)')
@@ -905,26 +905,26 @@ contains
                    '          ', size(res%occ) > 1))
             select case (e%kind)
             case (event_tension)
-               line = head//' joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': force' &
+               ev = head//' joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': force' &
                       //fixed(e%value, 10, 1)//' lb, limit'//fixed(e%limit, 10, 1)//' lb'
             case (event_shatter)
-               line = head//' windshield shattered by point '//arc_name(e%index)//': force'//fixed(e%value, 10, 1) &
+               ev = head//' windshield shattered by point '//arc_name(e%index)//': force'//fixed(e%value, 10, 1) &
                       //' lb, FSW'//fixed(e%limit, 10, 1)//' lb'
             case (event_cut)
-               line = head//' point '//arc_name(e%index)//' cut on the broken windshield: penetration' &
+               ev = head//' point '//arc_name(e%index)//' cut on the broken windshield: penetration' &
                       //fixed(e%value, 9, 3)//' in'
             case (event_undesired)
-               line = head//' point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
+               ev = head//' point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
                       //'): undesired contact (Table 9), force'//fixed(e%value, 10, 1)//' lb'
             case (event_compression, event_shear)
-               line = head//' bone '//merge(fc_name(e%index), fs_name(e%index), e%kind == event_compression) &
+               ev = head//' bone '//merge(fc_name(e%index), fs_name(e%index), e%kind == event_compression) &
                       //'  '//trim(event_kind_name(e%kind))//': force'//fixed(e%value, 10, 1)//' lb, limit' &
                       //fixed(e%limit, 10, 1)//' lb'
             case default
-               line = head//' joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': angle' &
+               ev = head//' joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': angle' &
                       //fixed(e%value/deg, 9, 3)//' deg, limit'//fixed(e%limit/deg, 9, 3)//' deg'
             end select
-            call lst%put(line)
+            call put_wrapped(lst, '', ev)    ! (two occupants' undesired contacts pass 130 columns)
          end associate
       end do
       do o = 1, size(res%occ)
