@@ -26,14 +26,15 @@ module contact_forces
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
       arc_segment, front_side, surface_flat
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
-      recurrent_is_elastic, n_loading_aux
+      recurrent_is_elastic, n_loading_aux, aux_work, aux_absorbed
+   use loading_curves, only: curve_energy
    use belt_shared_deflection, only: chain_split_t, chain_split, split_ok, branch_point_t, branch_at, &
       chain_split_text
    use dead_band, only: slip_of
    implicit none
    private
 
-   public :: contact_pair_effect_t, contact_pair_effect
+   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial
 
 
    type, extends(effect_t) :: contact_pair_effect_t
@@ -69,6 +70,9 @@ module contact_forces
       real(wp) :: fsw = 0.0_wp                  !< 0: never shatters
       logical :: shattered = .false., cutting = .false.
       real(wp) :: e_switch = 0.0_wp
+      !> D-C26: each element's curve energy at its initial deformation, where
+      !! its W and E_abs start (the penetration counts as a loading before t = 0)
+      real(wp) :: e_initial(3) = 0.0_wp
       integer :: max_iter = 60
    contains
       procedure :: add_forces => pair_add_forces
@@ -298,7 +302,7 @@ contains
       end associate
       e = 0.0_wp
       do q = 1, this%n_elem
-         call recurrent_energies(this%law(q), aux(n_loading_aux*(q - 1) + 1:n_loading_aux*q), ce, de)
+         call recurrent_energies(this%law(q), element_aux(this, aux, q), ce, de)
          e(energy_stored) = e(energy_stored) + ce
          e(energy_dissipated) = e(energy_dissipated) + de
       end do
@@ -306,6 +310,34 @@ contains
       e(energy_dissipated) = e(energy_dissipated) + aux(this%aux_friction) + this%e_switch
       e(energy_supplied) = aux(this%aux_supplied)
    end subroutine pair_energy
+
+   !> Element q's W, E_abs, D_v: the integrated ones plus, for W and E_abs,
+   !! its initial curve energy (D-C26).
+   pure function element_aux(this, aux, q) result(a)
+      class(contact_pair_effect_t), intent(in) :: this
+      real(wp), intent(in) :: aux(:)
+      integer, intent(in) :: q
+      real(wp) :: a(n_loading_aux)
+      a = aux(n_loading_aux*(q - 1) + 1:n_loading_aux*q)
+      a(aux_work) = a(aux_work) + this%e_initial(q)
+      a(aux_absorbed) = a(aux_absorbed) + this%e_initial(q)
+   end function element_aux
+
+   !> D-C26: the initial element energies at the initial state st (the
+   !! occupant at z0 in the vehicle at rest at pitch phi0): each element's
+   !! curve energy at its deformation, from zero memory.
+   pure subroutine pair_set_initial(this, st)
+      type(contact_pair_effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      type(pair_state_t) :: ps
+      integer :: q
+      this%e_initial = 0.0_wp
+      ps = pair_state(this, st)
+      if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
+      do q = 1, this%n_elem
+         this%e_initial(q) = curve_energy(this%law(q)%curve, ps%split%x(q))
+      end do
+   end subroutine pair_set_initial
 
    !> The elements' stored energy (E6-2), before any switch.
    pure real(wp) function stored_energy(this, aux) result(total)
@@ -315,7 +347,7 @@ contains
       integer :: q
       total = 0.0_wp
       do q = 1, this%n_elem
-         call recurrent_energies(this%law(q), aux(n_loading_aux*(q - 1) + 1:n_loading_aux*q), ce, de)
+         call recurrent_energies(this%law(q), element_aux(this, aux, q), ce, de)
          total = total + ce
       end do
    end function stored_energy

@@ -17,7 +17,8 @@ module effect_factory
    use seat_forces, only: seat_effect
    use belt_forces, only: belt_effect, belt_part_lap, belt_part_torso, belt_part_all
    use contact_scene, only: scene_contact_effects
-   use contact_forces, only: contact_pair_effect_t
+   use contact_forces, only: contact_pair_effect_t, pair_set_initial
+   use seat_geometry, only: rest_state
    implicit none
    private
 
@@ -50,6 +51,7 @@ contains
       if (nbelt_torso(m%options%nbelt) .and. m%belts%coupling /= coupling_all) call add(belt_effect(m, belt_part_torso))
       contacts = scene_contact_effects(m)                                               ! C.4.f, one per pair
       do i = 1, size(contacts)
+         call pair_set_initial(contacts(i), rest_state(z0, m%vehicle%phi0))             ! D-C26
          call add(contacts(i))
       end do
    contains
