@@ -107,14 +107,17 @@ contains
       function energy_summary(occ) result(es)
          type(occupant_t), intent(in) :: occ
          type(output_series_t) :: es
+         character(len=:), allocatable :: name
          es = series_new('energy/summary', 'ENERGIES', 'energies (C.6): vehicle and body kinetic, each effect''s ' &
-                         //'stored, dissipated and supplied energy; total_body = body kinetic + stored + ' &
-                         //'dissipated - supplied, constant up to the integration error (balance_err)', 1)
+                         //'stored, dissipated and supplied energy (effects whose columns share a name, the ' &
+                         //'contact pairs, summed); total_body = body kinetic + stored + dissipated - supplied, ' &
+                         //'constant up to the integration error (balance_err)', 1)
          es%col = [column('ke_vehicle', 'in*lb'), column('ke_body', 'in*lb')]
          do k = 1, size(occ%effects)
             do kind = 1, n_energy_kinds
-               if (occ%effects(k)%e%has_energy(kind)) es%col = [es%col, &
-                  column(energy_column_name(occ%effects(k)%e%name, occ%effects(k)%e%has_energy, kind), 'in*lb')]
+               if (.not. occ%effects(k)%e%has_energy(kind)) cycle
+               name = energy_column_name(occ%effects(k)%e%name, occ%effects(k)%e%has_energy, kind)
+               if (.not. any(es%col%name == name)) es%col = [es%col, column(name, 'in*lb')]
             end do
          end do
          es%col = [es%col, column('total_body', 'in*lb'), column('balance_err', 'in*lb')]
@@ -212,16 +215,18 @@ contains
                else if (s%producer == producer_reactions) then
                   v = reactions(occ, st(o), s%item)
                else if (s%producer == producer_energy) then
+                  v = 0.0_wp
                   v(1) = bo(o)%ke_vehicle
                   v(2) = balance(o)%ke_body
-                  i = 2
                   do k2 = 1, size(occ%effects)
                      if (.not. any(occ%effects(k2)%e%has_energy)) cycle
                      call effect_energy(occ, k2, st(o), y, e)
                      do kind = 1, n_energy_kinds
                         if (.not. occ%effects(k2)%e%has_energy(kind)) cycle
-                        i = i + 1
-                        v(i) = e(kind)
+                        ! (the column of this name: shared by the contact pairs, summed)
+                        i = findloc(s%col%name == energy_column_name(occ%effects(k2)%e%name, &
+                                                                     occ%effects(k2)%e%has_energy, kind), .true., 1)
+                        v(i) = v(i) + e(kind)
                      end do
                   end do
                   v(n - 1) = balance(o)%total
