@@ -193,9 +193,13 @@ contains
       type(body_outputs_t), allocatable :: bo(:)
       real(wp) :: b(n_dof), e(n_energy_kinds)
       real(wp), allocatable :: extra_rate(:), aux_rate(:)
+      real(wp), allocatable :: ft(:, :), fs(:, :)   !< each occupant's joint tension and shear, once per frame
+      logical, allocatable :: solved(:)
       integer :: o, k, k2, kind, n, i, xo, ao
 
       allocate (st(size(sys%occupants)), bo(size(sys%occupants)), extra_rate(sys%layout%n), aux_rate(sys%layout%n))
+      allocate (ft(n_joint, size(sys%occupants)), fs(n_joint, size(sys%occupants)), source=0.0_wp)
+      allocate (solved(size(sys%occupants)), source=.false.)
       do o = 1, size(sys%occupants)
          associate (occ => sys%occupants(o))
             st(o) = system_body_state(sys, o, t, y)
@@ -213,7 +217,9 @@ contains
                if (s%producer == producer_body) then
                   call body_series_values(s%item, bo(o), v)
                else if (s%producer == producer_reactions) then
-                  v = reactions(occ, st(o), s%item)
+                  if (.not. solved(o)) call reactions(occ, st(o), ft(:, o), fs(:, o))
+                  solved(o) = .true.
+                  v = merge(ft(:, o), fs(:, o), s%item == 1)
                else if (s%producer == producer_energy) then
                   v = 0.0_wp
                   v(1) = bo(o)%ke_vehicle
@@ -250,18 +256,16 @@ contains
          end associate
       end do
    contains
-      !> FT (item 1) or FS (item 2) of every joint at the print time.
-      function reactions(occ, st, item) result(values)
+      !> FT and FS of every joint at the print time (both series from one solve).
+      subroutine reactions(occ, st, ft, fs)
          type(occupant_t), intent(in) :: occ
          type(body_state_t), intent(in) :: st
-         integer, intent(in) :: item
-         real(wp) :: values(n_joint)
+         real(wp), intent(out) :: ft(n_joint), fs(n_joint)
          type(point_force_list_t) :: list
-         real(wp) :: r(2, n_joint), ft(n_joint), fs(n_joint)
+         real(wp) :: r(2, n_joint)
          call occupant_point_forces(occ, st, y, list)
          r = joint_reaction_forces(occ%body, st%z, st%zdot, f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), list)
          call bone_components(r, st%z, ft, fs)
-         values = merge(ft, fs, item == 1)
-      end function reactions
+      end subroutine reactions
    end subroutine frame_fill
 end module output_producers
