@@ -2,11 +2,13 @@
 """tools/draw-interior on the timing deck's interior (tools/bench/
 interior_driver.deck: seat back, padded lower panel and its edge, toeboard,
 floor): the SVG names every resolved surface, draws the flat ones as
-segments from (X, Y) to their far end as the listing gives them, and the
+segments from (X, Y) to their far end as the listing gives them (their
+length and direction checked against the deck's D and PSI), and the
 occupant's seven joints.
 
 Usage: draw_interior_check.py HSRI2D TOOL DECK WORKDIR
 """
+import math
 import os
 import re
 import subprocess
@@ -34,8 +36,16 @@ if sorted(labels) != sorted(expected):
 joints = re.findall(r"<title>([a-z]+)</title>", text)
 if sorted(joints) != sorted(["hip", "lspine", "uspine", "neck", "shoulder", "elbow", "knee"]):
     fail(f"joints {joints}")
-if text.count('stroke-width="3"') < 3:
-    fail("fewer than three flat surfaces drawn as segments")
+# the flat surfaces as segments: length D and direction PSI + 180 deg (from
+# (X'', Y'') towards the far end) at the drawing's 10 px per inch, y down
+segments = re.findall(r'<line x1="([-.0-9]+)" y1="([-.0-9]+)" x2="([-.0-9]+)" y2="([-.0-9]+)" '
+                      r'stroke="black" stroke-width="3"/>', text)
+drawn = sorted((round(math.hypot(float(x2) - float(x1), float(y2) - float(y1)) / 10.0, 1),
+                round(math.degrees(math.atan2(float(y2) - float(y1), float(x1) - float(x2))), 0))
+               for x1, y1, x2, y2 in segments)
+flat = sorted([(12.0, 95.0), (10.0, 45.0), (20.0, -80.0)])    # the deck's D, PSI of surfaces 5, 6, 9
+if drawn != flat:
+    fail(f"flat surfaces drawn as (D, PSI) {drawn}, expected {flat}")
 # a bad deck: the tool says so and fails
 p = subprocess.run([sys.executable, tool, "--hsri2d", hsri2d, os.path.join(work, "missing.deck"), "-o", out],
                    capture_output=True, text=True)
