@@ -168,11 +168,11 @@ contains
             call table3(k, need, derived)
             do f = 1, 4
                if (derived(f) .and. card_given(deck, g_surfaces, g%card(q), trim(names(f)))) then
-                  call problem(deck, err, g%card(q), 'surface '//itoa(k)//' ('//surface_name(k)//'): '//trim(names(f)) &
-                               //' follows from f.2''s relations; leave it blank')
+                  call problem(deck, err, g%card(q), 'surface '//itoa(k)//' ('//surface_name(k)//'): ' &
+                               //field_where(deck, g_surfaces, trim(names(f)))//' follows from f.2''s relations; leave it blank')
                else if (need(f) .and. .not. card_given(deck, g_surfaces, g%card(q), trim(names(f)))) then
-                  call problem(deck, err, g%card(q), 'surface '//itoa(k)//' ('//surface_name(k)//'): '//trim(names(f)) &
-                               //' is required (Table 3)')
+                  call problem(deck, err, g%card(q), 'surface '//itoa(k)//' ('//surface_name(k)//'): ' &
+                               //field_where(deck, g_surfaces, trim(names(f)))//' is required (Table 3)')
                end if
             end do
             it%given(k) = .true.
@@ -1078,6 +1078,20 @@ contains
          text = 'deck: '//message
       end if
    end function located
+
+   !> Field `name` of group gid with its columns, for messages: 'X (columns 3-12)'.
+   function field_where(deck, gid, name) result(text)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: gid
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: text
+      integer :: j
+      text = name
+      do j = 1, deck%spec(gid)%n_fields
+         if (trim(deck%spec(gid)%field(j)%name) == name) text = name//' (columns ' &
+            //itoa(deck%spec(gid)%field(j)%first_col)//'-'//itoa(deck%spec(gid)%field(j)%last_col)//')'
+      end do
+   end function field_where
 
    !> A problem located at a card.
    subroutine problem(deck, err, c, message)
