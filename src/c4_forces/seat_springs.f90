@@ -130,7 +130,9 @@ contains
          ln = leg_line(fr, leg_branch(fr, x_e), x_e, 0.0_wp, 0.0_wp, body%length(7))
          ! the moment about the hip of F'_s (-tan phi, 1) at the crossing is F'_s
          ! times the sum of dh/d alpha over the leg (a rotation of the whole body)
-         fps = max(0.0_wp, -moment/sum(ln%dh(1:n_seg)))
+         ! (a leg line through the hip turns with it: no lever, no F'_s predicted)
+         if (abs(sum(ln%dh(1:n_seg))) > epsilon(1.0_wp)*body%length(7)) &
+            fps = max(0.0_wp, -moment/sum(ln%dh(1:n_seg)))
       end if
       w = sum(body%mass)*g*fr%c_phi - fps
    end subroutine static_loads
