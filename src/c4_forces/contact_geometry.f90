@@ -113,10 +113,8 @@ contains
          f%p = f%joint + body%rho_arc(i)*e(f%theta + body%gamma_arc(i))
       case (4)                    ! head: rho'_4 along its centre line (F1-1)
          f%p = f%joint + body%rho_arc(4)*et
-      case (6, 7, 10)             ! elbow, knee, hand: the segment's far end
+      case (6, 7, 8, 10)          ! elbow, knee, foot (the ankle), hand: the segment's far end
          f%p = f%joint + body%length(f%seg)*et
-      case (8)                    ! foot: the ankle, L_8 along the shank
-         f%p = f%joint + body%length(8)*et
       case (9)                    ! the shin: the knee circle and the ankle circle (D-C2)
          f%p = f%joint
          f%r = body%r_arc(7)
@@ -125,6 +123,13 @@ contains
          f%alpha0 = shin_alpha0(body)
       end select
    end function body_feature
+
+   !> Whether T = tt lies inside the surface's opening (the rim's, D-C11).
+   pure logical function in_opening(sf, tt)
+      type(contact_surface_t), intent(in) :: sf
+      real(wp), intent(in) :: tt
+      in_opening = sf%t_open(2) > sf%t_open(1) .and. tt > sf%t_open(1) .and. tt < sf%t_open(2)
+   end function in_opening
 
    !> The unit vector at angle a: (cos a, sin a).
    pure function e(a) result(v)
@@ -165,7 +170,7 @@ contains
                te = 0.0_wp
             else if (tt > sf%d) then
                te = sf%d
-            else if (sf%t_open(2) > sf%t_open(1) .and. tt > sf%t_open(1) .and. tt < sf%t_open(2)) then
+            else if (in_opening(sf, tt)) then
                te = merge(sf%t_open(1), sf%t_open(2), tt - sf%t_open(1) <= sf%t_open(2) - tt)
             end if
             if (te < 0.0_wp .and. present(behind)) then
@@ -223,7 +228,7 @@ contains
       ! or where nothing touches (r in front): face and ends agree there
       if (tt < 0.0_wp .or. tt > sf%d .or. h >= f%r) then
          side = merge(1, -1, h >= 0.0_wp)
-      else if (sf%t_open(2) > sf%t_open(1) .and. tt > sf%t_open(1) .and. tt < sf%t_open(2)) then
+      else if (in_opening(sf, tt)) then
          side = merge(1, -1, h >= 0.0_wp)
       end if
    end function front_side
