@@ -367,13 +367,14 @@ contains
                           this%last_segment, bb)
       do c = 1, this%n_chains
          associate (ch => this%chain(c))
+            n = ch%n_elements
+            if (all(ch%law(1:n)%elastic)) cycle     ! no memory in this chain
             s = -ch%slack
             s_dot = 0.0_wp
             g = 0.0_wp
             do q = 1, ch%n_sections
                call belt_section_add(this%geom(ch%section(q)), bb, s, s_dot, g)
             end do
-            n = ch%n_elements
             if (.not. s > 0.0_wp) cycle
             if (.not. abs(s_dot) > 0.0_wp .and. ieee_is_finite(s_dot)) cycle
             if (s_dot > 0.0_wp .and. .not. any(ch%mem(1:n)%unloading)) cycle
