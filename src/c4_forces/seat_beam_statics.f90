@@ -9,6 +9,7 @@
 !! the program.
 module seat_beam_statics
    use kinds, only: wp, pi
+   use seat_geometry, only: poly_force
    implicit none
    private
 
@@ -74,7 +75,7 @@ contains
       r(2) = (q(bq_ap)*(q(bq_fps0) - q(bq_fhps0)) + (q(bq_ap) - q(bq_a))*q(bq_fs0) &
               + q(bq_w0)*(p%z0 - q(bq_ap)))/(f_ref*l_ref)
       ! C.4.d, F_s = sum beta_m Delta_s**m (at rest: no damper) and F'_s = s Delta_z
-      r(3) = (q(bq_fs0) - q(bq_ds0)*(p%beta(1) + q(bq_ds0)*(p%beta(2) + q(bq_ds0)*p%beta(3))))/f_ref
+      r(3) = (q(bq_fs0) - poly_force(p%beta, q(bq_ds0)))/f_ref
       r(4) = (q(bq_fps0) - p%s*q(bq_dz0))/f_ref
       ! C.4.d, Delta_s and Delta_z of the tan-gamma kinematics
       r(5) = (q(bq_ds0) - (p%y_gu - q(bq_yg0) + (q(bq_a) - q(bq_ap))*(tg - tu)))/l_ref

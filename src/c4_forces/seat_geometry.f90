@@ -23,7 +23,7 @@ module seat_geometry
    public :: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests
    public :: seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state
    public :: case_off, case_a, case_b, seg_thigh, seg_shank, max_leg_slope
-   public :: add_seat_point_forces, contact_reference
+   public :: add_seat_point_forces, contact_reference, poly_force, poly_energy
 
    integer, parameter :: seg_thigh = 7, seg_shank = 8
    !> Figure 11's cases: off the seat (z < 0), case A (z > z-hat: hip
@@ -278,4 +278,16 @@ contains
          seat_case = case_a
       end if
    end function seat_case
+
+   !> C.4.d (A-S3): the seat cushion's polynomial sum beta_m u^m.
+   pure real(wp) function poly_force(beta, u)
+      real(wp), intent(in) :: beta(3), u
+      poly_force = u*(beta(1) + u*(beta(2) + u*beta(3)))
+   end function poly_force
+
+   !> C.6 (E6-1): its energy sum beta_m u^{m+1}/(m+1).
+   pure real(wp) function poly_energy(beta, u)
+      real(wp), intent(in) :: beta(3), u
+      poly_energy = u**2*(beta(1)/2.0_wp + u*(beta(2)/3.0_wp + u*beta(3)/4.0_wp))
+   end function poly_energy
 end module seat_geometry

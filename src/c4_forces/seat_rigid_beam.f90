@@ -25,7 +25,7 @@ module seat_rigid_beam
    use output_series, only: output_series_t, series_new, column
    use seat_geometry, only: add_seat_point_forces, contact_reference, &
       seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
-      hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a
+      hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, poly_force, poly_energy
    implicit none
    private
 
@@ -131,9 +131,9 @@ contains
       ! C.4.d: F_s = sum beta_m Delta_s^m + c_s Delta_s', F'_s = s Delta_z; supports do not pull
       associate (beta => this%p%beta, d => s%ds)
          if (d > 0.0_wp) then
-            s%fs_el = d*(beta(1) + d*(beta(2) + d*beta(3)))
+            s%fs_el = poly_force(beta, d)
             s%f_s = max(0.0_wp, s%fs_el + this%p%c_s*s%ds_dot)
-            s%e_support = d**2*(beta(1)/2.0_wp + d*(beta(2)/3.0_wp + d*beta(3)/4.0_wp))
+            s%e_support = poly_energy(beta, d)
          end if
       end associate
       s%fp_s = this%p%s*max(s%dz, 0.0_wp)

@@ -32,7 +32,8 @@ module seat_springs
    use body_kinematics, only: point_state_t, segment_cg_state
    use seat_geometry, only: add_seat_point_forces, contact_reference, &
       seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
-      seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, case_b
+      seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, case_b, &
+      poly_force, poly_energy
    implicit none
    private
 
@@ -347,18 +348,6 @@ contains
       end do
       ref = d - u
    end subroutine hip_law_at_switch
-
-   !> C.4.d (A-S3): the hip polynomial sum beta_m u^m.
-   pure real(wp) function poly_force(beta, u)
-      real(wp), intent(in) :: beta(3), u
-      poly_force = u*(beta(1) + u*(beta(2) + u*beta(3)))
-   end function poly_force
-
-   !> C.6 (E6-1): its energy sum beta_m u^{m+1}/(m+1).
-   pure real(wp) function poly_energy(beta, u)
-      real(wp), intent(in) :: beta(3), u
-      poly_energy = u**2*(beta(1)/2.0_wp + u*(beta(2)/3.0_wp + u*beta(3)/4.0_wp))
-   end function poly_energy
 
    pure subroutine springs_energy(this, st, extra, aux, e)
       class(seat_springs_t), intent(in) :: this
