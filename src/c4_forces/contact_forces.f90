@@ -87,6 +87,7 @@ module contact_forces
 
    !> Everything about the pair at one state.
    type :: pair_state_t
+      type(contact_feature_t) :: f             !< the body point (f.1) in the interior frame
       type(contact_state_t) :: cs
       type(chain_split_t) :: split
       real(wp) :: c_in(2) = 0.0_wp, n_in(2) = 0.0_wp, t_in(2) = 0.0_wp   !< C, n, t, inertial
@@ -150,21 +151,11 @@ contains
       e%n_aux = e%aux_supplied
    end function contact_pair_effect
 
-   !> The body feature of the pair's point at st.
-   pure function feature_at(this, st) result(f)
-      class(contact_pair_effect_t), intent(in) :: this
-      type(body_state_t), intent(in) :: st
-      type(contact_feature_t) :: f
-      f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, &
-                       cos(st%vehicle%pos(3)), sin(st%vehicle%pos(3)))
-   end function feature_at
-
    !> The contact's geometry (figure 22), force split and virtual work at st.
    pure function pair_state(this, st) result(ps)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       type(pair_state_t) :: ps
-      type(contact_feature_t) :: f
       type(branch_point_t) :: bp
       real(wp) :: c, s, gate(3)
       ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
@@ -174,8 +165,8 @@ contains
          c = cos(st%vehicle%pos(3))
          s = sin(st%vehicle%pos(3))
       end if
-      f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
-      ps%cs = contact_check(f, this%surface, this%behind)
+      ps%f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
+      ps%cs = contact_check(ps%f, this%surface, this%behind)
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
@@ -246,7 +237,7 @@ contains
       end associate
       ps = pair_state(this, st)
       ! D-C16a: the side of the surface's line the point is on, where it is decided
-      side = front_side(feature_at(this, st), this%surface)
+      side = front_side(ps%f, this%surface)
       if (side /= 0) this%behind = side < 0
       ! Table 9 (C.7): coming into contact (D-C28)
       if (this%undesired) then
