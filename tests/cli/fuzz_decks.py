@@ -56,11 +56,7 @@ RUN_TIMEOUT = 3.0      # s; a capped run takes under 0.1 s (Debug build)
 # order. The default deck's seat and belts, issue 6, renamed the two below; the failures
 # are the same kind as the one reported before, free_fall_value_15.)
 KNOWN_FAILURES = {
-    "free_fall_value_10":
-        "elbow K = 1e9 in*lb/rad with a friction limit XI of 0 in the free-fall deck (NINT = 3): "
-        "Dormand-Prince grinds through the report's discontinuous Coulomb friction (C' on when "
-        "|rate| >= xi, 0 below); no work limit ends it",
-    "free_fall_value_26":
+    "free_fall_value_17":
         "segment 6 starts at -1000 deg/s in the free-fall deck (NINT = 3): Dormand-Prince grinds "
         "through the report's discontinuous Coulomb friction (C' on when |rate| >= xi, 0 below), "
         "1.5 million steps down to 1.6e-9 s for 0.01 s (30 s, Debug); no work limit ends it",

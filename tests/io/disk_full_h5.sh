@@ -33,7 +33,7 @@ try() { # limit_kib deck_args...
     (trap '' XFSZ; ulimit -f "$n"; exec "$exe" "$@" -o out.lst --h5 out.h5) >out 2>err
     expect_status 4 $? "file size limit $n KiB, $*"
     no_crash err
-    expect_text err '(HDF5 file out\.h5|dataset [a-z_/]* in out\.h5): File too large' "limit $n KiB, $*"
+    expect_text err '(HDF5 file out\.h5|dataset [a-z0-9_/]* in out\.h5): File too large' "limit $n KiB, $*"
     same_content out.h5 earlier.h5 "limit $n KiB, $*"
     same_content out.lst earlier.lst "limit $n KiB, $*"
     no_part_files .

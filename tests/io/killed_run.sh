@@ -21,12 +21,12 @@ time_deck long.deck 2.0 0.0005
 "$exe" @default long.deck -o out.lst --h5 out.h5 >out 2>err &
 pid=$!
 
-# Kill it once its HDF5 file holds a few hundred flushed records (800 kB:
+# Kill it once its HDF5 file holds a few hundred flushed records (2 MB:
 # at least two flushes of 50 records whatever the number of series).
 tries=0
 while :; do
     part=$(find . -maxdepth 1 -name 'out.h5.??????.part' | head -n 1)
-    if [ -n "$part" ] && [ "$(wc -c <"$part")" -gt 800000 ]; then break; fi
+    if [ -n "$part" ] && [ "$(wc -c <"$part")" -gt 2000000 ]; then break; fi
     kill -0 $pid 2>/dev/null || fail "the run ended before it could be killed (no growing out.h5.XXXXXX.part)"
     tries=$((tries + 1))
     [ $tries -le 3000 ] || { kill -KILL $pid; fail "out.h5.XXXXXX.part did not grow within 30 s"; }
