@@ -46,6 +46,7 @@ module contact_forces
       !! or a padding (or mat) that bottoms out at its cap eta D'' and its
       !! backing (figure 25, D-C19)
       integer :: n_elem = 1
+      logical :: has_body = .false.            !< law(1) is the body's material
       type(recurrent_law_t) :: law(3)
       type(loading_memory_t) :: mem(3)
       real(wp) :: cap(3) = 0.0_wp
@@ -124,6 +125,7 @@ contains
       if (present(body_law)) then
          q = q + 1
          e%law(q) = body_law
+         e%has_body = .true.
       end if
       q = q + 1
       e%law(q) = law
@@ -363,7 +365,7 @@ contains
    function pair_outputs(this) result(series)
       class(contact_pair_effect_t), intent(in) :: this
       type(output_series_t), allocatable :: series(:)
-      allocate (series(2))
+      allocate (series(3))
       series(1) = series_new('force', 'CONTACT '//itoa(this%i)//' ON SURFACE '//itoa(this%k)//' (C.4.F)', &
                              'normal force P, friction force P'' (along -t), penetration delta, its rate, the ' &
                              //'sliding velocity v_T and T, where along the surface it acts (docs/contacts.md)', 1)
@@ -373,6 +375,12 @@ contains
                              'stored CE and dissipated DE of the surface material (E6-2) and the friction, work ' &
                              //'supplied by the moving vehicle', 3)
       series(2)%col = [column('conserved', 'in*lb'), column('dissipated', 'in*lb'), column('supplied', 'in*lb')]
+      series(3) = series_new('deflection', 'CONTACT '//itoa(this%i)//' ON SURFACE '//itoa(this%k) &
+                             //': DEFLECTIONS (FIGURES 23-25)', 'the penetration delta shared (figure 23): the ' &
+                             //'body''s deflection (Table 11 pairs), the surface''s outer element (padding, mat, ' &
+                             //'glass, foam or the non-rigid surface) and what is behind a padding or mat (its ' &
+                             //'backing, or the column''s stroke)', 3)
+      series(3)%col = [column('body', 'in'), column('surface', 'in'), column('backing', 'in')]
    end function pair_outputs
 
    pure subroutine pair_output_values(this, item, st, extra, aux, values)
@@ -383,9 +391,18 @@ contains
       real(wp), intent(out) :: values(:)
       type(pair_state_t) :: ps
       real(wp) :: e(n_energy_kinds)
+      integer :: first
       if (item == 1) then
          ps = pair_state(this, st)
          values = [ps%split%force, ps%p_t, ps%cs%delta, ps%cs%delta_dot, ps%cs%v_t, ps%cs%pos]
+      else if (item == 3) then
+         ! the elements in series: [body,] surface [, backing] (figures 23-25)
+         ps = pair_state(this, st)
+         values = 0.0_wp
+         first = merge(2, 1, this%has_body)
+         if (this%has_body) values(1) = ps%split%x(1)
+         values(2) = ps%split%x(first)
+         if (this%n_elem > first) values(3) = ps%split%x(first + 1)
       else
          call pair_energy(this, st, extra, aux, e)
          values = e
