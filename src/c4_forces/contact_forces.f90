@@ -22,9 +22,9 @@ module contact_forces
       energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
       max_events_per_step, event_shatter, event_cut
    use output_series, only: output_series_t, series_new, column
-   use body_kinematics, only: point_force_generalized
+   use body_kinematics, only: point_force_generalized, joint_position
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
-      arc_segment, front_side, surface_flat
+      arc_segment, front_side, surface_flat, surface_line, surface_circle, surface_point
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
       recurrent_is_elastic, n_loading_aux, aux_work, aux_absorbed
    use loading_curves, only: curve_energy
@@ -34,7 +34,7 @@ module contact_forces
    implicit none
    private
 
-   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial
+   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far
 
 
    type, extends(effect_t) :: contact_pair_effect_t
@@ -75,6 +75,12 @@ module contact_forces
       !! its W and E_abs start (the penetration counts as a loading before t = 0)
       real(wp) :: e_initial(3) = 0.0_wp
       integer :: max_iter = 60
+      !> add_forces returns at once where pair_far proves the pair slack
+      !! (.false.: always the full path, for the tests that compare the two)
+      logical :: exit_far = .true.
+      !> for pair_far: the surface's e(psi) and normal, and the sizes that
+      !! scale its rounding margin (the body's lengths and radii, the surface's)
+      real(wp) :: tk(2) = 0.0_wp, nk(2) = 0.0_wp, size_sum = 0.0_wp
    contains
       procedure :: add_forces => pair_add_forces
       procedure :: accept => pair_accept
@@ -148,6 +154,10 @@ contains
       do q = 1, e%n_elem                               ! (the body's material too)
          e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%law(q))
       end do
+      e%tk = [cos(sf%psi), sin(sf%psi)]
+      e%nk = [-e%tk(2), e%tk(1)]
+      e%size_sum = sum(abs(body%length)) + sum(abs(body%rho_arc)) + sum(abs(body%r_arc)) + abs(sf%s(1)) + &
+               abs(sf%s(2)) + abs(sf%d)
       e%aux_friction = n_loading_aux*e%n_elem + 1
       e%aux_supplied = e%aux_friction + 1
       e%n_aux = e%aux_supplied
@@ -197,6 +207,86 @@ contains
                                                                  ps%t_in)
    end function pair_state
 
+   !> Whether the pair is slack at st for certain, by a bound that needs
+   !! neither trigonometry nor velocities: the body point's circle (for the
+   !! upper back and chest, whose centre is within rho'_i of the segment's
+   !! joint, the circle of radius r_i + rho'_i about the joint; for the
+   !! shin, the capsule within max(r_7, r_A) of the knee-ankle segment) is
+   !! farther than its radius from the surface by more than a margin of
+   !! 1e-9 of the coordinates' size, far above the rounding of either
+   !! computation. Then contact_check's delta is negative whatever primitive
+   !! acts (a corner of a flat surface or of its opening lies on the
+   !! surface's line, so its distance is at least the line's; a flat surface
+   !! acts with its face only over its extent and from in front, unless the
+   !! point came from behind, D-C16a), so chain_split clears the chain and
+   !! the full path gives no force and zero rates: the memory (the loading
+   !! cycle, a friction's held direction, the side) plays no part there.
+   !! Broken glass carries nothing at any state. Not taken (.false.) when
+   !! the rates or coordinates are not finite or beyond 1e100, where the
+   !! full path's delta' could be non-finite and fail the split.
+   pure logical function pair_far(this, st) result(far)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), parameter :: big = 1.0e100_wp, rel_margin = 1.0e-9_wp
+      real(wp) :: cp, sp, d(2), jt(2), et(2), p(2), v(2), ext, reach, scale, m, h, tt, u2, lam
+      integer :: seg
+      far = this%shattered
+      if (far) return
+      if (.not. sum(abs(st%zdot)) + sum(abs(st%vehicle%vel)) <= big) return
+      seg = arc_segment(this%i)
+      cp = 1.0_wp
+      sp = 0.0_wp
+      if (abs(st%vehicle%pos(3)) > 0.0_wp) then
+         cp = cos(st%vehicle%pos(3))
+         sp = sin(st%vehicle%pos(3))
+      end if
+      ! the segment's proximal joint and direction in the interior frame
+      p = joint_position(this%body, st%z, st%c, st%s, seg)
+      d = p - st%vehicle%pos(1:2)
+      jt = [d(1)*cp - d(2)*sp, d(1)*sp + d(2)*cp]
+      et = [st%c(seg)*cp - st%s(seg)*sp, st%s(seg)*cp + st%c(seg)*sp]
+      scale = this%size_sum + abs(p(1)) + abs(p(2)) + abs(st%vehicle%pos(1)) + abs(st%vehicle%pos(2))
+      if (.not. scale <= big) return
+      m = rel_margin*(1.0_wp + scale)
+      ext = 0.0_wp
+      select case (this%i)
+      case (2, 3)                     ! within rho'_i of the joint
+         p = jt
+         ext = this%body%rho_arc(this%i)
+      case (4)
+         p = jt + this%body%rho_arc(4)*et
+      case (6, 7, 8, 10)
+         p = jt + this%body%length(seg)*et
+      case (9)                        ! the shin against the edge: distance to the knee-ankle segment
+         v = this%body%length(8)*et
+         u2 = dot_product(v, v)
+         d = this%surface%s - jt
+         lam = 0.0_wp
+         if (u2 > 0.0_wp) lam = min(1.0_wp, max(0.0_wp, dot_product(d, v)/u2))
+         d = d - lam*v
+         reach = max(this%body%r_arc(7), this%body%r_arc(11)) + m
+         far = dot_product(d, d) > reach*reach
+         return
+      case default                    ! hip, shoulder: the joint itself
+         p = jt
+      end select
+      reach = this%body%r_arc(this%i) + ext + m
+      select case (this%surface%kind)
+      case (surface_circle, surface_point)
+         if (this%surface%kind == surface_circle) reach = reach + 0.5_wp*this%surface%d
+         d = p - this%surface%s
+         far = dot_product(d, d) > reach*reach
+      case (surface_line)
+         far = dot_product(p - this%surface%s, this%nk) > reach
+      case default                    ! flat: the face from in front, corners on its line
+         h = dot_product(p - this%surface%s, this%nk)
+         far = h > reach
+         if (far .or. .not. abs(h) > reach) return
+         tt = dot_product(this%surface%s - p, this%tk)
+         far = this%behind .or. tt < -(ext + m) .or. tt > this%surface%d + ext + m
+      end select
+   end function pair_far
+
    pure subroutine pair_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
@@ -207,6 +297,12 @@ contains
       integer :: q
       associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
       end associate
+      if (this%exit_far) then
+         if (pair_far(this, st)) then
+            aux_rate = 0.0_wp            ! what the full path gives a slack pair
+            return
+         end if
+      end if
       ps = pair_state(this, st)
       if (ps%split%status /= split_ok) then
          aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)

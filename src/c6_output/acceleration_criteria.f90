@@ -16,7 +16,10 @@
 !!   the longest from each start. HIC^2 = dV^5/dt^3 is compared, which
 !!   needs no power; the window lengths go in blocks, each skipped when
 !!   its bound (its longest window's dV over its shortest window's dt)
-!!   cannot beat the best.
+!!   cannot beat the best, and the windows shorter than m_cut are not
+!!   looked at: with D the largest grid increment of V so far, a window
+!!   of m steps has dV <= m D, so HIC^2 <= D^5 (m h)^2 / h^5, which cannot
+!!   beat the best below m_cut (search_cut).
 !! - The 3 ms clip: the level L that a(t) >= L for a cumulative 3 ms
 !!   ("except for intervals whose cumulative duration is not more than
 !!   3 milliseconds"); 0 when the history is shorter than 3 ms. The linear
@@ -62,6 +65,11 @@ module acceleration_criteria
       integer :: n_buf = 0, p = 0
       real(wp), allocatable :: v_buf(:)
       real(wp), allocatable :: inv_dt3(:)        !< 1/(m h)^3, m = 1 .. n_buf - 1
+      real(wp) :: inv_h3 = 0.0_wp                !< 1/h^3
+      real(wp) :: d_max = 0.0_wp                 !< the largest increment of V between grid points
+      !> the windows search_cut proves short of the best are not looked at
+      !! (.false.: all of them are, for the tests that compare the two)
+      logical :: cut = .true.
       logical :: with_hic = .true.               !< the HIC searches (the head's)
       type(hic_search_t) :: hic(2)               !< 15 ms and 36 ms
       ! the clip: the linear pieces that reach above clip_floor
@@ -100,6 +108,7 @@ contains
       c%v_buf = 0.0_wp
       c%p = c%n_buf - 1
       c%inv_dt3 = [(1.0_wp/(real(m, wp)*c%h)**3, m=1, c%n_buf - 1)]
+      c%inv_h3 = 1.0_wp/c%h**3
    end subroutine setup
 
    !> One more sample: a (g, >= 0) at t (s, not before the last sample).
@@ -145,7 +154,7 @@ contains
    pure subroutine next_grid_point(this, v_k)
       class(acceleration_criteria_t), intent(inout) :: this
       real(wp), intent(in) :: v_k
-      integer :: q, n, top, w
+      integer :: q, n, top, w, m_cut
       n = this%n_buf
       this%k = this%k + 1
       this%p = this%p + 1
@@ -154,21 +163,51 @@ contains
       this%v_buf(this%p) = v_k
       this%v_buf(top) = v_k
       if (.not. this%with_hic) return
+      if (this%k > 0) this%d_max = max(this%d_max, v_k - this%v_buf(top - 1))
       do q = 1, size(this%hic)
          w = min(this%hic(q)%n_window, this%k)
-         if (w > 0) call search_windows(this%hic(q), this%v_buf(top - w:top), this%inv_dt3, this%k)
+         if (w < 1) cycle
+         m_cut = 0
+         if (this%cut) m_cut = search_cut(this%hic(q)%best2, this%d_max, this%inv_h3, w)
+         call search_windows(this%hic(q), this%v_buf(top - w:top), this%inv_dt3, this%k, m_cut)
       end do
    end subroutine next_grid_point
 
-   !> The windows (k - m, k], m = 1 .. w, against the best so far: v holds
-   !! V at grid points k - w .. k. The windows go in blocks of hic_block
+   !> The windows of m <= m_cut steps cannot beat best2: V's stored grid
+   !! values telescope, so dV <= m D exactly for a window of m steps (D the
+   !! largest increment of them, computed; every rounding on the way is
+   !! below 1e-14 of it), and HIC^2 = dV^5/(m h)^3 <= D^5 m^2/h^3. The
+   !! margin of 1e-9 covers the roundings of the search's products and of
+   !! this bound; a D^5/h^3 too small for relative roundings (below 1e-200),
+   !! or not finite, cuts nothing. m_cut = w: no window can beat it.
+   pure integer function search_cut(best2, d, inv_h3, w) result(m_cut)
+      real(wp), intent(in) :: best2, d, inv_h3
+      integer, intent(in) :: w
+      real(wp) :: dd, q
+      m_cut = 0
+      if (.not. (d > 0.0_wp .and. best2 > 0.0_wp)) return
+      dd = (d*d)*(d*d)*d*inv_h3
+      if (.not. (dd > 1.0e-200_wp .and. dd <= huge(dd))) return
+      q = best2/dd/(1.0_wp + 1.0e-9_wp)
+      if (q >= real(w, wp)**2) then
+         m_cut = w
+      else
+         m_cut = int(sqrt(q))
+      end if
+   end function search_cut
+
+   !> The windows (k - m, k], m = m_cut + 1 .. w, against the best so far:
+   !! v holds V at grid points k - w .. k (the shorter windows cannot beat
+   !! it, search_cut: leaving them out changes no update, so the window
+   !! found is that of m = 1 .. w). The windows go in blocks of hic_block
    !! lengths, each skipped when its bound (its longest window's dV over its
    !! shortest window's dt) cannot beat the best: in a plateau only the
    !! blocks near the best length are evaluated.
-   pure subroutine search_windows(s, v, inv_dt3, k)
+   pure subroutine search_windows(s, v, inv_dt3, k, m_cut)
       type(hic_search_t), intent(inout) :: s
       real(wp), intent(in) :: v(0:), inv_dt3(:)
       integer, intent(in) :: k
+      integer, intent(in) :: m_cut          !< the windows up to m_cut steps cannot beat the best
       integer, parameter :: hic_block = 8
       real(wp) :: vk, x, r, r_best
       integer :: w, m, m_lo, m_hi, m_best
@@ -176,8 +215,8 @@ contains
       vk = v(w)
       r_best = s%best2
       m_best = 0
-      do m_hi = w, 1, -hic_block
-         m_lo = max(1, m_hi - hic_block + 1)
+      do m_hi = w, m_cut + 1, -hic_block
+         m_lo = max(m_cut + 1, m_hi - hic_block + 1)
          x = vk - v(w - m_hi)
          if (.not. (x*x)*(x*x)*x*inv_dt3(m_lo) > r_best) cycle
          do m = m_lo, m_hi
