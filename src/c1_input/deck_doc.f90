@@ -34,7 +34,8 @@ contains
          '* Data cards have up to seven fields of ten columns in columns 3-72: field *k* occupies columns', &
          '  10*k*-7 to 10*k*+2 (3-12, 13-22, 23-32, 33-42, 43-52, 53-62, 63-72). Columns 1-2 hold the row', &
          '  index of an indexed group and must be blank otherwise. Columns 73-80 are free for card', &
-         '  identification and are ignored.', &
+         '  identification and are ignored; a number that runs on from column 72 into them without a', &
+         '  blank is cut at column 72 and warned about.', &
          '* Numbers may be written anywhere in their field: `1.5`, `-474.7`, `2.0E-4`, `2.0D-4`, `5`.', &
          '  NaN, Inf and text are rejected. A blank field takes the default listed below; a field marked', &
          '  *required* may not be blank. A value that runs from one field into the next is an error.', &

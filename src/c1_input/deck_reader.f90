@@ -69,6 +69,7 @@ module deck_reader
       integer :: n_echo = 0
       type(group_t) :: group(n_groups)
       integer :: n_errors = 0
+      type(string_t), allocatable :: warnings(:)   !< located, for the model's warnings
    end type deck_t
 
 contains
@@ -77,7 +78,7 @@ contains
    subroutine deck_init(deck)
       type(deck_t), intent(out) :: deck
       deck%spec = card_table()
-      allocate (deck%source_name(0), deck%source_dir(0), deck%echo(64))
+      allocate (deck%source_name(0), deck%source_dir(0), deck%echo(64), deck%warnings(0))
    end subroutine deck_init
 
    !> Read and parse one deck file; the path standard_input_path ('-') reads
@@ -449,6 +450,7 @@ contains
             if (in_run(k)) cycle   ! reported as a whole
             call parse_field(deck, err, s%field(k), where, src, line, c, card, k, ok)
          end do
+         if (ok) call warn_run_into_id(deck, s, where, src, line, c)
          if (last_used < data_last_col .and. .not. tail_in_run) then
             if (len_trim(c(last_used + 1:data_last_col)) > 0) then
                call report(deck, err, src, line, where//', columns '//itoa(last_used + 1)//'-' &
@@ -465,6 +467,38 @@ contains
          end if
       end associate
    end subroutine parse_data_card
+
+   !> Columns 73-80 hold the card's identification and are not read (the
+   !! card convention), so a number that runs on from column 72 into them
+   !! without a blank is cut short: "1200." in columns 70-74 reads as 120.
+   !! An archival deck may have sequence numbers there right after a value,
+   !! so this is a warning, not an error.
+   subroutine warn_run_into_id(deck, s, where, src, line, c)
+      type(deck_t), intent(inout) :: deck
+      type(group_spec_t), intent(in) :: s
+      character(len=*), intent(in) :: where, c
+      integer, intent(in) :: src, line
+      integer :: k, first, last
+      if (c(data_last_col:data_last_col) == ' ') return
+      if (index('0123456789.+-EeDd', c(data_last_col + 1:data_last_col + 1)) == 0) return
+      do k = 1, s%n_fields
+         if (s%field(k)%kind == kind_text .or. s%field(k)%last_col /= data_last_col) cycle
+         first = data_last_col
+         do while (first > s%field(k)%first_col)
+            if (c(first - 1:first - 1) == ' ') exit
+            first = first - 1
+         end do
+         last = data_last_col + 1
+         do while (last < card_width)
+            if (c(last + 1:last + 1) == ' ') exit
+            last = last + 1
+         end do
+         call append_string(deck%warnings, deck%source_name(src)%s//':'//itoa(line)//': '//where//', field ' &
+            //trim(s%field(k)%name)//' (columns '//itoa(s%field(k)%first_col)//'-'//itoa(data_last_col) &
+            //'): "'//c(first:last)//'" runs on into columns 73-80, the card''s identification, which is not ' &
+            //'read: the value read is "'//c(first:data_last_col)//'"')
+      end do
+   end subroutine warn_run_into_id
 
    !> Values must stay inside their fields: text that runs from the last
    !! column of one field into the first column of the next would otherwise

@@ -50,7 +50,7 @@ contains
       type(model_t), intent(out) :: m
       type(error_t), intent(inout) :: err
 
-      allocate (m%warnings(0))
+      m%warnings = deck%warnings
       m%title = ' '
       if (single_card(deck, g_title)) m%title = deck%group(g_title)%card(1)%text
       call build_options(deck, m%options)
