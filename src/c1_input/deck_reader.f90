@@ -483,22 +483,31 @@ contains
       if (index('0123456789.+-EeDd', c(data_last_col + 1:data_last_col + 1)) == 0) return
       do k = 1, s%n_fields
          if (s%field(k)%kind == kind_text .or. s%field(k)%last_col /= data_last_col) cycle
-         first = data_last_col
-         do while (first > s%field(k)%first_col)
-            if (c(first - 1:first - 1) == ' ') exit
-            first = first - 1
-         end do
-         last = data_last_col + 1
-         do while (last < card_width)
-            if (c(last + 1:last + 1) == ' ') exit
-            last = last + 1
-         end do
+         call run_around(c, data_last_col, s%field(k)%first_col, card_width, first, last)
          call append_string(deck%warnings, deck%source_name(src)%s//':'//itoa(line)//': '//where//', field ' &
             //trim(s%field(k)%name)//' (columns '//itoa(s%field(k)%first_col)//'-'//itoa(data_last_col) &
             //'): "'//c(first:last)//'" runs on into columns 73-80, the card''s identification, which is not ' &
             //'read: the value read is "'//c(first:data_last_col)//'"')
       end do
    end subroutine warn_run_into_id
+
+   !> The run of non-blank columns through edge and edge + 1: back from edge
+   !! to no further than lo, on from edge + 1 to no further than hi.
+   pure subroutine run_around(c, edge, lo, hi, first, last)
+      character(len=*), intent(in) :: c
+      integer, intent(in) :: edge, lo, hi
+      integer, intent(out) :: first, last
+      first = edge
+      do while (first > lo)
+         if (c(first - 1:first - 1) == ' ') exit
+         first = first - 1
+      end do
+      last = edge + 1
+      do while (last < hi)
+         if (c(last + 1:last + 1) == ' ') exit
+         last = last + 1
+      end do
+   end subroutine run_around
 
    !> Values must stay inside their fields: text that runs from the last
    !! column of one field into the first column of the next would otherwise
@@ -525,16 +534,7 @@ contains
          if (edge <= last .or. edge >= data_last_col) cycle   ! inside a run already reported
          if (c(edge:edge) == ' ' .or. c(edge + 1:edge + 1) == ' ') cycle
          ! the run: back to its first column (never into the index, columns 1-2), on to its last
-         first = edge
-         do while (first > index_last_col + 1)
-            if (c(first - 1:first - 1) == ' ') exit
-            first = first - 1
-         end do
-         last = edge + 1
-         do while (last < data_last_col)
-            if (c(last + 1:last + 1) == ' ') exit
-            last = last + 1
-         end do
+         call run_around(c, edge, index_last_col + 1, data_last_col, first, last)
          names = ''
          edges = ''
          n_named = 0
