@@ -10,7 +10,7 @@
 !!   `/time`, otherwise 2-D, (rows, ncols) (`add_series`'s `rank` can make
 !!   a one-column series 2-D);
 !! - `/events/time` (float64), `/events/kind` (int32), `/events/index`
-!!   (int32), `/events/text` (80-character strings): 1-D, one entry per
+!!   (int32), `/events/text` (120-character strings): 1-D, one entry per
 !!   event, present (empty) even when no event happens.
 !!
 !! Every dataset, /input/deck and /events/* included, carries `columns` and
@@ -76,7 +76,7 @@ module history_h5
    implicit none
    private
 
-   public :: history_file_t, history_format_version
+   public :: history_file_t, history_format_version, event_text_len
 
    !> Version of the file layout, the root attribute `format_version`: 2
    !! since /time became 1-D, the root got `version` and attribute strings
@@ -89,7 +89,7 @@ module history_h5
    !> Chunk length of the event datasets (events are few).
    integer, parameter :: event_chunk = 32
    !> Length of an event's text in the file.
-   integer, parameter :: event_text_len = 80
+   integer, parameter :: event_text_len = 120
    !> First capacity of the series table (it grows as needed).
    integer, parameter :: first_capacity = 16
 
@@ -246,7 +246,7 @@ contains
       if (.not. local%failed()) call create_event_text(this%file, this%path, this%ev_text, local)
       if (.not. local%failed()) &
          call describe(this%ev_text, this%path, 'events/text', ['text'], ['-'], &
-                       'each event in words (up to 80 characters)', local)
+                       'each event in words, as the listing''s summary (up to 120 characters)', local)
       ! Flushed now so that even a run killed before its first flush leaves
       ! a readable file (with the deck).
       if (.not. local%failed()) call flush_file(this, 'cannot create HDF5 file '//this%path, local)
@@ -382,7 +382,7 @@ contains
    end subroutine history_file_append
 
    !> Append one event: its time, kind, index (e.g. the joint) and a text
-   !! of up to 80 characters (longer text is cut). Written at once.
+   !! of up to 120 characters (longer text is cut). Written at once.
    subroutine history_file_add_event(this, time, kind, index, text, err)
       class(history_file_t), intent(inout) :: this
       real(wp), intent(in) :: time
@@ -718,7 +718,7 @@ contains
       if (local%failed()) call error_set(err, local%code, local%message)
    end subroutine describe
 
-   !> The 80-character event text dataset (its type is not a predefined one).
+   !> The 120-character event text dataset (its type is not a predefined one).
    subroutine create_event_text(file, path, dset, err)
       integer(hid_t), intent(in) :: file
       character(len=*), intent(in) :: path

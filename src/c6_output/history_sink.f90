@@ -11,12 +11,12 @@ module history_sink
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
-   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired, &
-      event_shatter, event_cut
+   use effect_base, only: event_t
+   use event_text, only: event_description
    use force_injuries, only: fc_defined, fs_defined
    use run_summary, only: run_summary_t
    use acceleration_criteria, only: hic_result_t
-   use history_h5, only: history_file_t
+   use history_h5, only: history_file_t, event_text_len
    implicit none
    private
 
@@ -106,24 +106,9 @@ contains
       class(history_sink_t), intent(inout) :: this
       type(event_t), intent(in) :: e
       type(error_t), intent(inout) :: err
-      character(len=80) :: text
+      character(len=event_text_len) :: text
       if (err%failed()) return
-      select case (e%kind)
-      case (event_tension)
-         write (text, '(a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of joint ', e%index, ': force ', &
-            e%value, ' lb'
-      case (event_compression, event_shear)
-         write (text, '(a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of bone ', e%index, ': force ', &
-            e%value, ' lb'
-      case (event_shatter, event_cut)
-         write (text, '(a,i0,a,es12.5)') trim(event_kind_name(e%kind))//', body point ', e%index, ': ', e%value
-      case (event_undesired)
-         write (text, '(a,i0,a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of body point ', e%index, &
-            ' with surface ', e%surface, ': force ', e%value, ' lb'
-      case default
-         write (text, '(a,i0,a,es12.5,a)') trim(event_kind_name(e%kind))//' of joint ', e%index, &
-            ': relative angle ', e%value, ' rad'
-      end select
+      text = event_description(e)
       call this%file%add_event(e%t, e%kind, e%index, text, err)
       if (.not. err%failed()) call this%file%flush(err)
    end subroutine sink_event

@@ -35,6 +35,7 @@ module run_report
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t
    use force_injuries, only: fc_defined, fs_defined, fc_name, fs_name
    use acceleration_criteria, only: hic_result_t
+   use event_text, only: event_description
    use end_tests, only: end_reason_text, end_failure, end_energy
    implicit none
    private
@@ -903,27 +904,7 @@ contains
          associate (e => res%events(i))
             head = '  t ='//fixed(e%t, 10, 5)//' s  '//trim(merge('occupant '//achar(48 + min(e%occupant, 9)), &
                    '          ', size(res%occ) > 1))
-            select case (e%kind)
-            case (event_tension)
-               ev = head//' joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': force' &
-                      //fixed(e%value, 10, 1)//' lb, limit'//fixed(e%limit, 10, 1)//' lb'
-            case (event_shatter)
-               ev = head//' windshield shattered by point '//arc_name(e%index)//': force'//fixed(e%value, 10, 1) &
-                      //' lb, FSW'//fixed(e%limit, 10, 1)//' lb'
-            case (event_cut)
-               ev = head//' point '//arc_name(e%index)//' cut on the broken windshield: penetration' &
-                      //fixed(e%value, 9, 3)//' in'
-            case (event_undesired)
-               ev = head//' point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
-                      //'): undesired contact (Table 9), force'//fixed(e%value, 10, 1)//' lb'
-            case (event_compression, event_shear)
-               ev = head//' bone '//merge(fc_name(e%index), fs_name(e%index), e%kind == event_compression) &
-                      //'  '//trim(event_kind_name(e%kind))//': force'//fixed(e%value, 10, 1)//' lb, limit' &
-                      //fixed(e%limit, 10, 1)//' lb'
-            case default
-               ev = head//' joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': angle' &
-                      //fixed(e%value/deg, 9, 3)//' deg, limit'//fixed(e%limit/deg, 9, 3)//' deg'
-            end select
+            ev = head//' '//event_description(e)
             call put_wrapped(lst, '', ev)    ! (two occupants' undesired contacts pass 130 columns)
          end associate
       end do

@@ -114,6 +114,14 @@ def main():
         text = f["events/text"].asstr()[()]
         if text.shape != f["events/time"].shape:
             fail("/events/text does not read with .asstr()")
+        # each event says in HDF5 what the listing's summary says (one description)
+        if len(text) == 0:
+            fail("the default deck's run records no event (it has undesired contacts)")
+        with open("run.lst", encoding="utf-8") as lst:
+            listing = lst.read()
+        for t, line in zip(f["events/time"][()], text):
+            if f"t ={t:10.5f} s   {line.rstrip()}" not in listing:
+                fail(f"event {line.rstrip()!r} at t = {t} is not in the listing's summary")
     print(f"{NAME}: PASS ({len(datasets)} datasets, {n} rows)")
 
 

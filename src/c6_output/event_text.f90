@@ -1,0 +1,48 @@
+!> What an event is, in words (C.7, Table 5, Table 9): one description for
+!! the listing's summary and HDF5's /events/text, so that the two say the
+!! same thing.
+module event_text
+   use kinds, only: deg
+   use strings, only: itoa
+   use model, only: joint_name, arc_name
+   use number_format, only: fixed
+   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired, &
+      event_shatter, event_cut
+   use contact_tables, only: surface_name
+   use force_injuries, only: fc_name, fs_name
+   implicit none
+   private
+
+   public :: event_description
+
+contains
+
+   !> The event without its time, e.g. "joint neck  dislocation (below
+   !! limit): angle  -80.008 deg, limit  -80.000 deg".
+   function event_description(e) result(text)
+      type(event_t), intent(in) :: e
+      character(len=:), allocatable :: text
+      select case (e%kind)
+      case (event_tension)
+         text = 'joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': force' &
+                //fixed(e%value, 10, 1)//' lb, limit'//fixed(e%limit, 10, 1)//' lb'
+      case (event_shatter)
+         text = 'windshield shattered by point '//arc_name(e%index)//': force'//fixed(e%value, 10, 1) &
+                //' lb, FSW'//fixed(e%limit, 10, 1)//' lb'
+      case (event_cut)
+         text = 'point '//arc_name(e%index)//' cut on the broken windshield: penetration' &
+                //fixed(e%value, 9, 3)//' in'
+      case (event_undesired)
+         text = 'point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
+                //'): undesired contact (Table 9), force'//fixed(e%value, 10, 1)//' lb'
+      case (event_compression, event_shear)
+         text = 'bone '//merge(fc_name(e%index), fs_name(e%index), e%kind == event_compression) &
+                //'  '//trim(event_kind_name(e%kind))//': force'//fixed(e%value, 10, 1)//' lb, limit' &
+                //fixed(e%limit, 10, 1)//' lb'
+      case default
+         text = 'joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': angle' &
+                //fixed(e%value/deg, 9, 3)//' deg, limit'//fixed(e%limit/deg, 9, 3)//' deg'
+      end select
+   end function event_description
+
+end module event_text
