@@ -130,18 +130,36 @@ contains
          lb = backing_material(m%interior, k)
          if (m%loading%material_curve(l) == 0) then
             reported(k) = .true.
-            call problem_at(deck, err, g_surfaces, 'surface '//itoa(k)//' (' &
-               //surface_name(k)//'): its material '//itoa(l)//' has no loading curve (*MATERIALS CURVE), so the ' &
-               //'contact of body point '//itoa(pairs(q)%i)//' with it would be rigid')
+            call material_problem(l, 'surface '//itoa(k)//' ('//surface_name(k)//') is made of material ' &
+               //itoa(l)//', which has no loading curve, so the contact of body point '//itoa(pairs(q)%i) &
+               //' with it would be rigid; expected the number of a curve')
          else if (lb > 0) then
             if (m%loading%material_curve(lb) == 0) then
                reported(k) = .true.
-               call problem_at(deck, err, g_surfaces, 'surface '//itoa(k)//' ('//surface_name(k)//'): its ' &
-                  //'padding bottoms out at ETA*DPP onto material '//itoa(lb)//', which has no loading curve ' &
-                  //'(*MATERIALS CURVE): give it one, or DPP = 0 for no padding')
+               call material_problem(lb, 'surface '//itoa(k)//' ('//surface_name(k)//'): its padding bottoms ' &
+                  //'out at ETA*DPP onto material '//itoa(lb)//', which has no loading curve; expected the ' &
+                  //'number of a curve, or DPP = 0 on *SURFACES for no padding')
             end if
          end if
       end do
+   contains
+      !> At material l's *MATERIALS card and its CURVE field when the deck
+      !! has one, else at *SURFACES.
+      subroutine material_problem(l, message)
+         integer, intent(in) :: l
+         character(len=*), intent(in) :: message
+         integer :: c
+         associate (g => deck%group(g_materials))
+            do c = 1, g%n
+               if (g%card(c)%index /= l) cycle
+               call problem(deck, err, g%card(c), '*MATERIALS material '//itoa(l)//', field ' &
+                            //field_where(deck, g_materials, 'CURVE')//': '//message)
+               return
+            end do
+         end associate
+         call problem_at(deck, err, g_surfaces, message//' on a *MATERIALS card for material '//itoa(l) &
+                         //', field '//field_where(deck, g_materials, 'CURVE'))
+      end subroutine material_problem
    end subroutine check_contact_materials
 
    !> *SURFACES, *INTERIOR, *CONTACTOFF (C.4.f, Table 3; docs/contacts.md
@@ -485,12 +503,14 @@ contains
             inj%f_tension(i) = card_value(deck, g_injury, g%card(k), 'FTD')
             ! Table 1: FSF for rows 1-9, FCF for 1-3 and 5-8, FTD for joints 1-7
             if (i == 10 .and. card_given(deck, g_injury, g%card(k), 'FSF')) call problem(deck, err, g%card(k), &
-               'row 10: Table 1 has no shear fracture force FSF here')
+               'row 10, field '//field_where(deck, g_injury, 'FSF')//': Table 1 has no shear fracture force here; ' &
+               //'expected blank')
             if (any([4, 9, 10] == i) .and. card_given(deck, g_injury, g%card(k), 'FCF')) &
-               call problem(deck, err, g%card(k), 'row '//itoa(i)//': Table 1 has no compression fracture ' &
-               //'force FCF here')
+               call problem(deck, err, g%card(k), 'row '//itoa(i)//', field '//field_where(deck, g_injury, 'FCF') &
+               //': Table 1 has no compression fracture force here (rows 1-3, 5-8); expected blank')
             if (i > n_joint .and. card_given(deck, g_injury, g%card(k), 'FTD')) call problem(deck, err, &
-               g%card(k), 'row '//itoa(i)//': FTD applies to joints 1-7 only')
+               g%card(k), 'row '//itoa(i)//', field '//field_where(deck, g_injury, 'FTD')//': the tension ' &
+               //'dislocation force applies to joints 1-7 only; expected blank')
          end do
       end associate
    end subroutine build_injury
@@ -514,13 +534,14 @@ contains
             ! Table 4's "other": eta for padding and floormat, FSW for glass
             mat%eta(l) = card_value(deck, g_materials, g%card(k), 'ETA')
             if (card_given(deck, g_materials, g%card(k), 'ETA') .and. .not. any(l == [3, 4])) &
-               call problem(deck, err, g%card(k), 'material '//itoa(l)//': ETA belongs to padding (3) and ' &
-                            //'floormat (4) only')
+               call problem(deck, err, g%card(k), 'material '//itoa(l)//', field '//field_where(deck, g_materials, &
+                            'ETA')//': ETA belongs to padding (3) and floormat (4) only; expected blank')
             if (card_given(deck, g_materials, g%card(k), 'FSW')) then
                if (l == 2) then
                   mat%fsw = card_value(deck, g_materials, g%card(k), 'FSW')
                else
-                  call problem(deck, err, g%card(k), 'material '//itoa(l)//': FSW belongs to glass (2) only')
+                  call problem(deck, err, g%card(k), 'material '//itoa(l)//', field '//field_where(deck, g_materials, &
+                               'FSW')//': FSW belongs to glass (2) only; expected blank')
                end if
             end if
          end do
