@@ -3,8 +3,9 @@
 interior_driver.deck: seat back, padded lower panel and its edge, toeboard,
 floor): the SVG names every resolved surface, draws the flat ones as
 segments from (X, Y) to their far end as the listing gives them (their
-length and direction checked against the deck's D and PSI), and the
-occupant's seven joints.
+length and direction checked against the deck's D and PSI), the
+occupant's seven joints, and the body points' contact arcs where f.1 puts
+them.
 
 Usage: draw_interior_check.py HSRI2D TOOL DECK WORKDIR
 """
@@ -46,9 +47,26 @@ drawn = sorted((round(math.hypot(float(x2) - float(x1), float(y2) - float(y1)) /
 flat = sorted([(12.0, 95.0), (10.0, 45.0), (20.0, -80.0)])    # the deck's D, PSI of surfaces 5, 6, 9
 if drawn != flat:
     fail(f"flat surfaces drawn as (D, PSI) {drawn}, expected {flat}")
+# the body points' contact arcs (f.1): the ten circles, the head's rho'_4 = 6.1 in from
+# the neck along the head at theta_4 = 85 deg with r_4 = 3.9 in (decks/body_only.deck's
+# arcs and posture), the hand at L_6 = 13.7 in from the elbow
+circle = r'<circle cx="([-.0-9]+)" cy="([-.0-9]+)" r="([-.0-9]+)"[^>]*><title>{}</title>'
+arcs = re.findall(r"<title>(arc [0-9]+)</title>", text)
+if sorted(arcs) != sorted(f"arc {i}" for i in (1, 2, 3, 4, 5, 6, 7, 8, 10, 11)):
+    fail(f"arcs {arcs}")
+neck = [float(v) for v in re.search(circle.format("neck"), text).groups()]
+head = [float(v) for v in re.search(circle.format("arc 4"), text).groups()]
+elbow = [float(v) for v in re.search(circle.format("elbow"), text).groups()]
+hand = [float(v) for v in re.search(circle.format("arc 10"), text).groups()]
+dist = math.hypot(head[0] - neck[0], head[1] - neck[1]) / 10.0
+angle = math.degrees(math.atan2(neck[1] - head[1], head[0] - neck[0]))
+if abs(dist - 6.1) > 0.02 or abs(angle - 85.0) > 0.5 or abs(head[2] / 10.0 - 3.9) > 0.01:
+    fail(f"head arc at {dist:.2f} in, {angle:.1f} deg from the neck, radius {head[2] / 10.0}")
+if abs(math.hypot(hand[0] - elbow[0], hand[1] - elbow[1]) / 10.0 - 13.7) > 0.02:
+    fail("the hand is not L_6 from the elbow")
 # a bad deck: the tool says so and fails
 p = subprocess.run([sys.executable, tool, "--hsri2d", hsri2d, os.path.join(work, "missing.deck"), "-o", out],
                    capture_output=True, text=True)
 if p.returncode == 0:
     fail("a missing deck did not fail")
-print(f"{NAME}: PASS ({len(labels)} surfaces, {len(joints)} joints)")
+print(f"{NAME}: PASS ({len(labels)} surfaces, {len(joints)} joints, {len(arcs)} arcs)")
