@@ -13,6 +13,7 @@
 !! at the t_m (Phi(t_m)); here they are evaluated at the time itself.
 module vehicle_motion
    use kinds, only: wp
+   use table_search, only: bracket_index
    use model, only: vehicle_section_t, pulse_table_t
    implicit none
    private
@@ -220,22 +221,11 @@ contains
    !! beyond the table (k = size) and the first before it.
    pure integer function interval(tk, t) result(k)
       real(wp), intent(in) :: tk(:), t
-      integer :: lo, hi, mid
       if (t >= tk(size(tk))) then
          k = size(tk)
-         return
+      else
+         k = bracket_index(tk, t)
       end if
-      lo = 1
-      hi = size(tk)
-      do while (hi - lo > 1)
-         mid = (lo + hi)/2
-         if (t < tk(mid)) then
-            hi = mid
-         else
-            lo = mid
-         end if
-      end do
-      k = lo
    end function interval
 
    !> The slope of every interval k of a table (v(k+1) - v(k))/(t(k+1) -

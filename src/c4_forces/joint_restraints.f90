@@ -12,6 +12,7 @@
 !! torque sign convention.
 module joint_restraints
    use kinds, only: wp
+   use table_search, only: bracket_index
    use model, only: restraint_t, stop_curve_t, form_table
    implicit none
    private
@@ -63,7 +64,7 @@ contains
       type(stop_curve_t), intent(in) :: curve
       integer :: k
       if (form == form_table) then
-         k = segment_of(curve%depth, d)
+         k = bracket_index(curve%depth, d)
          f = curve%torque(k) + (curve%torque(k + 1) - curve%torque(k)) &
              *(d - curve%depth(k))/(curve%depth(k + 1) - curve%depth(k))
       else
@@ -79,7 +80,7 @@ contains
       real(wp) :: fd
       if (form == form_table) then
          ! exact integral of the piecewise-linear curve (trapezoids)
-         k = segment_of(curve%depth, d)
+         k = bracket_index(curve%depth, d)
          e = 0.0_wp
          do j = 1, k - 1
             e = e + 0.5_wp*(curve%torque(j) + curve%torque(j + 1))*(curve%depth(j + 1) - curve%depth(j))
@@ -91,21 +92,4 @@ contains
       end if
    end function side_energy
 
-   !> The table interval holding d: depth(k) <= d < depth(k+1); the last
-   !! interval also serves beyond the table (linear extrapolation).
-   pure integer function segment_of(depth, d) result(k)
-      real(wp), intent(in) :: depth(:), d
-      integer :: lo, hi, mid
-      lo = 1
-      hi = size(depth)
-      do while (hi - lo > 1)
-         mid = (lo + hi)/2
-         if (d < depth(mid)) then
-            hi = mid
-         else
-            lo = mid
-         end if
-      end do
-      k = lo
-   end function segment_of
 end module joint_restraints

@@ -26,6 +26,7 @@
 !! coefficients >= 0, table abscissae increasing.
 module loading_curves
    use kinds, only: wp
+   use table_search, only: bracket_index
    use strings, only: itoa, num
    implicit none
    private
@@ -408,22 +409,7 @@ contains
    !! the table (extrapolation along it).
    pure integer function table_interval(defl, d) result(k)
       real(wp), intent(in) :: defl(:), d
-      integer :: lo, hi, mid
-      lo = 1
-      hi = size(defl)
-      if (d >= defl(hi)) then
-         k = hi - 1
-         return
-      end if
-      do while (hi - lo > 1)
-         mid = (lo + hi)/2
-         if (defl(mid) <= d) then
-            lo = mid
-         else
-            hi = mid
-         end if
-      end do
-      k = lo
+      k = bracket_index(defl, d)
    end function table_interval
 
    pure real(wp) function slope(c, k)
