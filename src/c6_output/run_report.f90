@@ -599,7 +599,7 @@ contains
       character(len=132) :: line
       integer :: cols(n_belt_card), nc, j, k
       logical :: used(n_belt_card)
-      real(wp) :: length10, phi10
+      real(wp) :: length10(n_belt_card), phi10(n_belt_card)
       associate (b => m%belts, ld => m%loading, nbelt => m%options%nbelt)
          if (nbelt == 0) return
          used = [nbelt_lap(nbelt), nbelt_torso(nbelt), nbelt_torso(nbelt), nbelt_lap(nbelt) .and. b%lap_sides == 2]
@@ -608,6 +608,9 @@ contains
          ! the lap belt's length and angle at t = 0 (C.2 with errata C2-2, C2-3)
          length10 = 0.0_wp
          phi10 = 0.0_wp
+         do k = 1, nc
+            if (is_lap(cols(k))) call lap_initial(cols(k), length10(cols(k)), phi10(cols(k)))
+         end do
          call lst%heading('TABLE 2 - BELTS (C.4.e, C.2): NBELT = '//itoa(nbelt), 17)
          line = '  PARAMETER (SUBSCRIPT J)                             UNIT'
          do k = 1, nc
@@ -619,8 +622,7 @@ contains
          do k = 1, nc
             j = cols(k)
             if (is_lap(j)) then
-               call lap_initial(j, length10, phi10)
-               write (line(col(k):), '(es14.4,a)') length10, ' c'
+               write (line(col(k):), '(es14.4,a)') length10(j), ' c'
             else
                write (line(col(k):), '(es14.4)') b%length0(j)
             end if
@@ -630,8 +632,7 @@ contains
          do k = 1, nc
             j = cols(k)
             if (is_lap(j)) then
-               call lap_initial(j, length10, phi10)
-               line(col(k):) = fixed(phi10/deg, 14, 3)//' c'
+               line(col(k):) = fixed(phi10(j)/deg, 14, 3)//' c'
             else
                line(col(k):) = fixed(b%phi0(j)/deg, 14, 3)
             end if
