@@ -310,20 +310,14 @@ contains
       type(belt_body_t) :: bb
       type(chain_split_t) :: sp
       real(wp) :: s, s_dot, g(n_dof), f
-      integer :: c, n, a, q, i
+      integer :: c, n, a, i
       associate (u1 => size(extra), u2 => size(extra_rate))
       end associate
       call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
                           this%last_segment, bb)
       do c = 1, this%n_chains
          associate (ch => this%chain(c))
-            ! the chain's deformation: its sections' nominal deformations less their slack (D-B1)
-            s = -ch%slack
-            s_dot = 0.0_wp
-            g = 0.0_wp
-            do q = 1, ch%n_sections
-               call belt_section_add(this%geom(ch%section(q)), bb, s, s_dot, g)
-            end do
+            call chain_deformation(this, ch, bb, s, s_dot, g)
             n = ch%n_elements
             a = ch%aux_offset
             call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, aux(ch%start_aux))
@@ -344,6 +338,22 @@ contains
       end do
    end subroutine belt_add_forces
 
+   !> The chain's deformation s: its sections' nominal deformations less
+   !! its slack (D-B1), with its rate and its gradient in z.
+   pure subroutine chain_deformation(this, ch, bb, s, s_dot, g)
+      class(belt_effect_t), intent(in) :: this
+      type(belt_chain_t), intent(in) :: ch
+      type(belt_body_t), intent(in) :: bb
+      real(wp), intent(out) :: s, s_dot, g(n_dof)
+      integer :: q
+      s = -ch%slack
+      s_dot = 0.0_wp
+      g = 0.0_wp
+      do q = 1, ch%n_sections
+         call belt_section_add(this%geom(ch%section(q)), bb, s, s_dot, g)
+      end do
+   end subroutine chain_deformation
+
    !> After an accepted step: every element's memory from its share of the
    !! accepted deformation and rate (figure 18); a changed law restarts the
    !! stepper. An element's rate is x_i' = w_i s' with w_i >= 0 (0 when the
@@ -359,7 +369,7 @@ contains
       type(belt_body_t) :: bb
       type(chain_split_t) :: sp
       real(wp) :: s, s_dot, g(n_dof)
-      integer :: c, i, q, n
+      integer :: c, i, n
       logical :: changed
       associate (u1 => size(extra))
       end associate
@@ -369,12 +379,7 @@ contains
          associate (ch => this%chain(c))
             n = ch%n_elements
             if (all(ch%law(1:n)%elastic)) cycle     ! no memory in this chain
-            s = -ch%slack
-            s_dot = 0.0_wp
-            g = 0.0_wp
-            do q = 1, ch%n_sections
-               call belt_section_add(this%geom(ch%section(q)), bb, s, s_dot, g)
-            end do
+            call chain_deformation(this, ch, bb, s, s_dot, g)
             if (.not. s > 0.0_wp) cycle
             if (.not. abs(s_dot) > 0.0_wp .and. ieee_is_finite(s_dot)) cycle
             if (s_dot > 0.0_wp .and. .not. any(ch%mem(1:n)%unloading)) cycle
