@@ -668,12 +668,12 @@ contains
          //'TORSO, the two torso sections one tension (the webbing slides over the chest); ALL, the three ' &
          //'sections one tension (one webbing sliding through buckle and D-ring: the deformations add). ' &
          //'LAPSIDES = 2 gives the lap belt''s two sides their own anchorages (*BELTS 1 and 4), each ' &
-         //'carrying half of the lap belt''s law. ITER bounds the iterations of the shared-deflection ' &
-         //'search (belt and abdomen or chest in series); a search that does not converge ends the run.'
+         //'carrying half of the lap belt''s law. ITER: Newton evaluations of the shared-deflection ' &
+         //'search (belt and abdomen or chest in series) before it bisects its bracket (docs/belts.md).'
       call set_fields(t(g_beltoptions), [ &
          word_field('COUPLING', 'SEPARATE|TORSO|ALL', blank_default, 'sections sharing one tension'), &
          int_field('LAPSIDES', blank_default, 1, 1, 2, 'lap belt sides modelled: 1 lumped, 2 each its own'), &
-         int_field('ITER', blank_default, 60, 1, 1000, 'iteration limit of the shared deflection')])
+         int_field('ITER', blank_default, 60, 1, 1000, 'Newton evaluations of a search, then bisection')])
       t(g_beltoptions)%field(1)%default = real(1, wp)
    end subroutine belt_groups
 

@@ -101,7 +101,13 @@ module belt_shared_deflection
    !! it stays inside the bracket and at least halves the step before last
    !! (the rule of rtsafe), otherwise the bracket is bisected, so the search
    !! cannot diverge; it converges when |g| <= g_tol*scale, when the bracket
-   !! or the step falls below x_tol, and fails after max_iter evaluations.
+   !! or the step falls below x_tol. That rule halves the step, not the
+   !! bracket: Newton steps that alternate about a kink or a jump of g can use
+   !! up max_iter evaluations before the bracket is small (seen from stale
+   !! starts in unloading chains). So after max_iter evaluations the search
+   !! bisects, at most bisections more times: enough to take any bracket of
+   !! doubles below x_tol, so it fails only on values that are not finite. A
+   !! search that converges within max_iter is unchanged.
    type :: root_search_t
       real(wp) :: lo = 0.0_wp, hi = 0.0_wp
       real(wp) :: x = 0.0_wp
@@ -109,8 +115,13 @@ module belt_shared_deflection
       real(wp) :: x_tol = 0.0_wp, g_tol = 0.0_wp
       real(wp) :: g = 0.0_wp            !< the last value of g
       integer :: iterations = 0, max_iter = 0
+      logical :: bisecting = .false.   !< past max_iter: bisections only
       integer :: state = root_running
    end type root_search_t
+
+   !> Bisections after max_iter evaluations (2**-110 of any bracket is far
+   !! below every tolerance here, 1e-14 of its scale).
+   integer, parameter :: bisections = 110
 
 contains
 
@@ -149,7 +160,7 @@ contains
          r%state = root_not_finite
          return
       end if
-      if (abs(g) <= r%g_tol*scale .or. abs(r%step) <= r%x_tol) then
+      if (abs(g) <= r%g_tol*scale) then
          r%state = root_converged
          return
       end if
@@ -163,11 +174,15 @@ contains
          return
       end if
       if (r%iterations >= r%max_iter) then
-         r%state = root_failed
-         return
+         if (r%bisecting) then
+            r%state = root_failed
+            return
+         end if
+         r%bisecting = .true.
+         r%max_iter = r%max_iter + bisections
       end if
       xn = r%lo - 1.0_wp      ! (outside: bisect unless Newton gives better)
-      if (dg > 0.0_wp .and. dg < huge(1.0_wp)) xn = r%x - g/dg   ! huge: g jumps here
+      if (dg > 0.0_wp .and. dg < huge(1.0_wp) .and. .not. r%bisecting) xn = r%x - g/dg   ! huge: g jumps here
       if (.not. (xn > r%lo .and. xn < r%hi .and. abs(xn - r%x) <= 0.5_wp*abs(r%step_old))) xn = 0.5_wp*(r%lo + r%hi)
       r%step_old = r%step
       r%step = xn - r%x
@@ -787,6 +802,13 @@ contains
             end if
             if (f_gate(k) > 0.0_wp .and. f <= f_gate(k)) then
                xs(k) = z(k)                ! the gate holds it (the column before it moves)
+               cycle
+            end if
+            if (f >= f_max(k) .and. f > 0.0_wp) then
+               ! beyond the force it reaches at the top of its range, s - sum z + z_k:
+               ! it stays there, and adds no compliance (its branch's slope there
+               ! would make h' large, and a Newton step falsely small)
+               xs(k) = x_max(k)
                cycle
             end if
             if (.not. f > 0.0_wp) then
