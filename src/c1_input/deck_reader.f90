@@ -472,17 +472,26 @@ contains
    !! card convention), so a number that runs on from column 72 into them
    !! without a blank is cut short: "1200." in columns 70-74 reads as 120.
    !! An archival deck may have sequence numbers there right after a value,
-   !! so this is a warning, not an error.
+   !! so this is a warning, not an error. Text (a title, a file name) that
+   !! runs on into them is warned about too.
    subroutine warn_run_into_id(deck, s, where, src, line, c)
       type(deck_t), intent(inout) :: deck
       type(group_spec_t), intent(in) :: s
       character(len=*), intent(in) :: where, c
       integer, intent(in) :: src, line
       integer :: k, first, last
-      if (c(data_last_col:data_last_col) == ' ') return
-      if (index('0123456789.+-EeDd', c(data_last_col + 1:data_last_col + 1)) == 0) return
+      if (c(data_last_col:data_last_col) == ' ' .or. c(data_last_col + 1:data_last_col + 1) == ' ') return
       do k = 1, s%n_fields
-         if (s%field(k)%kind == kind_text .or. s%field(k)%last_col /= data_last_col) cycle
+         if (s%field(k)%last_col /= data_last_col) cycle
+         if (s%field(k)%kind == kind_text) then
+            ! a title or a file name cut at column 72
+            call append_string(deck%warnings, deck%source_name(src)%s//':'//itoa(line)//': '//where//', field ' &
+               //trim(s%field(k)%name)//' (columns '//itoa(s%field(k)%first_col)//'-'//itoa(data_last_col) &
+               //'): the text runs on into columns 73-80, the card''s identification, which is not read: "' &
+               //trim(c(data_last_col + 1:))//'" is left out')
+            cycle
+         end if
+         if (index('0123456789.+-EeDd', c(data_last_col + 1:data_last_col + 1)) == 0) cycle
          call run_around(c, data_last_col, s%field(k)%first_col, card_width, first, last)
          call append_string(deck%warnings, deck%source_name(src)%s//':'//itoa(line)//': '//where//', field ' &
             //trim(s%field(k)%name)//' (columns '//itoa(s%field(k)%first_col)//'-'//itoa(data_last_col) &

@@ -52,15 +52,29 @@ RUN_TIMEOUT = 3.0      # s; a capped run takes under 0.1 s (Debug build)
 # failure on every run instead of failing the test. Remove an entry once fixed.
 # (Other seeds find more decks of the same kind: a joint friction limit XI of 0,
 # or a segment started with a rate, in the free-fall deck integrated by NINT = 3.)
-# (The names depend on every base deck's text: the random stream runs through them in
-# order. The default deck's seat and belts, issue 6, renamed the two below; the failures
-# are the same kind as the one reported before, free_fall_value_15.)
-KNOWN_FAILURES = {
-    "free_fall_value_17":
-        "segment 6 starts at -1000 deg/s in the free-fall deck (NINT = 3): Dormand-Prince grinds "
-        "through the report's discontinuous Coulomb friction (C' on when |rate| >= xi, 0 below), "
-        "1.5 million steps down to 1.6e-9 s for 0.01 s (30 s, Debug); no work limit ends it",
-}
+# Each is known by what its mutated deck holds, not by its name: the names depend on
+# every base deck's text, as the random stream runs through them in order.
+KNOWN_FAILURES = [
+    ("free_fall_value_", " 6       22. -1.00E+03",
+     "segment 6 starts at -1000 deg/s in the free-fall deck (NINT = 3): Dormand-Prince grinds "
+     "through the report's discontinuous Coulomb friction (C' on when |rate| >= xi, 0 below), "
+     "1.5 million steps down to 1.6e-9 s for 0.01 s (30 s, Debug); no work limit ends it"),
+]
+
+
+def known_failure(work, failure):
+    """The KNOWN_FAILURES entry a failure ("name: message") is, or None."""
+    name = failure.split(":")[0]
+    for prefix, line, reason in KNOWN_FAILURES:
+        if name.startswith(prefix):
+            try:
+                with open(os.path.join(work, name + ".deck"), encoding="latin-1") as f:
+                    if line in f.read():
+                        return prefix, line, reason
+            except OSError:
+                pass
+    return None
+
 
 CAP_DECK = """$ fuzz_decks.py: a short run in place of the mutated deck's time controls
 *TIME
@@ -282,14 +296,14 @@ def main():
           f"{len(fuzz.long_runs)} long runs stopped at {RUN_TIMEOUT} s and run again capped"
           + (f" ({', '.join(fuzz.long_runs)})" if fuzz.long_runs else ""))
     print(f"fuzz: {elapsed:.1f} s; the slowest process that ended took {fuzz.slowest[0]:.2f} s ({fuzz.slowest[1]})")
-    known = [f for f in fuzz.failures if f.split(":")[0] in KNOWN_FAILURES]
-    fuzz.failures = [f for f in fuzz.failures if f not in known]
-    for f in known:
-        name = f.split(":")[0]
-        print(f"KNOWN FAILURE {f}\n    reported: {KNOWN_FAILURES[name]}")
-    for name in KNOWN_FAILURES if SEED == DEFAULT_SEED else ():   # the names belong to the default seed
-        if not any(f.startswith(name + ":") for f in known):
-            print(f"NOTE: known failure {name} did not fail: remove it from KNOWN_FAILURES")
+    known = [(f, known_failure(work, f)) for f in fuzz.failures]
+    known = [(f, k) for f, k in known if k is not None]
+    fuzz.failures = [f for f in fuzz.failures if f not in [f for f, _ in known]]
+    for f, (_, _, reason) in known:
+        print(f"KNOWN FAILURE {f}\n    reported: {reason}")
+    for entry in KNOWN_FAILURES if SEED == DEFAULT_SEED else ():   # found with the default seed
+        if not any(k == entry for _, k in known):
+            print(f"NOTE: known failure {entry[0]}* with {entry[1]!r} did not fail: remove it from KNOWN_FAILURES")
     if fuzz.check_status.get(2, 0) < 50:
         fuzz.failures.append("too few decks were rejected: the mutations are not biting")
     if fuzz.run_status.get("0", 0) + fuzz.run_status.get("0 capped", 0) < 50:
