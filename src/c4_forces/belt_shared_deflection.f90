@@ -106,8 +106,10 @@ module belt_shared_deflection
    !! up max_iter evaluations before the bracket is small (seen from stale
    !! starts in unloading chains). So after max_iter evaluations the search
    !! bisects, at most bisections more times: enough to take any bracket of
-   !! doubles below x_tol, so it fails only on values that are not finite. A
-   !! search that converges within max_iter is unchanged.
+   !! doubles below x_tol or to two neighbouring doubles (which is
+   !! convergence), so it fails only on values that are not finite. A Newton
+   !! step below x_tol is followed by a probe just past the predicted root,
+   !! which closes the bracket when the step was right.
    type :: root_search_t
       real(wp) :: lo = 0.0_wp, hi = 0.0_wp
       real(wp) :: x = 0.0_wp
@@ -183,7 +185,20 @@ contains
       end if
       xn = r%lo - 1.0_wp      ! (outside: bisect unless Newton gives better)
       if (dg > 0.0_wp .and. dg < huge(1.0_wp) .and. .not. r%bisecting) xn = r%x - g/dg   ! huge: g jumps here
-      if (.not. (xn > r%lo .and. xn < r%hi .and. abs(xn - r%x) <= 0.5_wp*abs(r%step_old))) xn = 0.5_wp*(r%lo + r%hi)
+      if (.not. (xn > r%lo .and. xn < r%hi .and. abs(xn - r%x) <= 0.5_wp*abs(r%step_old))) then
+         xn = 0.5_wp*(r%lo + r%hi)
+      else if (abs(xn - r%x) < 0.5_wp*r%x_tol) then
+         ! a Newton step below the tolerance: probe just past the predicted root,
+         ! which closes the bracket if the step was right (where the force test
+         ! cannot be met, g's rounding exceeding it) and not if the slope was
+         ! too large, when the search goes on
+         xn = r%x - sign(0.5_wp*r%x_tol, g)
+         if (.not. (xn > r%lo .and. xn < r%hi)) xn = 0.5_wp*(r%lo + r%hi)
+      end if
+      if (.not. (xn > r%lo .and. xn < r%hi)) then
+         r%state = root_converged      ! the bracket is two neighbouring doubles
+         return
+      end if
       r%step_old = r%step
       r%step = xn - r%x
       r%x = xn
@@ -753,7 +768,7 @@ contains
       end if
       if (r%state == root_failed) split%status = split_no_convergence
       split%branch = r%x
-      if (abs(h) > 1.0e3_wp*defl_tol*s .and. split%status == split_ok) then
+      if (abs(h) > defl_tol*s .and. split%status == split_ok) then
          ! a flat branch or a jump: interpolate between the bracket's ends
          call deformations_at(r%lo, x_lo, h_lo, dh, status, split%iterations, seg)
          if (status == split_ok) call deformations_at(r%hi, x_hi, h_hi, dh, status, split%iterations, seg)
@@ -851,7 +866,7 @@ contains
       case (split_no_convergence)
          text = 'the shared deflection did not converge within '//itoa(max_iter)//' iterations'
          if (present(setting)) text = text//setting
-         text = text//' at the deformation '//num(s)//' in, rate '//num(s_dot)//' in/s'
+         text = text//' and '//itoa(bisections)//' bisections at the deformation '//num(s)//' in, rate '//num(s_dot)//' in/s'
       case (split_not_finite)
          text = 'the shared deflection met a value that is not finite (deformation '//num(s)//' in, rate ' &
                 //num(s_dot)//' in/s)'
