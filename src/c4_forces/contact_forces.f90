@@ -315,8 +315,9 @@ contains
       if (.not. ps%split%force > 0.0_wp) return
       b = b + ps%split%force*ps%b_n - ps%p_t*ps%b_t
       aux_rate(this%aux_friction) = ps%p_t*ps%cs%v_t
-      ! the vehicle's work (the surface moves with it): the force's power at
-      ! the body's material point plus what the surface absorbs and dissipates
+      ! the vehicle's work (C.6 with E6-2, docs/contacts.md 4.7: the surface moves with it):
+      ! the force's power at the body's material point plus what the surface
+      ! absorbs and dissipates
       aux_rate(this%aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(ps%b_n, st%zdot)) &
                                - ps%p_t*(dot_product(ps%b_t, st%zdot) - ps%cs%v_t)
    end subroutine pair_add_forces

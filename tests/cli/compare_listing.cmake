@@ -1,10 +1,10 @@
 # Run a shipped deck and compare its listing with the archived one, number
 # by number within stated tolerances (numdiff): relative 1e-6, absolute
 # 1e-9. The listings are archived from the Debug build the tests use; a
-# Release build differs in printed last digits (lap_belt, free_fall's time
-# of a tied maximum) and, for the interior deck, from the first contact
-# impacts on, the friction's held direction (docs/contacts.md, open point 11),
-# so compare with the Debug build.
+# Release build reproduces most of them but not all (unbelted_driver,
+# lap_belt, free_fall, interior_driver differ in printed last digits:
+# docs/validation.md, "Reproducing an archived run"), so compare with the
+# Debug build.
 # The deck is named relative to its directory so that the listing, which
 # names its decks, does not depend on where the source tree lies.
 file(MAKE_DIRECTORY ${WORK})

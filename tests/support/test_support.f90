@@ -17,12 +17,13 @@ module test_support
    use model, only: model_t
    use default_deck, only: default_deck_lines
    use body_only_deck, only: body_only_deck_lines
+   use loading_curves, only: loading_curve_t, curve_table
    implicit none
    private
 
    public :: default_model, model_from_cards, model_with_changes, rng_t, kinetic_energy_section_b
    public :: cards_of_default, body_only_model, body_only_with_changes, cards_of_body_only
-   public :: shipped_model
+   public :: shipped_model, table_curve
 
    !> A linear congruential generator: the same numbers on every machine.
    type :: rng_t
@@ -191,4 +192,14 @@ contains
       vy(8) = ky + r(8)*qd(8)*cos(q(8))
       ke = 0.5_wp*sum(m%body%mass*(vx**2 + vy**2) + m%body%inertia*qd(1:8)**2)
    end function kinetic_energy_section_b
+   !> A tabulated loading curve (NLOAD = 2) through the points (d, f).
+   pure function table_curve(d, f) result(c)
+      real(wp), intent(in) :: d(:), f(:)
+      type(loading_curve_t) :: c
+      c%form = curve_table
+      allocate (c%defl(size(d)), c%force(size(f)))
+      c%defl = d
+      c%force = f
+   end function table_curve
+
 end module test_support
