@@ -485,7 +485,7 @@ contains
          if (s%field(k)%last_col /= data_last_col) cycle
          if (s%field(k)%kind == kind_text) then
             ! a title or a file name cut at column 72
-            call append_string(deck%warnings, deck%source_name(src)%s//':'//itoa(line)//': '//where//', field ' &
+            call append_string(deck%warnings, card_place(deck, src, line)//where//', field ' &
                //trim(s%field(k)%name)//' (columns '//itoa(s%field(k)%first_col)//'-'//itoa(data_last_col) &
                //'): the text runs on into columns 73-80, the card''s identification, which is not read: "' &
                //trim(c(data_last_col + 1:))//'" is left out')
@@ -493,12 +493,21 @@ contains
          end if
          if (index('0123456789.+-EeDd', c(data_last_col + 1:data_last_col + 1)) == 0) cycle
          call run_around(c, data_last_col, s%field(k)%first_col, card_width, first, last)
-         call append_string(deck%warnings, deck%source_name(src)%s//':'//itoa(line)//': '//where//', field ' &
+         call append_string(deck%warnings, card_place(deck, src, line)//where//', field ' &
             //trim(s%field(k)%name)//' (columns '//itoa(s%field(k)%first_col)//'-'//itoa(data_last_col) &
             //'): "'//c(first:last)//'" runs on into columns 73-80, the card''s identification, which is not ' &
             //'read: the value read is "'//c(first:data_last_col)//'"')
       end do
    end subroutine warn_run_into_id
+
+   !> "file:line: " of a card, or nothing for lines without a source.
+   function card_place(deck, src, line) result(text)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: src, line
+      character(len=:), allocatable :: text
+      text = ''
+      if (src > 0 .and. src <= size(deck%source_name)) text = deck%source_name(src)%s//':'//itoa(line)//': '
+   end function card_place
 
    !> The run of non-blank columns through edge and edge + 1: back from edge
    !! to no further than lo, on from edge + 1 to no further than hi.
