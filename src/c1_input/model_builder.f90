@@ -97,6 +97,18 @@ contains
       pairs = scene_pairs(m)
       ! an opening narrower than a body point's arc would flip its force at the
       ! middle (only the nearer edge acts): refused (review of issue 7)
+      ! D-C12: the driver's side rim 10* needs DS (0 < D_s <= D_10) once the
+      ! wheel is described; without it the pairs (5, 10*) and (10, 10*),
+      ! undesired contacts of Table 9, would be left out without a word
+      if (m%options%nbody == 1 .and. m%interior%given(10) .and. m%interior%given(8)) then
+         if (.not. m%interior%ds > 0.0_wp) then
+            call problem_at(deck, err, g_interior, 'DS (columns 23-32) is blank: the driver''s wheel (*SURFACES ' &
+               //'8, 10) needs the side rim''s equivalent length D_s for the shoulder and hand pairs (10*, D-C12)')
+         else if (m%interior%ds > m%interior%d(10)) then
+            call problem_at(deck, err, g_interior, 'DS = '//num(m%interior%ds)//' in (columns 23-32): the side ' &
+               //'rim cannot be longer than the rim, D = '//num(m%interior%d(10))//' in (*SURFACES 10, D-C12)')
+         end if
+      end if
       if (m%interior%di > 0.0_wp) then
          ! an opening as wide as the rim would leave no rim (D-C11)
          if (m%interior%given(10) .and. .not. m%interior%di < m%interior%d(10)) call problem_at(deck, err, &

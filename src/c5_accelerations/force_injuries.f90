@@ -79,17 +79,17 @@ contains
             select case (f%arc)
             case (0)            ! belts and the seat: their normal component on the bone
                across(f%segment) = across(f%segment) - f%force(1)*sin(z(f%segment)) + f%force(2)*cos(z(f%segment))
-            case (2)            ! the upper back's contact: the back (Table 5 row 5)
+            case (2)            ! the upper back's contact: the back (Table 5 row 5; P itself, F7-2)
                contact(5) = contact(5) + f%normal_force
-            case (3)            ! the chest's: the ribs (row 6)
+            case (3)            ! the chest's: the ribs (row 6; F7-2)
                contact(6) = contact(6) + f%normal_force
-            case (4)            ! the head's: the face head-on (row 9, F7-1), else the skull (row 4)
+            case (4)            ! the head's: the face head-on (row 9, F7-1), else the skull (row 4, F7-2)
                if (any(face_on == f%surface)) then
                   contact(9) = contact(9) + f%normal_force
                else
                   contact(4) = contact(4) + f%normal_force
                end if
-            case (9)            ! the shin's: the lower leg (row 8)
+            case (9)            ! the shin's: the lower leg (row 8; with the seat's and belts', F7-2)
                contact(8) = contact(8) + f%normal_force
             end select
          end associate

@@ -186,6 +186,7 @@ contains
       real(wp) :: dd, q
       m_cut = 0
       if (.not. (d > 0.0_wp .and. best2 > 0.0_wp)) return
+      if (.not. d < 1.0e50_wp) return          ! d**5 would overflow (and trap in the Debug build)
       dd = (d*d)*(d*d)*d*inv_h3
       if (.not. (dd > 1.0e-200_wp .and. dd <= huge(dd))) return
       q = best2/dd/(1.0_wp + 1.0e-9_wp)
