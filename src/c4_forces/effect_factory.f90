@@ -27,11 +27,12 @@ module effect_factory
 contains
 
    !> The effects of one occupant whose body constants are bc and whose
-   !! initial coordinates are z0.
-   subroutine build_effects(m, bc, z0, effects)
+   !! initial coordinates are z0 (and rates zdot0; zero when absent).
+   subroutine build_effects(m, bc, z0, effects, zdot0)
       type(model_t), intent(in) :: m
       type(body_constants_t), intent(in) :: bc
       real(wp), intent(in) :: z0(n_dof)
+      real(wp), intent(in), optional :: zdot0(n_dof)
       type(effect_slot_t), allocatable, intent(out) :: effects(:)
       type(contact_pair_effect_t), allocatable :: contacts(:)
       integer :: i
@@ -41,7 +42,7 @@ contains
       if (m%environment%gravity > 0.0_wp) call add(gravity_effect(bc, m%body, m%environment%gravity, z0)) ! C.4.b
       if (any(m%joints%k_elastic > 0.0_wp)) call add(joint_elasticity_effect(m%joints%k_elastic, z0)) ! C.4.c
       if (any(m%joints%c_friction > 0.0_wp)) &
-         call add(joint_friction_effect(m%joints%c_friction, m%joints%xi))              ! C.4.c
+         call add(joint_friction_effect(m%joints%c_friction, m%joints%xi, rates0()))    ! C.4.c, D-4a
       if (any([(restraint_is_active(m%joints%restraint(i)), i=1, n_joint)])) &
          call add(joint_stops_effect(m%joints%restraint))                               ! C.4.c, fig. 9
       call add(joint_dislocation_effect(m%joints%restraint))                            ! C.4.c, fig. 10
@@ -55,6 +56,12 @@ contains
          call add(contacts(i))
       end do
    contains
+      function rates0() result(r)
+         real(wp) :: r(n_dof)
+         r = 0.0_wp
+         if (present(zdot0)) r = zdot0
+      end function rates0
+
       subroutine add(e)
          class(effect_t), intent(in) :: e
          type(effect_slot_t), allocatable :: longer(:)

@@ -56,7 +56,7 @@ contains
       occ%solver = matrix_structured
       if (m%numerics%solver == solver_dense .or. .not. body_structure_matches(occ%bc)) occ%solver = matrix_dense
       call initial_state(m%body, m%vehicle, occ%z0, occ%zdot0)
-      call build_effects(m, occ%bc, occ%z0, occ%effects)
+      call build_effects(m, occ%bc, occ%z0, occ%effects, occ%zdot0)
       n_eff = size(occ%effects)
       call layout%reserve(label//': z', n_dof, occ%z_offset)
       call layout%reserve(label//': z''', n_dof, occ%zdot_offset)
