@@ -430,7 +430,7 @@ contains
       t(g_numerics)%name = 'NUMERICS'
       t(g_numerics)%title = 'Numerical controls beyond the report (C.3, C.5, C.6)'
       t(g_numerics)%note = 'ASTART: how Adams-Moulton (NINT 1) starts, by the report''s modified Euler ' &
-         //'(order 3) or by RK4 (order 4). SOLVER: A z'''' = b by a Cholesky written for the body''s ' &
+         //'(order 3) or by RK4 (order 4). SOLVER: A z'''' = b by an L D L^T written for the body''s ' &
          //'structure or by LAPACK (equal to rounding). An energy-balance error beyond EBTOL times the ' &
          //'largest body kinetic energy flags the run; with EBFAIL = STOP it ends as a numerical failure (exit 3).'
       call set_fields(t(g_numerics), [ &

@@ -97,7 +97,7 @@ module model
    !> Linear solver of A z'' = b (C.5).
    integer, parameter :: solver_structured = 1, solver_dense = 2
    character(len=48), parameter :: solver_name(2) = [character(len=48) :: &
-      'Cholesky for the body''s structure', 'LAPACK dense Cholesky (dpotf2, dtrsv)']
+      'L D L^T for the body''s structure', 'LAPACK dense Cholesky (dpotf2, dtrsv)']
 
    !> Start of the Adams-Moulton method (C.3; docs/errata.md D-6).
    integer, parameter :: astart_euler = 1, astart_rk4 = 2

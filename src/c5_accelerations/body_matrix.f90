@@ -9,14 +9,15 @@
 !!
 !! Two solvers, chosen by body_accelerations' optional argument:
 !!
-!! * solver_structured (the default): a Cholesky factorization P A P**T =
-!!   L L**T written for that structure, with the leaves eliminated first
+!! * solver_structured (the default): a factorization P A P**T = L D L**T
+!!   (L unit lower triangular, D diagonal) written for that structure, with the leaves eliminated first
 !!   and the hip last (elimination_order below). In that order the factor
 !!   fills in exactly one entry, L(y_h, x_h); its nonzeros below the
 !!   diagonal are, row by row, one unbroken run of columns (first_col), so
-!!   a profile ("skyline") Cholesky whose loops run over those runs reads
-!!   and writes only the 31 structurally nonzero entries: no zero is ever
-!!   touched, no BLAS, no allocation. Reciprocal pivots are stored. The
+!!   a profile ("skyline") factorization whose loops run over those runs
+!!   reads and writes only the 31 structurally nonzero entries: no zero is
+!!   ever touched, no BLAS, no allocation, no square root. Reciprocal
+!!   pivots are stored. The
 !!   loops carry gfortran's `!GCC$ unroll` directive (a comment to other
 !!   compilers): unrolled completely, every bound is a constant and the
 !!   loop overhead, which outweighed the arithmetic, goes away (2,400 ->
@@ -39,7 +40,7 @@ module body_matrix
    public :: body_matrix_assemble, body_accelerations, body_structure_matches
    public :: solver_structured, solver_dense
 
-   integer, parameter :: solver_structured = 1 !< Cholesky for figure 27's structure (default)
+   integer, parameter :: solver_structured = 1 !< L D L**T for figure 27's structure (default)
    integer, parameter :: solver_dense = 2      !< LAPACK dpotf2 + BLAS dtrsv, any SPD matrix
 
    !> The coupled segment pairs of figure 27 that the structured solve is
@@ -136,7 +137,7 @@ contains
       real(wp), intent(out) :: zdd(n_dof)
       integer, intent(out) :: info
       integer, intent(in), optional :: solver
-      real(wp) :: a(n_dof, n_dof), rpiv(n_dof)
+      real(wp) :: a(n_dof, n_dof), rdiag(n_dof)
       integer :: method
 
       method = solver_structured
@@ -144,8 +145,8 @@ contains
       select case (method)
       case (solver_structured)
          call structured_fill(bc, c, s, a)
-         call structured_factor(a, rpiv, info)
-         if (info == 0) call structured_solve(a, rpiv, b, zdd)
+         call structured_factor(a, rdiag, info)
+         if (info == 0) call structured_solve(a, rdiag, b, zdd)
       case (solver_dense)
          call lower_triangle(bc, c, s, a)
          zdd = b
@@ -211,17 +212,21 @@ contains
       u(10, 10) = bc%a(9)
    end subroutine structured_fill
 
-   !> C.5: profile Cholesky, row by row (L in u as structured_fill stores A):
-   !! L(p,q) = (A(p,q) - sum_k L(p,k) L(q,k)) / L(q,q) for q in the profile
-   !! of row p, then L(p,p) = sqrt(A(p,p) - sum_k L(p,k)**2). The sums run
-   !! over the columns both rows hold, from max(first_col(p), first_col(q)).
-   !! rpiv(p) = 1/L(p,p). A pivot that is not positive and finite means A
-   !! is not positive definite: info = the coordinate eliminated there.
-   pure subroutine structured_factor(u, rpiv, info)
+   !> C.5: profile L D L**T factorization, row by row (L unit lower, in u as
+   !! structured_fill stores A): with c_pq = L(p,q) D(q),
+   !! c_pq = A(p,q) - sum_k c_pk L(q,k) for q in the profile of row p,
+   !! L(p,q) = c_pq / D(q), then D(p) = A(p,p) - sum_q c_pq L(p,q). The sums
+   !! run over the columns both rows hold, from max(first_col(p),
+   !! first_col(q)). rdiag(p) = 1/D(p). Without Cholesky's square roots the
+   !! chain of dependent pivots (alpha_6 -> alpha_5 -> alpha_3 -> ... -> y_h)
+   !! is shorter, which is what sets the solve's time (docs/performance.md).
+   !! A pivot that is not positive and finite means A is not positive
+   !! definite: info = the coordinate eliminated there.
+   pure subroutine structured_factor(u, rdiag, info)
       real(wp), intent(inout) :: u(n_dof, n_dof)
-      real(wp), intent(out) :: rpiv(n_dof)
+      real(wp), intent(out) :: rdiag(n_dof)
       integer, intent(out) :: info
-      real(wp) :: pivot, l_pq
+      real(wp) :: pivot, c(n_dof), l_pq
       integer :: p, q, k
       info = 0
       !GCC$ unroll 10
@@ -229,27 +234,28 @@ contains
          pivot = u(p, p)
          !GCC$ unroll 9
          do q = first_col(p), p - 1
-            l_pq = u(q, p)
+            c(q) = u(q, p)
             !GCC$ unroll 9
             do k = max(first_col(p), first_col(q)), q - 1
-               l_pq = l_pq - u(k, p)*u(k, q)
+               c(q) = c(q) - c(k)*u(k, q)
             end do
-            l_pq = l_pq*rpiv(q)
+            l_pq = c(q)*rdiag(q)
             u(q, p) = l_pq
-            pivot = pivot - l_pq*l_pq
+            pivot = pivot - c(q)*l_pq
          end do
          if (.not. (pivot > 0.0_wp .and. pivot <= huge(pivot))) then
             info = elimination_order(p)
             return
          end if
-         rpiv(p) = 1.0_wp/sqrt(pivot)
+         rdiag(p) = 1.0_wp/pivot
       end do
    end subroutine structured_factor
 
    !> C.5: z'' = x = A**-1 b from the factor: L y = P b forward by rows,
-   !! L**T w = y backward by columns (both over the profile only), x = P**T w.
-   pure subroutine structured_solve(u, rpiv, b, x)
-      real(wp), intent(in) :: u(n_dof, n_dof), rpiv(n_dof), b(n_dof)
+   !! v = D**-1 y, L**T w = v backward by columns (both over the profile
+   !! only), x = P**T w.
+   pure subroutine structured_solve(u, rdiag, b, x)
+      real(wp), intent(in) :: u(n_dof, n_dof), rdiag(n_dof), b(n_dof)
       real(wp), intent(out) :: x(n_dof)
       real(wp) :: y(n_dof), t
       integer :: p, k
@@ -260,11 +266,15 @@ contains
          do k = first_col(p), p - 1
             t = t - u(k, p)*y(k)
          end do
-         y(p) = t*rpiv(p)
+         y(p) = t
+      end do
+      !GCC$ unroll 10
+      do p = 1, n_dof
+         y(p) = y(p)*rdiag(p)
       end do
       !GCC$ unroll 10
       do p = n_dof, 1, -1
-         t = y(p)*rpiv(p)
+         t = y(p)
          !GCC$ unroll 9
          do k = first_col(p), p - 1
             y(k) = y(k) - u(k, p)*t

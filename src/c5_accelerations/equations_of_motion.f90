@@ -248,7 +248,7 @@ contains
       character(len=:), allocatable :: text
       select case (status)
       case (rhs_not_positive_definite)
-         text = 'the body matrix A (figure 27) is not positive definite (a Cholesky pivot is not positive and finite)'
+         text = 'the body matrix A (figure 27) is not positive definite (a pivot of its factorization is not positive and finite)'
       case (rhs_not_finite)
          text = 'the accelerations are not finite'
       case (rhs_diverged)

@@ -27,7 +27,7 @@ module occupant
       !! integrating quantities of their own), and those with memory (whose
       !! accept is called after each accepted step)
       integer, allocatable :: evaluated(:), remembering(:)
-      !> how A z'' = b is solved (C.5): the Cholesky written for figure 27's
+      !> how A z'' = b is solved (C.5): the L D L**T written for figure 27's
       !! structure, or LAPACK's dense one (*NUMERICS SOLVER, and always for a
       !! body coupled otherwise)
       integer :: solver = matrix_structured
