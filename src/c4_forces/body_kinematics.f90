@@ -16,7 +16,7 @@ module body_kinematics
    private
 
    public :: point_state_t, segment_cg_state, joint_state, to_interior, joint_segment
-   public :: point_force_generalized, joint_position_velocity, joint_position
+   public :: point_force_generalized, joint_position_velocity, joint_position, joint_positions
 
    integer, parameter :: max_links = 4
    integer, parameter :: n_links(n_seg) = [0, 1, 2, 3, 3, 4, 0, 1]
@@ -134,6 +134,26 @@ contains
          p = p + len*[c(j), s(j)]
       end do
    end function joint_position
+
+   !> The proximal joints (inertial) of all segments, p(:, i) for segment i,
+   !! from the cosines c and sines s of the angles: joint_position for each
+   !! i with the same arithmetic in the same order, each chain's prefix taken
+   !! once (the chains of the module's header: the chain to segment i's
+   !! joint is the chain to the joint of its last link's segment, then that
+   !! link).
+   pure function joint_positions(body, z, c, s) result(p)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), c(n_seg), s(n_seg)
+      real(wp) :: p(2, n_seg)
+      p(:, 1) = [z(hip_x), z(hip_y)]
+      p(:, 2) = p(:, 1) + body%length(1)*[c(1), s(1)]
+      p(:, 3) = p(:, 2) + body%length(2)*[c(2), s(2)]
+      p(:, 4) = p(:, 3) + body%length(3)*[c(3), s(3)]   ! the neck, L3
+      p(:, 5) = p(:, 3) + body%length(4)*[c(3), s(3)]   ! the shoulder, L4 along segment 3
+      p(:, 6) = p(:, 5) + body%length(5)*[c(5), s(5)]
+      p(:, 7) = p(:, 1)
+      p(:, 8) = p(:, 7) + body%length(7)*[c(7), s(7)]
+   end function joint_positions
 
    !> The generalized force of a force f (inertial) at the inertial point p
    !! of segment i: its virtual work J^T f, J = dp/dz for the material point

@@ -22,7 +22,7 @@ module contact_forces
       energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
       max_events_per_step, event_shatter, event_cut
    use output_series, only: output_series_t, series_new, column
-   use body_kinematics, only: point_force_generalized, joint_position
+   use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
       arc_segment, front_side, surface_flat, surface_line, surface_circle, surface_point
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
@@ -158,6 +158,7 @@ contains
       if (present(undesired)) e%undesired = undesired
       if (present(fsw)) e%fsw = fsw
       e%needs_vehicle = .true.
+      e%needs_joints = .true.                          ! pair_far's bound
       e%external = .true.
       e%has_energy = .true.
       e%has_memory = e%mu > 0.0_wp .or. e%undesired .or. e%fsw > 0.0_wp &
@@ -298,7 +299,7 @@ contains
       far = this%shattered
       side = side_unknown
       if (far) return
-      if (.not. sum(abs(st%zdot)) + sum(abs(st%vehicle%vel)) <= big) return
+      if (.not. st%rate_size + sum(abs(st%vehicle%vel)) <= big) return
       seg = arc_segment(this%i)
       cp = 1.0_wp
       sp = 0.0_wp
@@ -306,8 +307,9 @@ contains
          cp = cos(st%vehicle%pos(3))
          sp = sin(st%vehicle%pos(3))
       end if
-      ! the segment's proximal joint and direction in the interior frame
-      p = joint_position(this%body, st%z, st%c, st%s, seg)
+      ! the segment's proximal joint (occupant_state's joint_positions) and
+      ! its direction in the interior frame
+      p = st%joint(:, seg)
       d = p - st%vehicle%pos(1:2)
       jt = [d(1)*cp - d(2)*sp, d(1)*sp + d(2)*cp]
       et = [st%c(seg)*cp - st%s(seg)*sp, st%s(seg)*cp + st%c(seg)*sp]

@@ -58,14 +58,18 @@ module effect_base
    !> What every effect sees at one evaluation: the time, the occupant's
    !! generalized coordinates and rates, the sines and cosines of the
    !! segment angles, and the vehicle's state (filled only when an effect of
-   !! the occupant needs it). No default values: it is filled at every
-   !! evaluation (occupant_state), and initializing it there would cost as
-   !! much as a force.
+   !! the occupant needs it); the segments' proximal joints and the size of
+   !! the rates, filled only when an effect needs them (needs_joints: the
+   !! contact pairs' bound, pair_far, reads them 20 times an evaluation). No
+   !! default values: it is filled at every evaluation (occupant_state), and
+   !! initializing it there would cost as much as a force.
    type :: body_state_t
       real(wp) :: t
       real(wp) :: z(n_dof), zdot(n_dof)
       real(wp) :: c(n_seg), s(n_seg)
       type(vehicle_state_t) :: vehicle
+      real(wp) :: joint(2, n_seg)    !< joint_positions: segment i's proximal joint, inertial (in)
+      real(wp) :: rate_size          !< sum(abs(zdot)), in that order
    end type body_state_t
 
    !> Something that happened at an accepted step.
@@ -122,6 +126,7 @@ module effect_base
       integer :: n_aux_start = 0
       integer :: n_extra = 0             !< extra degrees of freedom (coordinates; rates follow)
       logical :: needs_vehicle = .false. !< reads st%vehicle
+      logical :: needs_joints = .false.  !< reads st%joint and st%rate_size
       logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)
       logical :: has_memory = .false.    !< its accept changes something (only such are called)
       logical :: has_energy(n_energy_kinds) = .false.

@@ -9,6 +9,7 @@ module occupant
    use preliminary, only: body_constants_t, body_constants, initial_state
    use effect_base, only: effect_t, effect_slot_t, body_state_t, point_force_list_t
    use effect_factory, only: build_effects
+   use body_kinematics, only: joint_positions
    use state_layout, only: state_layout_t
    use body_matrix, only: body_accelerations, body_structure_matches, matrix_structured => solver_structured, &
       matrix_dense => solver_dense
@@ -32,6 +33,7 @@ module occupant
       !! body coupled otherwise)
       integer :: solver = matrix_structured
       logical :: needs_vehicle = .false.
+      logical :: needs_joints = .false.   !< an effect reads st%joint, st%rate_size
       !> offsets in y: z is y(z_offset+1 : z_offset+n_dof), z' likewise
       integer :: z_offset = 0, zdot_offset = 0
       !> per effect: its extra coordinates and rates, its auxiliary quantities
@@ -78,6 +80,7 @@ contains
          if (e%n_aux_start > 0) call layout%reserve(trim(occ%label)//': '//trim(e%name)//' search starts', &
                                                     e%n_aux_start, j, error_controlled=.false.)
          occ%needs_vehicle = occ%needs_vehicle .or. e%needs_vehicle
+         occ%needs_joints = occ%needs_joints .or. e%needs_joints
          if (.not. allocated(occ%evaluated)) allocate (occ%evaluated(0))
          if (.not. allocated(occ%remembering)) allocate (occ%remembering(0))
          if (e%acts .or. e%n_aux > 0 .or. e%n_extra > 0) occ%evaluated = [(occ%evaluated(j), j=1, size(occ%evaluated)), k]
@@ -123,8 +126,11 @@ contains
    end subroutine occupant_initial_y
 
    !> What the effects see: the occupant's coordinates and rates in y, the
-   !! sines and cosines of the segment angles. The caller sets st%vehicle
-   !! when the occupant's effects need it (occ%needs_vehicle).
+   !! sines and cosines of the segment angles, and when an effect needs them
+   !! (occ%needs_joints; a body-only deck pays nothing) the segments' joints
+   !! and the size of the rates, once per evaluation rather than once per
+   !! contact pair. The caller sets st%vehicle when the occupant's effects
+   !! need it (occ%needs_vehicle).
    pure subroutine occupant_state(occ, t, y, st)
       type(occupant_t), intent(in) :: occ
       real(wp), intent(in) :: t, y(:)
@@ -134,6 +140,10 @@ contains
       st%zdot = y(occ%zdot_offset + 1:occ%zdot_offset + n_dof)
       st%c = cos(st%z(1:n_seg))
       st%s = sin(st%z(1:n_seg))
+      if (occ%needs_joints) then
+         st%joint = joint_positions(occ%body, st%z, st%c, st%s)
+         st%rate_size = sum(abs(st%zdot))
+      end if
    end subroutine occupant_state
 
    !> The forces from outside the body that the occupant's effects apply at
