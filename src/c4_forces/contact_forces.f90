@@ -86,8 +86,10 @@ module contact_forces
       !! geometry and arithmetic as an accept's full path, the same bits
       logical :: slip_stale = .false., slip_behind = .false.
       type(body_state_t) :: slip_state
-      !> for pair_far: the surface's e(psi) and normal, and the sizes that
-      !! scale its rounding margin (the body's lengths and radii, the surface's)
+      !> the surface's e(psi) (for contact_check and front_side too: the
+      !! same library call on the same angle, taken once) and normal, and for
+      !! pair_far the sizes that scale its rounding margin (the body's
+      !! lengths and radii, the surface's)
       real(wp) :: tk(2) = 0.0_wp, nk(2) = 0.0_wp, size_sum = 0.0_wp
    contains
       procedure :: add_forces => pair_add_forces
@@ -196,7 +198,7 @@ contains
       side_behind = this%behind
       if (present(behind)) side_behind = behind
       ps%f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
-      ps%cs = contact_check(ps%f, this%surface, side_behind)
+      ps%cs = contact_check(ps%f, this%surface, side_behind, this%tk)
       if (present(behind)) return
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
@@ -435,7 +437,7 @@ contains
       end if
       ps = pair_state(this, st)
       ! D-C16a: the side of the surface's line the point is on, where it is decided
-      side = front_side(ps%f, this%surface)
+      side = front_side(ps%f, this%surface, this%tk)
       if (side /= 0) this%behind = side < 0
       ! Table 9 (C.7): coming into contact (D-C28)
       if (this%undesired) then
