@@ -296,26 +296,18 @@ contains
       logical, intent(out) :: far
       integer, intent(out) :: side
       real(wp), parameter :: big = 1.0e100_wp, rel_margin = 1.0e-9_wp
-      real(wp) :: cp, sp, d(2), jt(2), et(2), p(2), v(2), ext, reach, scale, m, h, tt, u2, lam
+      real(wp) :: d(2), jt(2), et(2), p(2), v(2), ext, reach, scale, m, h, tt, u2, lam
       integer :: seg
       far = this%shattered
       side = side_unknown
       if (far) return
-      if (.not. st%rate_size + sum(abs(st%vehicle%vel)) <= big) return
+      if (.not. st%rate_size <= big) return
       seg = arc_segment(this%i)
-      cp = 1.0_wp
-      sp = 0.0_wp
-      if (abs(st%vehicle%pos(3)) > 0.0_wp) then
-         cp = cos(st%vehicle%pos(3))
-         sp = sin(st%vehicle%pos(3))
-      end if
-      ! the segment's proximal joint (occupant_state's joint_positions) and
-      ! its direction in the interior frame
-      p = st%joint(:, seg)
-      d = p - st%vehicle%pos(1:2)
-      jt = [d(1)*cp - d(2)*sp, d(1)*sp + d(2)*cp]
-      et = [st%c(seg)*cp - st%s(seg)*sp, st%s(seg)*cp + st%c(seg)*sp]
-      scale = this%size_sum + abs(p(1)) + abs(p(2)) + abs(st%vehicle%pos(1)) + abs(st%vehicle%pos(2))
+      ! the segment's proximal joint and direction in the interior frame
+      ! (occupant_frame, once per evaluation)
+      jt = st%frame_joint(:, seg)
+      et = st%frame_axis(:, seg)
+      scale = this%size_sum + st%joint_size(seg)
       if (.not. scale <= big) return
       m = rel_margin*(1.0_wp + scale)
       ext = 0.0_wp

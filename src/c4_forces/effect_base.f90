@@ -58,18 +58,24 @@ module effect_base
    !> What every effect sees at one evaluation: the time, the occupant's
    !! generalized coordinates and rates, the sines and cosines of the
    !! segment angles, and the vehicle's state (filled only when an effect of
-   !! the occupant needs it); the segments' proximal joints and the size of
-   !! the rates, filled only when an effect needs them (needs_joints: the
-   !! contact pairs' bound, pair_far, reads them 20 times an evaluation). No
-   !! default values: it is filled at every evaluation (occupant_state), and
-   !! initializing it there would cost as much as a force.
+   !! the occupant needs it); with the vehicle's state, when an effect needs
+   !! them (needs_joints: the contact pairs' bound, pair_far, reads them 20
+   !! times an evaluation), the segments' joints and axes in the interior
+   !! frame and the sizes that bound them (occupant_state's
+   !! occupant_frame). No default values: it is filled at every evaluation
+   !! (occupant_state), and initializing it there would cost as much as a
+   !! force.
    type :: body_state_t
       real(wp) :: t
       real(wp) :: z(n_dof), zdot(n_dof)
       real(wp) :: c(n_seg), s(n_seg)
       type(vehicle_state_t) :: vehicle
-      real(wp) :: joint(2, n_seg)    !< joint_positions: segment i's proximal joint, inertial (in)
-      real(wp) :: rate_size          !< sum(abs(zdot)), in that order
+      !> segment i's proximal joint and its e(theta_i) in the interior frame
+      !! (x = R(Phi)(X - x_c), the start of C.4)
+      real(wp) :: frame_joint(2, n_seg), frame_axis(2, n_seg)
+      !> |X| + |Y| of segment i's joint (inertial) + |x_c| + |y_c|: the
+      !! coordinates' size; sum |z'| + sum |vehicle rates|: the rates' size
+      real(wp) :: joint_size(n_seg), rate_size
    end type body_state_t
 
    !> Something that happened at an accepted step.
@@ -126,7 +132,7 @@ module effect_base
       integer :: n_aux_start = 0
       integer :: n_extra = 0             !< extra degrees of freedom (coordinates; rates follow)
       logical :: needs_vehicle = .false. !< reads st%vehicle
-      logical :: needs_joints = .false.  !< reads st%joint and st%rate_size
+      logical :: needs_joints = .false.  !< reads st%frame_joint, frame_axis, joint_size, rate_size
       logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)
       logical :: has_memory = .false.    !< its accept changes something (only such are called)
       logical :: has_energy(n_energy_kinds) = .false.

@@ -129,8 +129,7 @@ contains
       integer, intent(in) :: o
       real(wp), intent(in) :: t, y(:)
       type(body_state_t) :: st
-      call occupant_state(sys%occupants(o), t, y, st)
-      st%vehicle = vehicle_state_at(sys%vm, t)
+      call occupant_state(sys%occupants(o), t, y, st, vehicle_state_at(sys%vm, t))
    end function system_body_state
 
    subroutine system_rhs(this, t, y, dydt, status)
@@ -151,8 +150,11 @@ contains
                status = rhs_diverged
                return
             end if
-            call occupant_state(occ, t, y, st)
-            if (occ%needs_vehicle) st%vehicle = vehicle_state_at(this%vm, t)
+            if (occ%needs_vehicle) then
+               call occupant_state(occ, t, y, st, vehicle_state_at(this%vm, t))
+            else
+               call occupant_state(occ, t, y, st)
+            end if
             call occupant_rhs(occ, st, y, dydt, this%counts(:, o), info)
             if (info /= 0) then
                status = rhs_not_positive_definite
@@ -178,8 +180,7 @@ contains
       if (allocated(sys%failure_detail)) deallocate (sys%failure_detail)
       do o = 1, size(sys%occupants)
          associate (occ => sys%occupants(o))
-            call occupant_state(occ, t, y, st)
-            st%vehicle = vehicle_state_at(sys%vm, t)
+            call occupant_state(occ, t, y, st, vehicle_state_at(sys%vm, t))
             do k = 1, size(occ%effects)
                xo = occ%extra_offset(k)
                ao = occ%aux_offset(k)

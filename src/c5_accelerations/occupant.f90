@@ -10,13 +10,14 @@ module occupant
    use effect_base, only: effect_t, effect_slot_t, body_state_t, point_force_list_t
    use effect_factory, only: build_effects
    use body_kinematics, only: joint_positions
+   use vehicle_motion, only: vehicle_state_t
    use state_layout, only: state_layout_t
    use body_matrix, only: body_accelerations, body_structure_matches, matrix_structured => solver_structured, &
       matrix_dense => solver_dense
    implicit none
    private
 
-   public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces
+   public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces, occupant_frame
    public :: occupant_initial_y, occupant_add_effect, occupant_point_forces
 
    type :: occupant_t
@@ -33,7 +34,7 @@ module occupant
       !! body coupled otherwise)
       integer :: solver = matrix_structured
       logical :: needs_vehicle = .false.
-      logical :: needs_joints = .false.   !< an effect reads st%joint, st%rate_size
+      logical :: needs_joints = .false.   !< an effect reads st's interior frame data (occupant_frame)
       !> offsets in y: z is y(z_offset+1 : z_offset+n_dof), z' likewise
       integer :: z_offset = 0, zdot_offset = 0
       !> per effect: its extra coordinates and rates, its auxiliary quantities
@@ -126,25 +127,62 @@ contains
    end subroutine occupant_initial_y
 
    !> What the effects see: the occupant's coordinates and rates in y, the
-   !! sines and cosines of the segment angles, and when an effect needs them
-   !! (occ%needs_joints; a body-only deck pays nothing) the segments' joints
-   !! and the size of the rates, once per evaluation rather than once per
-   !! contact pair. The caller sets st%vehicle when the occupant's effects
-   !! need it (occ%needs_vehicle).
-   pure subroutine occupant_state(occ, t, y, st)
+   !! sines and cosines of the segment angles, and the vehicle's state when
+   !! given (the caller gives it when the occupant's effects need it,
+   !! occ%needs_vehicle); with it, when an effect needs them
+   !! (occ%needs_joints; a body-only deck pays nothing), the segments'
+   !! joints and axes in the interior frame (occupant_frame), once per
+   !! evaluation rather than once per contact pair.
+   pure subroutine occupant_state(occ, t, y, st, vehicle)
       type(occupant_t), intent(in) :: occ
       real(wp), intent(in) :: t, y(:)
       type(body_state_t), intent(inout) :: st
+      type(vehicle_state_t), intent(in), optional :: vehicle
       st%t = t
       st%z = y(occ%z_offset + 1:occ%z_offset + n_dof)
       st%zdot = y(occ%zdot_offset + 1:occ%zdot_offset + n_dof)
       st%c = cos(st%z(1:n_seg))
       st%s = sin(st%z(1:n_seg))
-      if (occ%needs_joints) then
-         st%joint = joint_positions(occ%body, st%z, st%c, st%s)
-         st%rate_size = sum(abs(st%zdot))
+      if (present(vehicle)) then
+         st%vehicle = vehicle
+         if (occ%needs_joints) call occupant_frame(occ%body, st)
       end if
    end subroutine occupant_state
+
+   !> The interior frame's data of st (body_state_t; its z, c, s and
+   !! vehicle set): each segment's proximal joint (joint_positions) and
+   !! e(theta_i) turned into the interior frame, x = R(Phi)(X - x_c) (the
+   !! start of C.4; no trigonometry at a pitch of zero), the coordinates'
+   !! size |X| + |Y| + |x_c| + |y_c| and the rates' size. For the contact
+   !! pairs' bound (pair_far), which only needs them within its margin, not
+   !! to the bit (a pair's own geometry, body_feature, does its own).
+   pure subroutine occupant_frame(body, st)
+      type(body_section_t), intent(in) :: body
+      type(body_state_t), intent(inout) :: st
+      real(wp) :: p(2, n_seg), d(2), cp, sp
+      integer :: i
+      p = joint_positions(body, st%z, st%c, st%s)
+      associate (vpos => st%vehicle%pos)
+         if (abs(vpos(3)) > 0.0_wp) then
+            cp = cos(vpos(3))
+            sp = sin(vpos(3))
+            do i = 1, n_seg
+               d = p(:, i) - vpos(1:2)
+               st%frame_joint(:, i) = [d(1)*cp - d(2)*sp, d(1)*sp + d(2)*cp]
+               st%frame_axis(:, i) = [st%c(i)*cp - st%s(i)*sp, st%s(i)*cp + st%c(i)*sp]
+            end do
+         else
+            do i = 1, n_seg
+               st%frame_joint(:, i) = p(:, i) - vpos(1:2)
+               st%frame_axis(:, i) = [st%c(i), st%s(i)]
+            end do
+         end if
+         do i = 1, n_seg
+            st%joint_size(i) = abs(p(1, i)) + abs(p(2, i)) + abs(vpos(1)) + abs(vpos(2))
+         end do
+      end associate
+      st%rate_size = sum(abs(st%zdot)) + sum(abs(st%vehicle%vel))
+   end subroutine occupant_frame
 
    !> The forces from outside the body that the occupant's effects apply at
    !! st (for the joint reactions, A-INJ).

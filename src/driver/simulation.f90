@@ -259,8 +259,11 @@ contains
          do occ_i = 1, n_occ
             associate (occ => sys%occupants(occ_i), os => summary%occ(occ_i))
                ! the vehicle's state only when something reads it
-               call occupant_state(occ, t_now, y, st)
-               if (sys%needs_vehicle .or. m%options%nend == nend_rest) st%vehicle = vehicle_state_at(sys%vm, t_now)
+               if (sys%needs_vehicle .or. m%options%nend == nend_rest) then
+                  call occupant_state(occ, t_now, y, st, vehicle_state_at(sys%vm, t_now))
+               else
+                  call occupant_state(occ, t_now, y, st)
+               end if
                ! Table 5's force criteria, with the memory the step was taken with
                if (os%force_checked) call check_force_injuries(occ, os, occ_i, t_now, injured)
                do q = 1, size(occ%remembering)
