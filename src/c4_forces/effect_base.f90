@@ -58,13 +58,12 @@ module effect_base
    !> What every effect sees at one evaluation: the time, the occupant's
    !! generalized coordinates and rates, the sines and cosines of the
    !! segment angles, and the vehicle's state (filled only when an effect of
-   !! the occupant needs it); with the vehicle's state, when an effect needs
+   !! the occupant needs it); after the vehicle's state, when an effect needs
    !! them (needs_joints: the contact pairs' bound, pair_far, reads them 20
    !! times an evaluation), the segments' joints and axes in the interior
-   !! frame and the sizes that bound them (occupant_state's
-   !! occupant_frame). No default values: it is filled at every evaluation
-   !! (occupant_state), and initializing it there would cost as much as a
-   !! force.
+   !! frame and the sizes that bound them (occupant_frame). No default
+   !! values: it is filled at every evaluation (occupant_state), and
+   !! initializing it there would cost as much as a force.
    type :: body_state_t
       real(wp) :: t
       real(wp) :: z(n_dof), zdot(n_dof)
@@ -132,7 +131,8 @@ module effect_base
       integer :: n_aux_start = 0
       integer :: n_extra = 0             !< extra degrees of freedom (coordinates; rates follow)
       logical :: needs_vehicle = .false. !< reads st%vehicle
-      logical :: needs_joints = .false.  !< reads st%frame_joint, frame_axis, joint_size, rate_size
+      !> reads st%frame_joint, frame_axis, joint_size, rate_size (and so needs_vehicle too)
+      logical :: needs_joints = .false.
       logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)
       logical :: has_memory = .false.    !< its accept changes something (only such are called)
       logical :: has_energy(n_energy_kinds) = .false.

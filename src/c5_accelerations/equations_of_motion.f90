@@ -11,10 +11,10 @@ module equations_of_motion
    use model, only: model_t, n_dof, n_seg
    use ode_system, only: ode_system_t
    use state_layout, only: state_layout_t
-   use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init, vehicle_state_at
+   use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init
    use effect_base, only: body_state_t
    use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_initial_y, &
-      occupant_add_effect
+      occupant_add_effect, occupant_vehicle
    use effect_base, only: effect_t
    implicit none
    private
@@ -129,7 +129,8 @@ contains
       integer, intent(in) :: o
       real(wp), intent(in) :: t, y(:)
       type(body_state_t) :: st
-      call occupant_state(sys%occupants(o), t, y, st, vehicle_state_at(sys%vm, t))
+      call occupant_state(sys%occupants(o), t, y, st)
+      call occupant_vehicle(sys%occupants(o), sys%vm, t, st)
    end function system_body_state
 
    subroutine system_rhs(this, t, y, dydt, status)
@@ -150,11 +151,8 @@ contains
                status = rhs_diverged
                return
             end if
-            if (occ%needs_vehicle) then
-               call occupant_state(occ, t, y, st, vehicle_state_at(this%vm, t))
-            else
-               call occupant_state(occ, t, y, st)
-            end if
+            call occupant_state(occ, t, y, st)
+            if (occ%needs_vehicle) call occupant_vehicle(occ, this%vm, t, st)
             call occupant_rhs(occ, st, y, dydt, this%counts(:, o), info)
             if (info /= 0) then
                status = rhs_not_positive_definite
@@ -180,7 +178,8 @@ contains
       if (allocated(sys%failure_detail)) deallocate (sys%failure_detail)
       do o = 1, size(sys%occupants)
          associate (occ => sys%occupants(o))
-            call occupant_state(occ, t, y, st, vehicle_state_at(sys%vm, t))
+            call occupant_state(occ, t, y, st)
+            call occupant_vehicle(occ, sys%vm, t, st)
             do k = 1, size(occ%effects)
                xo = occ%extra_offset(k)
                ao = occ%aux_offset(k)

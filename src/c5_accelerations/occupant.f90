@@ -10,7 +10,7 @@ module occupant
    use effect_base, only: effect_t, effect_slot_t, body_state_t, point_force_list_t
    use effect_factory, only: build_effects
    use body_kinematics, only: joint_positions
-   use vehicle_motion, only: vehicle_state_t
+   use vehicle_motion, only: vehicle_motion_t, vehicle_state_at
    use state_layout, only: state_layout_t
    use body_matrix, only: body_accelerations, body_structure_matches, matrix_structured => solver_structured, &
       matrix_dense => solver_dense
@@ -18,6 +18,7 @@ module occupant
    private
 
    public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces, occupant_frame
+   public :: occupant_vehicle
    public :: occupant_initial_y, occupant_add_effect, occupant_point_forces
 
    type :: occupant_t
@@ -82,6 +83,7 @@ contains
                                                     e%n_aux_start, j, error_controlled=.false.)
          occ%needs_vehicle = occ%needs_vehicle .or. e%needs_vehicle
          occ%needs_joints = occ%needs_joints .or. e%needs_joints
+         occ%needs_vehicle = occ%needs_vehicle .or. e%needs_joints   ! (occupant_frame reads it)
          if (.not. allocated(occ%evaluated)) allocate (occ%evaluated(0))
          if (.not. allocated(occ%remembering)) allocate (occ%remembering(0))
          if (e%acts .or. e%n_aux > 0 .or. e%n_extra > 0) occ%evaluated = [(occ%evaluated(j), j=1, size(occ%evaluated)), k]
@@ -127,27 +129,32 @@ contains
    end subroutine occupant_initial_y
 
    !> What the effects see: the occupant's coordinates and rates in y, the
-   !! sines and cosines of the segment angles, and the vehicle's state when
-   !! given (the caller gives it when the occupant's effects need it,
-   !! occ%needs_vehicle); with it, when an effect needs them
-   !! (occ%needs_joints; a body-only deck pays nothing), the segments'
-   !! joints and axes in the interior frame (occupant_frame), once per
-   !! evaluation rather than once per contact pair.
-   pure subroutine occupant_state(occ, t, y, st, vehicle)
+   !! sines and cosines of the segment angles. The caller then adds the
+   !! vehicle's state when the occupant's effects need it
+   !! (occ%needs_vehicle; occupant_vehicle).
+   pure subroutine occupant_state(occ, t, y, st)
       type(occupant_t), intent(in) :: occ
       real(wp), intent(in) :: t, y(:)
       type(body_state_t), intent(inout) :: st
-      type(vehicle_state_t), intent(in), optional :: vehicle
       st%t = t
       st%z = y(occ%z_offset + 1:occ%z_offset + n_dof)
       st%zdot = y(occ%zdot_offset + 1:occ%zdot_offset + n_dof)
       st%c = cos(st%z(1:n_seg))
       st%s = sin(st%z(1:n_seg))
-      if (present(vehicle)) then
-         st%vehicle = vehicle
-         if (occ%needs_joints) call occupant_frame(occ%body, st)
-      end if
    end subroutine occupant_state
+
+   !> The vehicle's state at t into st, after occupant_state, and then the
+   !! interior frame's data when the occupant's effects need it
+   !! (occupant_frame, occ%needs_joints): once per evaluation rather than
+   !! once per contact pair, and not at all for a body-only deck.
+   pure subroutine occupant_vehicle(occ, vm, t, st)
+      type(occupant_t), intent(in) :: occ
+      type(vehicle_motion_t), intent(in) :: vm
+      real(wp), intent(in) :: t
+      type(body_state_t), intent(inout) :: st
+      st%vehicle = vehicle_state_at(vm, t)
+      if (occ%needs_joints) call occupant_frame(occ%body, st)
+   end subroutine occupant_vehicle
 
    !> The interior frame's data of st (body_state_t; its z, c, s and
    !! vehicle set): each segment's proximal joint (joint_positions) and
