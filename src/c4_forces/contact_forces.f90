@@ -265,7 +265,8 @@ contains
    !! cycle, a friction's held direction, the side) plays no part there.
    !! Broken glass carries nothing at any state. Not taken (.false.) when
    !! the rates or coordinates are not finite or beyond 1e100, where the
-   !! full path's delta' could be non-finite and fail the split.
+   !! full path's delta' could be non-finite and fail the split. st carries
+   !! the interior frame's data (occupant_frame: the pair needs_joints).
    pure logical function pair_far(this, st) result(far)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
@@ -281,9 +282,10 @@ contains
    !! the bound does not decide it (the shin's capsule against a flat piece,
    !! broken glass). The bound's margins decide the side: for a flat
    !! surface far with h > reach = r + rho' + m (rho' for the arcs 2, 3
-   !! whose centre is within rho' of the joint, else 0), the centre's own
-   !! h is above r and above 0, so front_side's first test holds and gives
-   !! +1; with h < -reach and h < -(rho' + m) the centre is behind the line
+   !! whose centre is within rho' of the joint, else 0) and h > rho' + m
+   !! (which follows for r >= 0), the centre's own h is above r and above
+   !! 0, so front_side's first test holds and gives +1; with h < -reach
+   !! and h < -(rho' + m) the centre is behind the line
    !! (h < 0: whichever of its tests front_side takes gives -1), beyond the
    !! extent (T below -(rho' + m) or above D + rho' + m, so the centre's T
    !! outside [0, D], and front_side's first test holds: -1) or come from
