@@ -16,7 +16,7 @@ module body_kinematics
    private
 
    public :: point_state_t, segment_cg_state, joint_state, to_interior, joint_segment
-   public :: point_force_generalized, joint_position_velocity, joint_position
+   public :: point_force_generalized, joint_position_velocity, joint_position, joint_positions
 
    integer, parameter :: max_links = 4
    integer, parameter :: n_links(n_seg) = [0, 1, 2, 3, 3, 4, 0, 1]
@@ -135,29 +135,63 @@ contains
       end do
    end function joint_position
 
+   !> The proximal joints (inertial) of all segments, p(:, i) for segment i,
+   !! from the cosines c and sines s of the angles: joint_position for each
+   !! i with the same arithmetic in the same order, each chain's prefix taken
+   !! once (the chains of the module's header: the chain to segment i's
+   !! joint is the chain to the joint of its last link's segment, then that
+   !! link).
+   pure function joint_positions(body, z, c, s) result(p)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), c(n_seg), s(n_seg)
+      real(wp) :: p(2, n_seg)
+      p(:, 1) = [z(hip_x), z(hip_y)]
+      p(:, 2) = p(:, 1) + body%length(1)*[c(1), s(1)]
+      p(:, 3) = p(:, 2) + body%length(2)*[c(2), s(2)]
+      p(:, 4) = p(:, 3) + body%length(3)*[c(3), s(3)]   ! the neck, L3
+      p(:, 5) = p(:, 3) + body%length(4)*[c(3), s(3)]   ! the shoulder, L4 along segment 3
+      p(:, 6) = p(:, 5) + body%length(5)*[c(5), s(5)]
+      p(:, 7) = p(:, 1)
+      p(:, 8) = p(:, 7) + body%length(7)*[c(7), s(7)]
+   end function joint_positions
+
    !> The generalized force of a force f (inertial) at the inertial point p
    !! of segment i: its virtual work J^T f, J = dp/dz for the material point
    !! (the hip's translation, each link of the chain to segment i turning
-   !! about its joint, and segment i about its own proximal joint).
+   !! about its joint, and segment i about its own proximal joint). The
+   !! joint is point_on_segment's at d = 0 with the same sums in the same
+   !! order, from the link's sine and cosine taken once for both uses (they
+   !! were taken twice, and point_on_segment carried rates of zero along).
    pure function point_force_generalized(body, z, i, p, f) result(b)
       type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: z(n_dof), p(2), f(2)
       integer, intent(in) :: i
       real(wp) :: b(n_dof)
-      real(wp) :: zero(n_dof), len
-      type(point_state_t) :: joint
+      real(wp) :: len, c, s, jx, jy
       integer :: k, j
-      zero = 0.0_wp
       b = 0.0_wp
       b(hip_x) = f(1)
       b(hip_y) = f(2)
+      jx = z(hip_x)
+      jy = z(hip_y)
       do k = 1, n_links(i)
          j = chain_seg(k, i)
          len = body%length(chain_len(k, i))
-         b(j) = b(j) + len*(-f(1)*sin(z(j)) + f(2)*cos(z(j)))
+         c = cos(z(j))
+         s = sin(z(j))
+         b(j) = b(j) + len*(-f(1)*s + f(2)*c)
+         jx = jx + len*c
+         jy = jy + len*s
       end do
-      joint = point_on_segment(body, z, zero, zero, i, 0.0_wp)
-      b(i) = b(i) - f(1)*(p(2) - joint%y) + f(2)*(p(1) - joint%x)
+      ! point_on_segment's last link, along segment i by d = 0, adds 0 cos(alpha_i)
+      ! and 0 sin(alpha_i): nothing b can tell (at most a zero's sign, which
+      ! b(i), +0 before, loses in the sums below) but the NaN of a
+      ! non-finite angle, where it is added as there
+      if (.not. abs(z(i)) <= huge(1.0_wp)) then
+         jx = jx + 0.0_wp*cos(z(i))
+         jy = jy + 0.0_wp*sin(z(i))
+      end if
+      b(i) = b(i) - f(1)*(p(2) - jy) + f(2)*(p(1) - jx)
    end function point_force_generalized
 
    !> The start of C.4: a point's position and velocity relative to the

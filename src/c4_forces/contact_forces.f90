@@ -22,7 +22,7 @@ module contact_forces
       energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
       max_events_per_step, event_shatter, event_cut
    use output_series, only: output_series_t, series_new, column
-   use body_kinematics, only: point_force_generalized, joint_position
+   use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
       arc_segment, front_side, surface_flat, surface_line, surface_circle, surface_point
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
@@ -34,7 +34,7 @@ module contact_forces
    implicit none
    private
 
-   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far
+   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far, pair_slip
 
 
    type, extends(effect_t) :: contact_pair_effect_t
@@ -75,11 +75,21 @@ module contact_forces
       !! its W and E_abs start (the penetration counts as a loading before t = 0)
       real(wp) :: e_initial(3) = 0.0_wp
       integer :: max_iter = 60
-      !> add_forces returns at once where pair_far proves the pair slack
-      !! (.false.: always the full path, for the tests that compare the two)
+      !> add_forces returns at once, and accept takes its short path, where
+      !! pair_far proves the pair slack (.false.: always the full path, for
+      !! the tests that compare the two)
       logical :: exit_far = .true.
-      !> for pair_far: the surface's e(psi) and normal, and the sizes that
-      !! scale its rounding margin (the body's lengths and radii, the surface's)
+      !> D-C18's held direction, decided lazily after an accept that found
+      !! the pair far (slip_stale): nothing reads it until the pair carries
+      !! force, so it is decided from the accepted state kept here, with the
+      !! side memory its geometry used, only then (held_slip): the same
+      !! geometry and arithmetic as an accept's full path, the same bits
+      logical :: slip_stale = .false., slip_behind = .false.
+      type(body_state_t) :: slip_state
+      !> the surface's e(psi) (for contact_check and front_side too: the
+      !! same library call on the same angle, taken once) and normal, and for
+      !! pair_far the sizes that scale its rounding margin (the body's
+      !! lengths and radii, the surface's)
       real(wp) :: tk(2) = 0.0_wp, nk(2) = 0.0_wp, size_sum = 0.0_wp
    contains
       procedure :: add_forces => pair_add_forces
@@ -91,6 +101,9 @@ module contact_forces
       procedure :: describe => pair_describe
       procedure :: failure_text => pair_failure_text
    end type contact_pair_effect_t
+
+   !> far_check's side where the bound does not decide it
+   integer, parameter :: side_unknown = 2
 
    !> Everything about the pair at one state.
    type :: pair_state_t
@@ -147,6 +160,7 @@ contains
       if (present(undesired)) e%undesired = undesired
       if (present(fsw)) e%fsw = fsw
       e%needs_vehicle = .true.
+      e%needs_joints = .true.                          ! pair_far's bound
       e%external = .true.
       e%has_energy = .true.
       e%has_memory = e%mu > 0.0_wp .or. e%undesired .or. e%fsw > 0.0_wp &
@@ -163,13 +177,17 @@ contains
       e%n_aux = e%aux_supplied
    end function contact_pair_effect
 
-   !> The contact's geometry (figure 22), force split and virtual work at st.
-   pure function pair_state(this, st) result(ps)
+   !> The contact's geometry (figure 22), force split and virtual work at
+   !! st; with behind (the side memory at an earlier accepted state, for
+   !! held_slip), the geometry alone, with that side (ps%f and ps%cs).
+   recursive pure function pair_state(this, st, behind) result(ps)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
+      logical, intent(in), optional :: behind
       type(pair_state_t) :: ps
       type(branch_point_t) :: bp
       real(wp) :: c, s, gate(3)
+      logical :: side_behind
       ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
       c = 1.0_wp
       s = st%vehicle%pos(3)
@@ -177,8 +195,11 @@ contains
          c = cos(st%vehicle%pos(3))
          s = sin(st%vehicle%pos(3))
       end if
+      side_behind = this%behind
+      if (present(behind)) side_behind = behind
       ps%f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
-      ps%cs = contact_check(ps%f, this%surface, this%behind)
+      ps%cs = contact_check(ps%f, this%surface, side_behind, this%tk)
+      if (present(behind)) return
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
@@ -202,10 +223,31 @@ contains
       if (.not. ps%split%force > 0.0_wp) return
       ps%b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
       ! friction (f.3, f.4): P' = mu P in the direction of sliding held in memory
-      ps%p_t = this%mu*ps%split%force*real(this%slip, wp)
+      ps%p_t = this%mu*ps%split%force*real(held_slip(this), wp)
       if (abs(ps%p_t) > 0.0_wp) ps%b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, &
                                                                  ps%t_in)
    end function pair_state
+
+   !> The friction's held direction (D-C18): the one decided at the last
+   !! accepted step. After an accept that found the pair far it is decided
+   !! here, when first read (only where the pair carries force), from that
+   !! accepted state and the side memory its geometry used: slip_of(xi, v_T)
+   !! of pair_state's own geometry there (the same code, so the same bits),
+   !! as the accept's full path would have decided it.
+   pure integer function held_slip(this) result(slip)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(pair_state_t) :: ps
+      slip = this%slip
+      if (.not. this%slip_stale) return
+      ps = pair_state(this, this%slip_state, this%slip_behind)
+      slip = slip_of(this%xi, ps%cs%v_t)
+   end function held_slip
+
+   !> The held direction as the pair's memory stands (for the tests).
+   pure integer function pair_slip(this)
+      class(contact_pair_effect_t), intent(in) :: this
+      pair_slip = held_slip(this)
+   end function pair_slip
 
    !> Whether the pair is slack at st for certain, by a bound that needs
    !! neither trigonometry nor velocities: the body point's circle (for the
@@ -223,36 +265,58 @@ contains
    !! cycle, a friction's held direction, the side) plays no part there.
    !! Broken glass carries nothing at any state. Not taken (.false.) when
    !! the rates or coordinates are not finite or beyond 1e100, where the
-   !! full path's delta' could be non-finite and fail the split.
+   !! full path's delta' could be non-finite and fail the split. st carries
+   !! the interior frame's data (occupant_frame: the pair needs_joints).
    pure logical function pair_far(this, st) result(far)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
+      integer :: side
+      call far_check(this, st, far, side)
+   end function pair_far
+
+   !> pair_far's bound (far), and where it is far what front_side would
+   !! answer at st (D-C16a; accept's short path needs it): 0 for a surface
+   !! that is not flat, +1 where the flat surface is far because the point
+   !! is clearly in front of its line, -1 where it is clearly behind it
+   !! (and beyond its extent, or it came from behind), side_unknown where
+   !! the bound does not decide it (the shin's capsule against a flat piece,
+   !! broken glass). The bound's margins decide the side: for a flat
+   !! surface far with h > reach = r + rho' + m (rho' for the arcs 2, 3
+   !! whose centre is within rho' of the joint, else 0) and h > rho' + m
+   !! (which follows for r >= 0), the centre's own h is above r and above
+   !! 0, so front_side's first test holds and gives +1; with h < -reach
+   !! and h < -(rho' + m) the centre is behind the line
+   !! (h < 0: whichever of its tests front_side takes gives -1), beyond the
+   !! extent (T below -(rho' + m) or above D + rho' + m, so the centre's T
+   !! outside [0, D], and front_side's first test holds: -1) or come from
+   !! behind (front_side gives -1 or 0, and 0 keeps the side that is
+   !! behind): the memory becomes, or stays, behind. The margin m, 1e-9 of
+   !! the coordinates' size, covers the roundings, as for far.
+   pure subroutine far_check(this, st, far, side)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      logical, intent(out) :: far
+      integer, intent(out) :: side
       real(wp), parameter :: big = 1.0e100_wp, rel_margin = 1.0e-9_wp
-      real(wp) :: cp, sp, d(2), jt(2), et(2), p(2), v(2), ext, reach, scale, m, h, tt, u2, lam
+      real(wp) :: d(2), jt(2), et(2), p(2), v(2), ext, reach, scale, m, h, tt, u2, lam
       integer :: seg
       far = this%shattered
+      side = side_unknown
       if (far) return
-      if (.not. sum(abs(st%zdot)) + sum(abs(st%vehicle%vel)) <= big) return
+      if (.not. st%rate_size <= big) return
       seg = arc_segment(this%i)
-      cp = 1.0_wp
-      sp = 0.0_wp
-      if (abs(st%vehicle%pos(3)) > 0.0_wp) then
-         cp = cos(st%vehicle%pos(3))
-         sp = sin(st%vehicle%pos(3))
-      end if
       ! the segment's proximal joint and direction in the interior frame
-      p = joint_position(this%body, st%z, st%c, st%s, seg)
-      d = p - st%vehicle%pos(1:2)
-      jt = [d(1)*cp - d(2)*sp, d(1)*sp + d(2)*cp]
-      et = [st%c(seg)*cp - st%s(seg)*sp, st%s(seg)*cp + st%c(seg)*sp]
-      scale = this%size_sum + abs(p(1)) + abs(p(2)) + abs(st%vehicle%pos(1)) + abs(st%vehicle%pos(2))
+      ! (occupant_frame, once per evaluation)
+      jt = st%frame_joint(:, seg)
+      et = st%frame_axis(:, seg)
+      scale = this%size_sum + st%joint_size(seg)
       if (.not. scale <= big) return
       m = rel_margin*(1.0_wp + scale)
       ext = 0.0_wp
       select case (this%i)
       case (2, 3)                     ! within rho'_i of the joint
          p = jt
-         ext = this%body%rho_arc(this%i)
+         ext = abs(this%body%rho_arc(this%i))
       case (4)
          p = jt + this%body%rho_arc(4)*et
       case (6, 7, 8, 10)
@@ -266,6 +330,8 @@ contains
          d = d - lam*v
          reach = max(this%body%r_arc(7), this%body%r_arc(11)) + m
          far = dot_product(d, d) > reach*reach
+         ! (front_side reads the knee's circle, which this bound does not place)
+         if (this%surface%kind /= surface_flat) side = 0
          return
       case default                    ! hip, shoulder: the joint itself
          p = jt
@@ -276,16 +342,23 @@ contains
          if (this%surface%kind == surface_circle) reach = reach + 0.5_wp*this%surface%d
          d = p - this%surface%s
          far = dot_product(d, d) > reach*reach
+         side = 0
       case (surface_line)
          far = dot_product(p - this%surface%s, this%nk) > reach
+         side = 0
       case default                    ! flat: the face from in front, corners on its line
          h = dot_product(p - this%surface%s, this%nk)
          far = h > reach
-         if (far .or. .not. abs(h) > reach) return
+         if (far) then                ! clearly in front (D-C16a)
+            if (h > ext + m) side = 1
+            return
+         end if
+         if (.not. abs(h) > reach) return
          tt = dot_product(this%surface%s - p, this%tk)
          far = this%behind .or. tt < -(ext + m) .or. tt > this%surface%d + ext + m
+         if (far .and. h < -(ext + m)) side = -1   ! clearly behind (D-C16a)
       end select
-   end function pair_far
+   end subroutine far_check
 
    pure subroutine pair_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
       class(contact_pair_effect_t), intent(in) :: this
@@ -330,13 +403,35 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
       type(pair_state_t) :: ps
-      logical :: changed
+      logical :: changed, far
       integer :: slip, q, side
       associate (u1 => size(extra) + size(aux))
       end associate
+      if (this%exit_far) then
+         ! slack for certain (pair_far) with its side decided: what the full
+         ! path below does at no force, without the full geometry
+         call far_check(this, st, far, side)
+         if (far .and. side /= side_unknown) then
+            ! D-C18: the held direction, decided when first read under load
+            ! (held_slip), from this state and the side its geometry uses
+            if (this%mu > 0.0_wp) then
+               this%slip_state = st
+               this%slip_behind = this%behind
+               this%slip_stale = .true.
+            end if
+            if (side /= 0) this%behind = side < 0       ! D-C16a, as front_side
+            if (this%undesired) then                     ! D-C28: not loaded
+               this%was_loaded = .false.
+               this%accepted_once = .true.
+            end if
+            ! no force: the glass holds (D-C24; broken glass, whose cut needs
+            ! delta, has side_unknown), and the loading cycle keeps its memory
+            return
+         end if
+      end if
       ps = pair_state(this, st)
       ! D-C16a: the side of the surface's line the point is on, where it is decided
-      side = front_side(ps%f, this%surface)
+      side = front_side(ps%f, this%surface, this%tk)
       if (side /= 0) this%behind = side < 0
       ! Table 9 (C.7): coming into contact (D-C28)
       if (this%undesired) then
@@ -363,8 +458,11 @@ contains
       ! friction force only while the contact carries load (D-C18)
       if (this%mu > 0.0_wp) then
          slip = slip_of(this%xi, ps%cs%v_t)
-         if (slip /= this%slip .and. ps%split%force > 0.0_wp) result%restart = .true.
+         if (ps%split%force > 0.0_wp) then
+            if (slip /= held_slip(this)) result%restart = .true.
+         end if
          this%slip = slip
+         this%slip_stale = .false.
       end if
       ! out of contact the memory stays (as a slack belt's, belt_accept)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return

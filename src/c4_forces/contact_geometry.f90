@@ -143,10 +143,12 @@ contains
    !! is chosen so that delta and its gradient are continuous everywhere.
    !! behind (the pair's memory): the point came at the surface from behind
    !! its line, where a flat surface meets it with its ends only (D-C16a).
-   pure function contact_check(f, sf, behind) result(cs)
+   !! e_psi: e(sf%psi) when at hand (a pair's, taken once: the same bits).
+   pure function contact_check(f, sf, behind, e_psi) result(cs)
       type(contact_feature_t), intent(in) :: f
       type(contact_surface_t), intent(in) :: sf
       logical, intent(in), optional :: behind
+      real(wp), intent(in), optional :: e_psi(2)
       type(contact_state_t) :: cs
       real(wp) :: tk(2), nk(2), tt, te
       if (f%arc == 9) then
@@ -161,7 +163,11 @@ contains
          call round(f%p - sf%s, 0.0_wp, region_corner, cs)
          cs%pos = 0.0_wp
       case default
-         tk = e(sf%psi)
+         if (present(e_psi)) then
+            tk = e_psi
+         else
+            tk = e(sf%psi)
+         end if
          nk = [-tk(2), tk(1)]
          tt = dot_product(sf%s - f%p, tk)                ! f.2's T
          te = -1.0_wp
@@ -214,13 +220,19 @@ contains
    !! surface's extent and within r of its line keeps the side it came from.
    !! Deciding only where face and ends give the same (no contact or the
    !! ends' region) makes the switch continuous.
-   pure integer function front_side(f, sf) result(side)
+   !! e_psi: e(sf%psi) when at hand, as for contact_check.
+   pure integer function front_side(f, sf, e_psi) result(side)
       type(contact_feature_t), intent(in) :: f
       type(contact_surface_t), intent(in) :: sf
+      real(wp), intent(in), optional :: e_psi(2)
       real(wp) :: tk(2), nk(2), tt, h
       side = 0
       if (sf%kind /= surface_flat) return
-      tk = e(sf%psi)
+      if (present(e_psi)) then
+         tk = e_psi
+      else
+         tk = e(sf%psi)
+      end if
       nk = [-tk(2), tk(1)]
       tt = dot_product(sf%s - f%p, tk)
       h = dot_product(f%p - sf%s, nk)

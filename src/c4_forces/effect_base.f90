@@ -58,14 +58,23 @@ module effect_base
    !> What every effect sees at one evaluation: the time, the occupant's
    !! generalized coordinates and rates, the sines and cosines of the
    !! segment angles, and the vehicle's state (filled only when an effect of
-   !! the occupant needs it). No default values: it is filled at every
-   !! evaluation (occupant_state), and initializing it there would cost as
-   !! much as a force.
+   !! the occupant needs it); after the vehicle's state, when an effect needs
+   !! them (needs_joints: the contact pairs' bound, pair_far, reads them 20
+   !! times an evaluation), the segments' joints and axes in the interior
+   !! frame and the sizes that bound them (occupant_frame). No default
+   !! values: it is filled at every evaluation (occupant_state), and
+   !! initializing it there would cost as much as a force.
    type :: body_state_t
       real(wp) :: t
       real(wp) :: z(n_dof), zdot(n_dof)
       real(wp) :: c(n_seg), s(n_seg)
       type(vehicle_state_t) :: vehicle
+      !> segment i's proximal joint and its e(theta_i) in the interior frame
+      !! (x = R(Phi)(X - x_c), the start of C.4)
+      real(wp) :: frame_joint(2, n_seg), frame_axis(2, n_seg)
+      !> |X| + |Y| of segment i's joint (inertial) + |x_c| + |y_c|: the
+      !! coordinates' size; sum |z'| + sum |vehicle rates|: the rates' size
+      real(wp) :: joint_size(n_seg), rate_size
    end type body_state_t
 
    !> Something that happened at an accepted step.
@@ -122,6 +131,8 @@ module effect_base
       integer :: n_aux_start = 0
       integer :: n_extra = 0             !< extra degrees of freedom (coordinates; rates follow)
       logical :: needs_vehicle = .false. !< reads st%vehicle
+      !> reads st%frame_joint, frame_axis, joint_size, rate_size (and so needs_vehicle too)
+      logical :: needs_joints = .false.
       logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)
       logical :: has_memory = .false.    !< its accept changes something (only such are called)
       logical :: has_energy(n_energy_kinds) = .false.

@@ -11,10 +11,10 @@ module equations_of_motion
    use model, only: model_t, n_dof, n_seg
    use ode_system, only: ode_system_t
    use state_layout, only: state_layout_t
-   use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init, vehicle_state_at
+   use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init
    use effect_base, only: body_state_t
    use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_initial_y, &
-      occupant_add_effect
+      occupant_add_effect, occupant_vehicle
    use effect_base, only: effect_t
    implicit none
    private
@@ -130,7 +130,7 @@ contains
       real(wp), intent(in) :: t, y(:)
       type(body_state_t) :: st
       call occupant_state(sys%occupants(o), t, y, st)
-      st%vehicle = vehicle_state_at(sys%vm, t)
+      call occupant_vehicle(sys%occupants(o), sys%vm, t, st)
    end function system_body_state
 
    subroutine system_rhs(this, t, y, dydt, status)
@@ -152,7 +152,7 @@ contains
                return
             end if
             call occupant_state(occ, t, y, st)
-            if (occ%needs_vehicle) st%vehicle = vehicle_state_at(this%vm, t)
+            if (occ%needs_vehicle) call occupant_vehicle(occ, this%vm, t, st)
             call occupant_rhs(occ, st, y, dydt, this%counts(:, o), info)
             if (info /= 0) then
                status = rhs_not_positive_definite
@@ -179,7 +179,7 @@ contains
       do o = 1, size(sys%occupants)
          associate (occ => sys%occupants(o))
             call occupant_state(occ, t, y, st)
-            st%vehicle = vehicle_state_at(sys%vm, t)
+            call occupant_vehicle(occ, sys%vm, t, st)
             do k = 1, size(occ%effects)
                xo = occ%extra_offset(k)
                ao = occ%aux_offset(k)

@@ -9,13 +9,16 @@ module occupant
    use preliminary, only: body_constants_t, body_constants, initial_state
    use effect_base, only: effect_t, effect_slot_t, body_state_t, point_force_list_t
    use effect_factory, only: build_effects
+   use body_kinematics, only: joint_positions
+   use vehicle_motion, only: vehicle_motion_t, vehicle_state_at
    use state_layout, only: state_layout_t
    use body_matrix, only: body_accelerations, body_structure_matches, matrix_structured => solver_structured, &
       matrix_dense => solver_dense
    implicit none
    private
 
-   public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces
+   public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces, occupant_frame
+   public :: occupant_vehicle
    public :: occupant_initial_y, occupant_add_effect, occupant_point_forces
 
    type :: occupant_t
@@ -32,6 +35,7 @@ module occupant
       !! body coupled otherwise)
       integer :: solver = matrix_structured
       logical :: needs_vehicle = .false.
+      logical :: needs_joints = .false.   !< an effect reads st's interior frame data (occupant_frame)
       !> offsets in y: z is y(z_offset+1 : z_offset+n_dof), z' likewise
       integer :: z_offset = 0, zdot_offset = 0
       !> per effect: its extra coordinates and rates, its auxiliary quantities
@@ -78,6 +82,8 @@ contains
          if (e%n_aux_start > 0) call layout%reserve(trim(occ%label)//': '//trim(e%name)//' search starts', &
                                                     e%n_aux_start, j, error_controlled=.false.)
          occ%needs_vehicle = occ%needs_vehicle .or. e%needs_vehicle
+         occ%needs_joints = occ%needs_joints .or. e%needs_joints
+         occ%needs_vehicle = occ%needs_vehicle .or. e%needs_joints   ! (occupant_frame reads it)
          if (.not. allocated(occ%evaluated)) allocate (occ%evaluated(0))
          if (.not. allocated(occ%remembering)) allocate (occ%remembering(0))
          if (e%acts .or. e%n_aux > 0 .or. e%n_extra > 0) occ%evaluated = [(occ%evaluated(j), j=1, size(occ%evaluated)), k]
@@ -123,8 +129,9 @@ contains
    end subroutine occupant_initial_y
 
    !> What the effects see: the occupant's coordinates and rates in y, the
-   !! sines and cosines of the segment angles. The caller sets st%vehicle
-   !! when the occupant's effects need it (occ%needs_vehicle).
+   !! sines and cosines of the segment angles. The caller then adds the
+   !! vehicle's state when the occupant's effects need it
+   !! (occ%needs_vehicle; occupant_vehicle).
    pure subroutine occupant_state(occ, t, y, st)
       type(occupant_t), intent(in) :: occ
       real(wp), intent(in) :: t, y(:)
@@ -135,6 +142,54 @@ contains
       st%c = cos(st%z(1:n_seg))
       st%s = sin(st%z(1:n_seg))
    end subroutine occupant_state
+
+   !> The vehicle's state at t into st, after occupant_state, and then the
+   !! interior frame's data when the occupant's effects need it
+   !! (occupant_frame, occ%needs_joints): once per evaluation rather than
+   !! once per contact pair, and not at all for a body-only deck.
+   pure subroutine occupant_vehicle(occ, vm, t, st)
+      type(occupant_t), intent(in) :: occ
+      type(vehicle_motion_t), intent(in) :: vm
+      real(wp), intent(in) :: t
+      type(body_state_t), intent(inout) :: st
+      st%vehicle = vehicle_state_at(vm, t)
+      if (occ%needs_joints) call occupant_frame(occ%body, st)
+   end subroutine occupant_vehicle
+
+   !> The interior frame's data of st (body_state_t; its z, c, s and
+   !! vehicle set): each segment's proximal joint (joint_positions) and
+   !! e(theta_i) turned into the interior frame, x = R(Phi)(X - x_c) (the
+   !! start of C.4; no trigonometry at a pitch of zero), the coordinates'
+   !! size |X| + |Y| + |x_c| + |y_c| and the rates' size. For the contact
+   !! pairs' bound (pair_far), which only needs them within its margin, not
+   !! to the bit (a pair's own geometry, body_feature, does its own).
+   pure subroutine occupant_frame(body, st)
+      type(body_section_t), intent(in) :: body
+      type(body_state_t), intent(inout) :: st
+      real(wp) :: p(2, n_seg), d(2), cp, sp
+      integer :: i
+      p = joint_positions(body, st%z, st%c, st%s)
+      associate (vpos => st%vehicle%pos)
+         if (abs(vpos(3)) > 0.0_wp) then
+            cp = cos(vpos(3))
+            sp = sin(vpos(3))
+            do i = 1, n_seg
+               d = p(:, i) - vpos(1:2)
+               st%frame_joint(:, i) = [d(1)*cp - d(2)*sp, d(1)*sp + d(2)*cp]
+               st%frame_axis(:, i) = [st%c(i)*cp - st%s(i)*sp, st%s(i)*cp + st%c(i)*sp]
+            end do
+         else
+            do i = 1, n_seg
+               st%frame_joint(:, i) = p(:, i) - vpos(1:2)
+               st%frame_axis(:, i) = [st%c(i), st%s(i)]
+            end do
+         end if
+         do i = 1, n_seg
+            st%joint_size(i) = abs(p(1, i)) + abs(p(2, i)) + abs(vpos(1)) + abs(vpos(2))
+         end do
+      end associate
+      st%rate_size = sum(abs(st%zdot)) + sum(abs(st%vehicle%vel))
+   end subroutine occupant_frame
 
    !> The forces from outside the body that the occupant's effects apply at
    !! st (for the joint reactions, A-INJ).

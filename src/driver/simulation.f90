@@ -12,8 +12,7 @@ module simulation
    use model, only: model_t, n_dof, n_joint, n_injury, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state, &
       rhs_status_text, rhs_diverged, rhs_not_finite
-   use occupant, only: occupant_t, occupant_state, occupant_point_forces
-   use vehicle_motion, only: vehicle_state_at
+   use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
    use ode_system, only: stepper_t, step_ok, step_rhs_failed, step_status_text
    use runge_kutta4, only: rk4_stepper_t
    use adams_moulton, only: am_stepper_t, am_start_euler, am_start_rk4
@@ -260,7 +259,7 @@ contains
             associate (occ => sys%occupants(occ_i), os => summary%occ(occ_i))
                ! the vehicle's state only when something reads it
                call occupant_state(occ, t_now, y, st)
-               if (sys%needs_vehicle .or. m%options%nend == nend_rest) st%vehicle = vehicle_state_at(sys%vm, t_now)
+               if (sys%needs_vehicle .or. m%options%nend == nend_rest) call occupant_vehicle(occ, sys%vm, t_now, st)
                ! Table 5's force criteria, with the memory the step was taken with
                if (os%force_checked) call check_force_injuries(occ, os, occ_i, t_now, injured)
                do q = 1, size(occ%remembering)
