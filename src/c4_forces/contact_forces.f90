@@ -2,10 +2,10 @@
 !! body point i against surface k. Its normal force P comes from the
 !! surface's material through recurrent loading (Table 4, figure 18; the
 !! chain of one element of increment 3 in docs/contacts.md 6.2: the outer
-!! material); the friction P' = mu P s (f.3, f.4) with s the direction of
-!! sliding of the body's material point along t, decided on accepted steps
-!! with the dead band xi (D-C18, D-C22). The force P n - P' t acts at the
-!! contact point C, a
+!! material); the friction P' = mu P r (f.3, f.4) with r = v_T/xi clipped to
+!! [-1, 1], v_T the sliding velocity of the body's material point along t:
+!! the Coulomb force once the sliding reaches xi, in proportion to it below
+!! (D-C18a, D-C22). The force P n - P' t acts at the contact point C, a
 !! material point of the segment carrying the arc, so its generalized
 !! forces are the virtual work J_C^T F (D-C23: the printed f.8 and its
 !! errata F8-1..F8-6 are not needed). Memory (the loading cycle) changes
@@ -30,11 +30,11 @@ module contact_forces
    use loading_curves, only: curve_energy
    use belt_shared_deflection, only: chain_split_t, chain_split, split_ok, branch_point_t, branch_at, &
       chain_split_text
-   use dead_band, only: slip_of
+   use dead_band, only: ramp_of
    implicit none
    private
 
-   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far, pair_slip
+   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far
 
 
    type, extends(effect_t) :: contact_pair_effect_t
@@ -57,8 +57,9 @@ module contact_forces
       logical :: behind = .false.
       !> aux: each element's W, E_abs, D_v, then the friction's work and the supplied work
       integer :: aux_friction = 0, aux_supplied = 0
-      real(wp) :: mu = 0.0_wp, xi = 0.0_wp     !< the outer material's friction (D-C22)
-      integer :: slip = 0                      !< sliding along t: -1, 0, +1 (memory, D-C18)
+      !> the outer material's friction (D-C22): mu P, reached at the sliding
+      !! velocity xi and in proportion to it below (D-C18a)
+      real(wp) :: mu = 0.0_wp, xi = 0.0_wp
       !> Table 9: a contact the end test NEND = 2 watches; it counts when the
       !! pair comes into contact at an accepted step, not when it is loaded
       !! at the start (D-C28)
@@ -79,13 +80,6 @@ module contact_forces
       !! pair_far proves the pair slack (.false.: always the full path, for
       !! the tests that compare the two)
       logical :: exit_far = .true.
-      !> D-C18's held direction, decided lazily after an accept that found
-      !! the pair far (slip_stale): nothing reads it until the pair carries
-      !! force, so it is decided from the accepted state kept here, with the
-      !! side memory its geometry used, only then (held_slip): the same
-      !! geometry and arithmetic as an accept's full path, the same bits
-      logical :: slip_stale = .false., slip_behind = .false.
-      type(body_state_t) :: slip_state
       !> the surface's e(psi) (for contact_check and front_side too: the
       !! same library call on the same angle, taken once) and normal, and for
       !! pair_far the sizes that scale its rounding margin (the body's
@@ -163,7 +157,7 @@ contains
       e%needs_joints = .true.                          ! pair_far's bound
       e%external = .true.
       e%has_energy = .true.
-      e%has_memory = e%mu > 0.0_wp .or. e%undesired .or. e%fsw > 0.0_wp &
+      e%has_memory = e%undesired .or. e%fsw > 0.0_wp &
                      .or. sf%kind == surface_flat      ! the side it came from (D-C16a)
       do q = 1, e%n_elem                               ! (the body's material too)
          e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%law(q))
@@ -177,17 +171,13 @@ contains
       e%n_aux = e%aux_supplied
    end function contact_pair_effect
 
-   !> The contact's geometry (figure 22), force split and virtual work at
-   !! st; with behind (the side memory at an earlier accepted state, for
-   !! held_slip), the geometry alone, with that side (ps%f and ps%cs).
-   recursive pure function pair_state(this, st, behind) result(ps)
+   !> The contact's geometry (figure 22), force split and virtual work at st.
+   pure function pair_state(this, st) result(ps)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
-      logical, intent(in), optional :: behind
       type(pair_state_t) :: ps
       type(branch_point_t) :: bp
       real(wp) :: c, s, gate(3)
-      logical :: side_behind
       ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
       c = 1.0_wp
       s = st%vehicle%pos(3)
@@ -195,11 +185,8 @@ contains
          c = cos(st%vehicle%pos(3))
          s = sin(st%vehicle%pos(3))
       end if
-      side_behind = this%behind
-      if (present(behind)) side_behind = behind
       ps%f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
-      ps%cs = contact_check(ps%f, this%surface, side_behind, this%tk)
-      if (present(behind)) return
+      ps%cs = contact_check(ps%f, this%surface, this%behind, this%tk)
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
@@ -222,32 +209,12 @@ contains
       ps%t_in = [c*ps%cs%t(1) + s*ps%cs%t(2), -s*ps%cs%t(1) + c*ps%cs%t(2)]
       if (.not. ps%split%force > 0.0_wp) return
       ps%b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
-      ! friction (f.3, f.4): P' = mu P in the direction of sliding held in memory
-      ps%p_t = this%mu*ps%split%force*real(held_slip(this), wp)
+      ! friction (f.3, f.4, D-C18a): P' = mu P along the sliding velocity v_T
+      ! once it reaches xi, in proportion to it below
+      ps%p_t = this%mu*ps%split%force*ramp_of(this%xi, ps%cs%v_t)
       if (abs(ps%p_t) > 0.0_wp) ps%b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, &
                                                                  ps%t_in)
    end function pair_state
-
-   !> The friction's held direction (D-C18): the one decided at the last
-   !! accepted step. After an accept that found the pair far it is decided
-   !! here, when first read (only where the pair carries force), from that
-   !! accepted state and the side memory its geometry used: slip_of(xi, v_T)
-   !! of pair_state's own geometry there (the same code, so the same bits),
-   !! as the accept's full path would have decided it.
-   pure integer function held_slip(this) result(slip)
-      class(contact_pair_effect_t), intent(in) :: this
-      type(pair_state_t) :: ps
-      slip = this%slip
-      if (.not. this%slip_stale) return
-      ps = pair_state(this, this%slip_state, this%slip_behind)
-      slip = slip_of(this%xi, ps%cs%v_t)
-   end function held_slip
-
-   !> The held direction as the pair's memory stands (for the tests).
-   pure integer function pair_slip(this)
-      class(contact_pair_effect_t), intent(in) :: this
-      pair_slip = held_slip(this)
-   end function pair_slip
 
    !> Whether the pair is slack at st for certain, by a bound that needs
    !! neither trigonometry nor velocities: the body point's circle (for the
@@ -404,7 +371,7 @@ contains
       type(accept_result_t), intent(inout) :: result
       type(pair_state_t) :: ps
       logical :: changed, far
-      integer :: slip, q, side
+      integer :: q, side
       associate (u1 => size(extra) + size(aux))
       end associate
       if (this%exit_far) then
@@ -412,13 +379,6 @@ contains
          ! path below does at no force, without the full geometry
          call far_check(this, st, far, side)
          if (far .and. side /= side_unknown) then
-            ! D-C18: the held direction, decided when first read under load
-            ! (held_slip), from this state and the side its geometry uses
-            if (this%mu > 0.0_wp) then
-               this%slip_state = st
-               this%slip_behind = this%behind
-               this%slip_stale = .true.
-            end if
             if (side /= 0) this%behind = side < 0       ! D-C16a, as front_side
             if (this%undesired) then                     ! D-C28: not loaded
                this%was_loaded = .false.
@@ -453,16 +413,6 @@ contains
          if (ps%cs%delta > 0.0_wp .and. .not. this%cutting) call add_event(event_t(t=st%t, kind=event_cut, &
             index=this%i, value=ps%cs%delta, injury=.true., surface=this%k))
          this%cutting = ps%cs%delta > 0.0_wp
-      end if
-      ! the sliding direction at this accepted state; a change moves the
-      ! friction force only while the contact carries load (D-C18)
-      if (this%mu > 0.0_wp) then
-         slip = slip_of(this%xi, ps%cs%v_t)
-         if (ps%split%force > 0.0_wp) then
-            if (slip /= held_slip(this)) result%restart = .true.
-         end if
-         this%slip = slip
-         this%slip_stale = .false.
       end if
       ! out of contact the memory stays (as a slack belt's, belt_accept)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return

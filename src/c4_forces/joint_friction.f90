@@ -7,8 +7,8 @@
 !!
 !! Each joint's sliding direction (-1, 0, +1: sgn of the relative rate
 !! beyond the dead band) is memory, decided on accepted steps with a
-!! restart when it changes (D-4a), as the seat's hip (D-19) and the
-!! contacts (D-C18) decide theirs: within a step the torque does not jump.
+!! restart when it changes (D-4a), as the seat's hip decides its own
+!! (D-19): within a step the torque does not jump.
 !! Decided at every evaluation, a torque that switches at |rate| = xi
 !! inside trial steps made an adaptive stepper resolve every crossing:
 !! Dormand-Prince took 1.5 million steps, down to 1e-10 s, for the belted
