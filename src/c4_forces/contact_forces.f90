@@ -461,15 +461,22 @@ contains
       a(aux_absorbed) = a(aux_absorbed) + this%e_initial(q)
    end function element_aux
 
-   !> D-C26: the initial element energies at the initial state st (the
-   !! occupant at z0 in the vehicle at rest at pitch phi0): each element's
-   !! curve energy at its deformation, from zero memory.
+   !> At the initial state st (the occupant at z0 in the vehicle at rest at
+   !! pitch phi0): D-C16a's side of a flat surface, the side of its line the
+   !! point's centre starts on (a point that starts behind the line has not
+   !! come through the face: it meets the ends only, as one that came from
+   !! behind); D-C26's initial element energies, each element's curve
+   !! energy at its deformation, from zero memory.
    pure subroutine pair_set_initial(this, st)
       type(contact_pair_effect_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
       type(pair_state_t) :: ps
       integer :: q
       this%e_initial = 0.0_wp
+      if (this%surface%kind == surface_flat) then
+         ps = pair_state(this, st)
+         this%behind = dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp
+      end if
       ps = pair_state(this, st)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
       do q = 1, this%n_elem
