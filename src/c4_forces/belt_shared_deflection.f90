@@ -259,19 +259,34 @@ contains
    end subroutine curve_value_slope
 
    !> The table interval lo (1 <= lo < n) holding d > 0, loading_curves'
-   !! table_interval, with the interval hint (when 1 <= hint < n) tried first.
+   !! table_interval (the largest lo < n with defl(lo) <= d, 1 if none), found
+   !! by walking from the interval hint (when 1 <= hint < n; a search's next
+   !! evaluation is mostly in the same interval or the next), or for a table
+   !! of up to walk_points points from its first (cheaper than bisection's
+   !! call; table_interval for a longer one without a hint). The interval is
+   !! unique, so the way it is found changes nothing but the cost.
    pure integer function table_interval_from(defl, d, hint) result(lo)
       real(wp), intent(in) :: defl(:), d
       integer, intent(in) :: hint
+      integer, parameter :: walk_points = 16
       integer :: n
       n = size(defl)
-      if (hint >= 1 .and. hint < n) then
-         if (d >= defl(hint) .and. (hint == n - 1 .or. d < defl(hint + 1))) then
-            lo = hint
+      lo = hint
+      if (lo < 1 .or. lo >= n) then
+         if (n > walk_points) then
+            lo = table_interval(defl, d)
             return
          end if
+         lo = 1
       end if
-      lo = table_interval(defl, d)
+      do while (lo < n - 1)
+         if (.not. defl(lo + 1) <= d) exit
+         lo = lo + 1
+      end do
+      do while (lo > 1)
+         if (defl(lo) <= d) exit
+         lo = lo - 1
+      end do
    end function table_interval_from
 
    !> The branch of figure 18 at deformation x with the memory as it stands:
