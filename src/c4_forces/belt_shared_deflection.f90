@@ -605,16 +605,16 @@ contains
       end subroutine capped_split
    end subroutine chain_split
 
-   !> No deformation, rate or work in the chain's n elements.
+   !> No deformation, rate or work in the chain's n elements. (Every entry
+   !! is cleared, max_chain of them: stores of a known length, where a loop
+   !! to n became two calls of memset per element.)
    pure subroutine clear(split, n)
       type(chain_split_t), intent(inout) :: split
       integer, intent(in) :: n
-      integer :: i
-      do i = 1, n
-         split%x(i) = 0.0_wp
-         split%rate(i) = 0.0_wp
-         split%aux_rate(:, i) = 0.0_wp
-      end do
+      if (n < 1) return
+      split%x = 0.0_wp
+      split%rate = 0.0_wp
+      split%aux_rate = 0.0_wp
    end subroutine clear
 
    !> loading_curves' curve_rate_force of the law's curve, its Horner sum
@@ -652,8 +652,11 @@ contains
       else
          total = 0.0_wp
          do i = 1, n
-            w(i) = 0.0_wp                          ! a rigid element takes no share
-            if (slope(i) < rigid_slope) w(i) = 1.0_wp/slope(i)
+            if (slope(i) < rigid_slope) then
+               w(i) = 1.0_wp/slope(i)
+            else
+               w(i) = 0.0_wp                       ! a rigid element takes no share
+            end if
             total = total + w(i)
          end do
          if (total > 0.0_wp) then
