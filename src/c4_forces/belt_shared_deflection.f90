@@ -47,7 +47,7 @@ module belt_shared_deflection
    implicit none
    private
 
-   public :: max_chain, branch_point_t, branch_at, zero_extent, scaled_law
+   public :: max_chain, branch_point_t, branch_at, branch_at_memo, zero_extent, scaled_law
    public :: chain_split_t, chain_split, chain_split_text
    public :: split_ok, split_no_convergence, split_not_finite
    public :: path_none, path_pair, path_newton, path_search, max_sweeps
@@ -302,16 +302,32 @@ contains
       call branch_eval(law, mem, x, seg, bp)
    end function branch_at
 
+   !> branch_at with the memo of xi**p of a search (xi0, xp0; branch_eval),
+   !! for the tests.
+   pure subroutine branch_at_memo(law, mem, x, xi0, xp0, bp)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x
+      real(wp), intent(inout) :: xi0, xp0
+      type(branch_point_t), intent(out) :: bp
+      integer :: seg
+      seg = 0
+      call branch_eval(law, mem, x, seg, bp, xi0, xp0)
+   end subroutine branch_at_memo
+
    !> branch_at with a table interval to try first (seg, see curve_value_slope).
    !! (One evaluation of the curve, whichever the branch: the compiler can
-   !! then put it in line.)
-   pure subroutine branch_eval(law, mem, x, seg, bp)
+   !! then put it in line.) xi0, xp0: a search's memo of the unloading
+   !! curve's xi**p, for its later evaluations close by (xi0 = 0: none yet;
+   !! set where pow is called): the same value to a few ulps.
+   pure subroutine branch_eval(law, mem, x, seg, bp, xi0, xp0)
       type(recurrent_law_t), intent(in) :: law
       type(loading_memory_t), intent(in) :: mem
       real(wp), intent(in) :: x
       integer, intent(inout) :: seg
       type(branch_point_t), intent(out) :: bp
-      real(wp) :: xi, span, dm, d, fe, se, xp
+      real(wp), intent(inout), optional :: xi0, xp0
+      real(wp) :: xi, span, dm, d, fe, se, xp, u, p
       if (law%elastic .or. .not. mem%unloading .or. x >= mem%delta_max) then
          ! the loading curve of cycle n: F_e(x - eps_n)
          bp%loading = .true.
@@ -334,7 +350,28 @@ contains
          bp%force = fe
          bp%slope = se
       else if (mem%p > 0.0_wp) then
-         xp = xi**mem%p
+         xp = -1.0_wp
+         if (present(xi0)) then
+            ! near xi0, where xp0 = xi0**p was computed: xi**p = xp0 (1 + u)**p, u =
+            ! xi/xi0 - 1, by the binomial series to u**4 - its remainder, about
+            ! (p u)**5/120, below 1e-17 of it while p |u| <= 1e-3 - in place of
+            ! pow, whose latency the search's later evaluations (a Newton step
+            ! away) waited for
+            p = mem%p
+            if (xi0 > 0.0_wp) then
+               u = (xi - xi0)/xi0
+               if (abs(u)*max(p, 1.0_wp) <= 1.0e-3_wp) &
+                  xp = xp0*(1.0_wp + u*p*(1.0_wp + u*(p - 1.0_wp)*0.5_wp*(1.0_wp + u*(p - 2.0_wp)*(1.0_wp/3.0_wp) &
+                       *(1.0_wp + u*(p - 3.0_wp)*0.25_wp))))
+            end if
+         end if
+         if (xp < 0.0_wp) then
+            xp = xi**mem%p
+            if (present(xi0)) then
+               xi0 = xi
+               xp0 = xp
+            end if
+         end if
          bp%force = fe*xp
          bp%slope = (se*dm*xp + fe*mem%p*xp/xi)/span
       else
@@ -681,7 +718,7 @@ contains
       real(wp), intent(in), optional :: guess
       type(root_search_t) :: r
       type(branch_point_t) :: b1, b2, bj
-      real(wp) :: lo, hi, f2_lo, f1_hi, x0
+      real(wp) :: lo, hi, f2_lo, f1_hi, x0, xi1, xi2, xp1, xp2
       integer :: seg1, seg2, seg, i, j
       seg1 = 0
       seg2 = 0
@@ -723,9 +760,22 @@ contains
          split%iterations = 2
       end if
       call root_begin(r, lo, hi, x0, defl_tol*s, force_tol, max_iter)
+      ! the memo of xi**p (branch_eval) where a start is given, the belts' chains,
+      ! whose evaluations after the first are a Newton step from it: the contacts'
+      ! pairs, started from their bracket, gain little, and their values at a few
+      ! ulps move the interior deck's Dormand-Prince steps (docs/performance.md)
+      xi1 = merge(0.0_wp, -1.0_wp, present(guess))
+      xi2 = xi1
+      xp1 = 0.0_wp
+      xp2 = 0.0_wp
       do
-         call branch_eval(law(1), mem(1), r%x, seg1, b1)
-         call branch_eval(law(2), mem(2), s - r%x, seg2, b2)
+         if (xi1 >= 0.0_wp) then
+            call branch_eval(law(1), mem(1), r%x, seg1, b1, xi1, xp1)
+            call branch_eval(law(2), mem(2), s - r%x, seg2, b2, xi2, xp2)
+         else
+            call branch_eval(law(1), mem(1), r%x, seg1, b1)
+            call branch_eval(law(2), mem(2), s - r%x, seg2, b2)
+         end if
          call root_update(r, b1%force - b2%force, b1%slope + b2%slope, max(b1%force, b2%force))
          if (r%state /= root_running) exit
       end do
