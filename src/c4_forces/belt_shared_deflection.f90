@@ -65,9 +65,10 @@ module belt_shared_deflection
    !! force (where Newton's gave up).
    integer, parameter :: path_none = 0, path_pair = 1, path_newton = 2, path_search = 3
    !> (D-B11) Sweeps of Newton's method on (x, F) before the search by force
-   !! takes over: it ends in 2-4 where it converges (quadratically, or at once
-   !! on linear pieces), and sweeps that go on are a kink being crossed back
-   !! and forth or a branch it cannot follow, which the search's bracket settles.
+   !! takes over: where it converges it mostly ends in 2-3 (quadratically, or
+   !! at once on linear pieces), at times in up to 8 (from a start on a
+   !! convex unloading toe), and sweeps that go on are mostly a kink crossed
+   !! back and forth, which the search's bracket settles.
    integer, parameter :: max_sweeps = 12
    !> Where the chain is: slack (s <= 0), taken up but carrying no force
    !! (within the elements' residual deformations), loaded.
