@@ -16,7 +16,9 @@
 !! - the deformations x_i >= 0 of the elements, sum x_i = s, at which every
 !!   element's rate-independent branch carries the same force F_b (the
 !!   deformation split; a bracketed, safeguarded Newton iteration that ends
-!!   with a status, never silently);
+!!   with a status, never silently; for three or more elements Newton's
+!!   method on (x, F) at once first, D-B11, the bracketed search where it
+!!   gives up);
 !! - their rates, the derivative of that split along the motion: x_i' =
 !!   w_i s', w_i = (1/k_i) / sum (1/k_j), k_i the slope of element i's
 !!   branch at x_i (the rate split: the elements' forces stay equal as s
@@ -45,9 +47,10 @@ module belt_shared_deflection
    implicit none
    private
 
-   public :: max_chain, branch_point_t, branch_at, zero_extent, scaled_law
+   public :: max_chain, branch_point_t, branch_at, branch_at_memo, zero_extent, scaled_law
    public :: chain_split_t, chain_split, chain_split_text
    public :: split_ok, split_no_convergence, split_not_finite
+   public :: path_none, path_pair, path_newton, path_search, max_sweeps
    public :: region_slack, region_unloaded, region_loaded
    public :: root_search_t, root_begin, root_update, root_running, root_converged, root_failed, root_not_finite
 
@@ -56,6 +59,17 @@ module belt_shared_deflection
 
    !> Outcome of a split.
    integer, parameter :: split_ok = 0, split_no_convergence = 1, split_not_finite = 2
+   !> Which solver gave a split: none (slack, unloaded, one element, an
+   !! element held, capped or gated in a pair), the pair's search on x_1,
+   !! Newton's method on (x, F) of three or more (D-B11), or their search by
+   !! force (where Newton's gave up).
+   integer, parameter :: path_none = 0, path_pair = 1, path_newton = 2, path_search = 3
+   !> (D-B11) Sweeps of Newton's method on (x, F) before the search by force
+   !! takes over: where it converges it mostly ends in 2-3 (quadratically, or
+   !! at once on linear pieces), at times in up to 8 (from a start on a
+   !! convex unloading toe), and sweeps that go on are mostly a kink crossed
+   !! back and forth, which the search's bracket settles.
+   integer, parameter :: max_sweeps = 12
    !> Where the chain is: slack (s <= 0), taken up but carrying no force
    !! (within the elements' residual deformations), loaded.
    integer, parameter :: region_slack = 0, region_unloaded = 1, region_loaded = 2
@@ -85,6 +99,8 @@ module belt_shared_deflection
       integer :: status = split_ok
       integer :: region = region_slack
       integer :: iterations = 0              !< force evaluations of the search
+      integer :: path = path_none            !< the solver that gave it
+      integer :: sweeps = 0                  !< sweeps of Newton's method on (x, F), D-B11 (0: not tried)
       real(wp) :: force = 0.0_wp             !< F, the chain's force (every element carries it)
       real(wp) :: branch = 0.0_wp            !< F_b, its rate-independent part
       real(wp) :: guess = 0.0_wp             !< the unknown of the search: x_1 (two elements) or F_b
@@ -155,7 +171,7 @@ contains
    pure subroutine root_update(r, g, dg, scale)
       type(root_search_t), intent(inout) :: r
       real(wp), intent(in) :: g, dg, scale
-      real(wp) :: xn
+      real(wp) :: xn, span
       r%iterations = r%iterations + 1
       r%g = g
       if (.not. (ieee_is_finite(g) .and. ieee_is_finite(dg) .and. ieee_is_finite(r%x))) then
@@ -184,7 +200,12 @@ contains
          r%max_iter = r%max_iter + bisections
       end if
       xn = r%lo - 1.0_wp      ! (outside: bisect unless Newton gives better)
-      if (dg > 0.0_wp .and. dg < huge(1.0_wp) .and. .not. r%bisecting) xn = r%x - g/dg   ! huge: g jumps here
+      if (dg > 0.0_wp .and. dg < huge(1.0_wp) .and. .not. r%bisecting) then   ! (huge: g jumps here)
+         ! a step longer than the bracket, which is rejected below, is not computed:
+         ! g/dg overflows where dg is subnormal (an unloading curve's toe)
+         span = r%hi - r%lo
+         if (abs(g) < min(dg, huge(1.0_wp)/max(span, 1.0_wp))*span) xn = r%x - g/dg
+      end if
       if (.not. (xn > r%lo .and. xn < r%hi .and. abs(xn - r%x) <= 0.5_wp*abs(r%step_old))) then
          xn = 0.5_wp*(r%lo + r%hi)
       else if (abs(xn - r%x) < 0.5_wp*r%x_tol) then
@@ -239,19 +260,34 @@ contains
    end subroutine curve_value_slope
 
    !> The table interval lo (1 <= lo < n) holding d > 0, loading_curves'
-   !! table_interval, with the interval hint (when 1 <= hint < n) tried first.
+   !! table_interval (the largest lo < n with defl(lo) <= d, 1 if none), found
+   !! by walking from the interval hint (when 1 <= hint < n; a search's next
+   !! evaluation is mostly in the same interval or the next), or for a table
+   !! of up to walk_points points from its first (cheaper than bisection's
+   !! call; table_interval for a longer one without a hint). The interval is
+   !! unique, so the way it is found changes nothing but the cost.
    pure integer function table_interval_from(defl, d, hint) result(lo)
       real(wp), intent(in) :: defl(:), d
       integer, intent(in) :: hint
+      integer, parameter :: walk_points = 16
       integer :: n
       n = size(defl)
-      if (hint >= 1 .and. hint < n) then
-         if (d >= defl(hint) .and. (hint == n - 1 .or. d < defl(hint + 1))) then
-            lo = hint
+      lo = hint
+      if (lo < 1 .or. lo >= n) then
+         if (n > walk_points) then
+            lo = table_interval(defl, d)
             return
          end if
+         lo = 1
       end if
-      lo = table_interval(defl, d)
+      do while (lo < n - 1)
+         if (.not. defl(lo + 1) <= d) exit
+         lo = lo + 1
+      end do
+      do while (lo > 1)
+         if (defl(lo) <= d) exit
+         lo = lo - 1
+      end do
    end function table_interval_from
 
    !> The branch of figure 18 at deformation x with the memory as it stands:
@@ -267,16 +303,32 @@ contains
       call branch_eval(law, mem, x, seg, bp)
    end function branch_at
 
+   !> branch_at with the memo of xi**p of a search (xi0, xp0; branch_eval),
+   !! for the tests.
+   pure subroutine branch_at_memo(law, mem, x, xi0, xp0, bp)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x
+      real(wp), intent(inout) :: xi0, xp0
+      type(branch_point_t), intent(out) :: bp
+      integer :: seg
+      seg = 0
+      call branch_eval(law, mem, x, seg, bp, xi0, xp0)
+   end subroutine branch_at_memo
+
    !> branch_at with a table interval to try first (seg, see curve_value_slope).
    !! (One evaluation of the curve, whichever the branch: the compiler can
-   !! then put it in line.)
-   pure subroutine branch_eval(law, mem, x, seg, bp)
+   !! then put it in line.) xi0, xp0: a search's memo of the unloading
+   !! curve's xi**p, for its later evaluations close by (xi0 = 0: none yet;
+   !! set where pow is called): the same value to a few ulps.
+   pure subroutine branch_eval(law, mem, x, seg, bp, xi0, xp0)
       type(recurrent_law_t), intent(in) :: law
       type(loading_memory_t), intent(in) :: mem
       real(wp), intent(in) :: x
       integer, intent(inout) :: seg
       type(branch_point_t), intent(out) :: bp
-      real(wp) :: xi, span, dm, d, fe, se, xp
+      real(wp), intent(inout), optional :: xi0, xp0
+      real(wp) :: xi, span, dm, d, fe, se, xp, u, p
       if (law%elastic .or. .not. mem%unloading .or. x >= mem%delta_max) then
          ! the loading curve of cycle n: F_e(x - eps_n)
          bp%loading = .true.
@@ -299,7 +351,28 @@ contains
          bp%force = fe
          bp%slope = se
       else if (mem%p > 0.0_wp) then
-         xp = xi**mem%p
+         xp = -1.0_wp
+         if (present(xi0)) then
+            ! near xi0, where xp0 = xi0**p was computed: xi**p = xp0 (1 + u)**p, u =
+            ! xi/xi0 - 1, by the binomial series to u**4 - its remainder, about
+            ! (p u)**5/120, below 1e-17 of it while p |u| <= 1e-3 - in place of
+            ! pow, whose latency the search's later evaluations (a Newton step
+            ! away) waited for
+            p = mem%p
+            if (xi0 > 0.0_wp) then
+               u = (xi - xi0)/xi0
+               if (abs(u)*max(p, 1.0_wp) <= 1.0e-3_wp) &
+                  xp = xp0*(1.0_wp + u*p*(1.0_wp + u*(p - 1.0_wp)*0.5_wp*(1.0_wp + u*(p - 2.0_wp)*(1.0_wp/3.0_wp) &
+                       *(1.0_wp + u*(p - 3.0_wp)*0.25_wp))))
+            end if
+         end if
+         if (xp < 0.0_wp) then
+            xp = xi**mem%p
+            if (present(xi0)) then
+               xi0 = xi
+               xp0 = xp
+            end if
+         end if
          bp%force = fe*xp
          bp%slope = (se*dm*xp + fe*mem%p*xp/xi)/span
       else
@@ -361,8 +434,10 @@ contains
    !! vertical and the other elements take the rest. gate (> 0 where given):
    !! an element that does not move until the chain's force exceeds gate,
    !! and then carries gate plus its own curve (the steering column behind
-   !! its padding, C.4.f, D-C19).
-   pure subroutine chain_split(n, law, mem, s, s_dot, max_iter, split, guess, cap, gate)
+   !! its padding, C.4.f, D-C19). search: three or more elements by the
+   !! search by force alone, without Newton's method on (x, F) first (D-B11;
+   !! the tests' reference); split%path says which solver gave the split.
+   pure subroutine chain_split(n, law, mem, s, s_dot, max_iter, split, guess, cap, gate, search)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
@@ -371,8 +446,9 @@ contains
       type(chain_split_t), intent(out) :: split
       real(wp), intent(in), optional :: guess
       real(wp), intent(in), optional :: cap(:), gate(:)
+      logical, intent(in), optional :: search
       real(wp) :: z(max_chain), zsum, slope(max_chain), w(max_chain), fv(max_chain), fv_chain, lambda
-      logical :: loading(max_chain)
+      logical :: loading(max_chain), by_force
       integer :: i
 
       ! (each path sets x, rate and aux_rate of the n elements: no clearing first)
@@ -437,7 +513,9 @@ contains
          end if
          if (split%iterations < 0) call pair_split(law, mem, s, z, max_iter, split, slope, loading, guess)
       case default
-         call chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess, cap, gate)
+         by_force = .false.
+         if (present(search)) by_force = search
+         call chain_split_by_force(n, law, mem, s, z, max_iter, by_force, split, slope, loading, guess, cap, gate)
       end select
       if (split%status /= split_ok) then
          call clear(split, n)
@@ -565,16 +643,16 @@ contains
       end subroutine capped_split
    end subroutine chain_split
 
-   !> No deformation, rate or work in the chain's n elements.
+   !> No deformation, rate or work in the chain's n elements. (Every entry
+   !! is cleared, max_chain of them: stores of a known length, where a loop
+   !! to n became two calls of memset per element.)
    pure subroutine clear(split, n)
       type(chain_split_t), intent(inout) :: split
       integer, intent(in) :: n
-      integer :: i
-      do i = 1, n
-         split%x(i) = 0.0_wp
-         split%rate(i) = 0.0_wp
-         split%aux_rate(:, i) = 0.0_wp
-      end do
+      if (n < 1) return
+      split%x = 0.0_wp
+      split%rate = 0.0_wp
+      split%aux_rate = 0.0_wp
    end subroutine clear
 
    !> loading_curves' curve_rate_force of the law's curve, its Horner sum
@@ -612,8 +690,11 @@ contains
       else
          total = 0.0_wp
          do i = 1, n
-            w(i) = 0.0_wp                          ! a rigid element takes no share
-            if (slope(i) < rigid_slope) w(i) = 1.0_wp/slope(i)
+            if (slope(i) < rigid_slope) then
+               w(i) = 1.0_wp/slope(i)
+            else
+               w(i) = 0.0_wp                       ! a rigid element takes no share
+            end if
             total = total + w(i)
          end do
          if (total > 0.0_wp) then
@@ -638,11 +719,12 @@ contains
       real(wp), intent(in), optional :: guess
       type(root_search_t) :: r
       type(branch_point_t) :: b1, b2, bj
-      real(wp) :: lo, hi, f2_lo, f1_hi, x0
+      real(wp) :: lo, hi, f2_lo, f1_hi, x0, xi1, xi2, xp1, xp2
       integer :: seg1, seg2, seg, i, j
       seg1 = 0
       seg2 = 0
       split%iterations = 0
+      split%path = path_pair
       ! (D-B10) a plastic element held at delta_max while the other carries no
       ! more than its f_max: the other takes the whole change
       do i = 1, 2
@@ -679,9 +761,22 @@ contains
          split%iterations = 2
       end if
       call root_begin(r, lo, hi, x0, defl_tol*s, force_tol, max_iter)
+      ! the memo of xi**p (branch_eval) where a start is given, the belts' chains,
+      ! whose evaluations after the first are a Newton step from it: the contacts'
+      ! pairs, started from their bracket, gain little, and their values at a few
+      ! ulps move the interior deck's Dormand-Prince steps (docs/performance.md)
+      xi1 = merge(0.0_wp, -1.0_wp, present(guess))
+      xi2 = xi1
+      xp1 = 0.0_wp
+      xp2 = 0.0_wp
       do
-         call branch_eval(law(1), mem(1), r%x, seg1, b1)
-         call branch_eval(law(2), mem(2), s - r%x, seg2, b2)
+         if (xi1 >= 0.0_wp) then
+            call branch_eval(law(1), mem(1), r%x, seg1, b1, xi1, xp1)
+            call branch_eval(law(2), mem(2), s - r%x, seg2, b2, xi2, xp2)
+         else
+            call branch_eval(law(1), mem(1), r%x, seg1, b1)
+            call branch_eval(law(2), mem(2), s - r%x, seg2, b2)
+         end if
          call root_update(r, b1%force - b2%force, b1%slope + b2%slope, max(b1%force, b2%force))
          if (r%state /= root_running) exit
       end do
@@ -702,17 +797,22 @@ contains
       loading(2) = b2%loading
    end subroutine pair_split
 
-   !> Three or more elements (sections sharing one tension): the common force
-   !! F_b in (0, F_hi] with h(F) = sum x_i(F) - s = 0, x_i(F) the element's
-   !! deformation at force F (each an inner search on [z_i, s - sum z + z_i]),
-   !! h' = sum 1/k_i. Where the bracket closes on a flat branch or a jump,
-   !! the deformations are interpolated between its ends so that they add up.
-   pure subroutine chain_split_by_force(n, law, mem, s, z, max_iter, split, slope, loading, guess, cap, gate)
+   !> Three or more elements (sections sharing one tension; a contact's body,
+   !! padding and backing): first Newton's method on (x_1 .. x_n, F) at once
+   !! (newton_split, D-B11), and where it gives up the search by force: the
+   !! common force F_b in (0, F_hi] with h(F) = sum x_i(F) - s = 0, x_i(F)
+   !! the element's deformation at force F (each an inner search on [z_i, s -
+   !! sum z + z_i], started on the tangent at the element's last point), h' =
+   !! sum 1/k_i, from where Newton's method ended. Where the bracket closes on
+   !! a flat branch or a jump, the deformations are interpolated between its
+   !! ends so that they add up. search: the search alone (the tests' reference).
+   pure subroutine chain_split_by_force(n, law, mem, s, z, max_iter, search, split, slope, loading, guess, cap, gate)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
       real(wp), intent(in) :: s, z(:)
       integer, intent(in) :: max_iter
+      logical, intent(in) :: search      !< the search by force alone, no Newton's method first
       type(chain_split_t), intent(inout) :: split
       real(wp), intent(out) :: slope(:)
       logical, intent(out) :: loading(:)
@@ -725,6 +825,11 @@ contains
       real(wp) :: f_gate(max_chain)          ! a gated element's force before it moves (0: no gate)
       integer :: i, status, seg(max_chain)
       type(branch_point_t) :: bp
+      logical :: done, newton_free(max_chain), have_lo, have_hi
+      real(wp) :: f_newton
+      ! each element's last point (x_at, f_at) on its branch and its slope k_at
+      ! there (f_at < 0: none yet): where its next search at another force starts
+      real(wp) :: x_at(max_chain), f_at(max_chain), k_at(max_chain)
 
       seg(1:n) = 0
       f_cap(1:n) = huge(1.0_wp)
@@ -752,12 +857,51 @@ contains
       ! first point: the secants in series
       f0 = (s - sum(z(1:n)))/sum(1.0_wp/max(secant(1:n), min_slope))
       if (present(guess)) f0 = guess
+      ! (D-B11) first Newton's method on the deformations and the force at once;
+      ! where it does not converge in a few sweeps, or meets what it cannot
+      ! handle, the search by force below decides, from where it ended
+      f_at(1:n) = -1.0_wp
+      x_at(1:n) = 0.0_wp
+      k_at(1:n) = 0.0_wp
+      if (.not. search) then
+         call newton_split(f0, x, seg, f_newton, slope, newton_free, loading, split%iterations, split%sweeps, &
+                           x_at, f_at, k_at, done)
+         if (done) then
+            split%branch = f_newton
+            split%path = path_newton
+            split%x(1:n) = x(1:n)
+            do i = 1, n
+               if (newton_free(i)) cycle
+               slope(i) = rigid_slope        ! held (D-B10), at its cap, or behind its gate
+               loading(i) = .false.
+            end do
+            return
+         end if
+         ! the search starts where Newton's method ended, and each element where it was evaluated last
+         if (f_newton > 0.0_wp .and. f_newton <= f_hi) f0 = f_newton
+      end if
+      split%path = path_search
       call root_begin(r, 0.0_wp, f_hi, f0, defl_tol*f_hi, defl_tol, max_iter)
+      have_lo = .false.
+      have_hi = .false.
       do
-         call deformations_at(r%x, x, h, dh, status, split%iterations, seg)
+         call deformations_at(r%x, x, h, dh, status, split%iterations, seg, x_at, f_at, k_at)
          if (status /= split_ok) then
             split%status = status
             return
+         end if
+         ! the deformations at the bracket's ends as the search found them (root_update's
+         ! rule: h < 0 moves lo): on a flat piece, within the force tolerance of its
+         ! force, an element's x_i(F) is wherever its inner search began, so the ends
+         ! are kept rather than evaluated again
+         if (h < 0.0_wp) then
+            x_lo(1:n) = x(1:n)
+            h_lo = h
+            have_lo = .true.
+         else
+            x_hi(1:n) = x(1:n)
+            h_hi = h
+            have_hi = .true.
          end if
          call root_update(r, h, dh, s)
          if (r%state /= root_running) exit
@@ -769,9 +913,12 @@ contains
       if (r%state == root_failed) split%status = split_no_convergence
       split%branch = r%x
       if (abs(h) > defl_tol*s .and. split%status == split_ok) then
-         ! a flat branch or a jump: interpolate between the bracket's ends
-         call deformations_at(r%lo, x_lo, h_lo, dh, status, split%iterations, seg)
-         if (status == split_ok) call deformations_at(r%hi, x_hi, h_hi, dh, status, split%iterations, seg)
+         ! a flat branch or a jump: interpolate between the bracket's ends (an end
+         ! the search never evaluated, 0 or F_hi, evaluated now)
+         status = split_ok
+         if (.not. have_lo) call deformations_at(r%lo, x_lo, h_lo, dh, status, split%iterations, seg, x_at, f_at, k_at)
+         if (.not. have_hi .and. status == split_ok) &
+            call deformations_at(r%hi, x_hi, h_hi, dh, status, split%iterations, seg, x_at, f_at, k_at)
          if (status /= split_ok) then
             split%status = status
             return
@@ -794,15 +941,184 @@ contains
          end if
       end do
    contains
+      !> (D-B11) Newton's method on (x_1 .. x_n, F) at once. The elements
+      !! that are rigid at the force F are held (a plastic element below
+      !! f_max, D-B10; a padding at its cap, figure 25; a column below its
+      !! gate, D-C19); each free element's tangent at x_i, F_i + k_i dx_i =
+      !! F_new, and sum x_i = s give F_new = (s - sum held x - sum (x_i -
+      !! F_i/k_i)) / sum (1/k_i) and the new x_i: one evaluation of each free
+      !! element per sweep, exact on linear pieces of tabulated curves,
+      !! quadratic on smooth branches, where the search by force runs an
+      !! inner search per element for each of its evaluations of h(F). An
+      !! element on a flat piece of its curve (slope 0, force > 0: the column
+      !! crushing at its plateau) sets F_new to its force and takes the
+      !! deformation the others leave. It converges when every free element
+      !! carries F to the force tolerance (the inner searches' test) and the
+      !! deformations add up to s to the deformation tolerance (the outer
+      !! one's). It gives up (done = .false.) on what the search's bracket
+      !! settles better: a jump (a huge slope), two flat elements, an element
+      !! at the origin of its curve (no slope to go by) or pushed out of [z_i,
+      !! x_max_i], a force <= 0, a value that is not finite, or no
+      !! convergence within max_sweeps sweeps. The held set follows F at every
+      !! sweep; an element taken up starts on its secant.
+      pure subroutine newton_split(f_start, xs, hint, f, kb, free, on_loading, evaluations, sweeps, x_at, f_at, k_at, done)
+         real(wp), intent(in) :: f_start
+         real(wp), intent(out) :: xs(:)           !< the deformations
+         integer, intent(inout) :: hint(:)        !< each element's table interval (curve_value_slope)
+         real(wp), intent(out) :: f               !< the force
+         real(wp), intent(out) :: kb(:)           !< the free elements' slopes
+         logical, intent(out) :: free(:)          !< not held at f
+         logical, intent(out) :: on_loading(:)    !< the free elements' branches
+         integer, intent(inout) :: evaluations    !< of the elements' branches
+         integer, intent(out) :: sweeps
+         !> each element's last evaluated point and slope (for the search, should it follow)
+         real(wp), intent(inout) :: x_at(:), f_at(:), k_at(:)
+         logical, intent(out) :: done
+         type(branch_point_t) :: b
+         real(wp) :: f_new, fb(max_chain), compliance, rest, xsum, x_held, x_new
+         logical :: balanced, was_free, pinned_out
+         integer :: k, k_flat, k_pinned
+         done = .false.
+         sweeps = 0
+         ! the start: the force given (a nearby state's), else the secants in series
+         f = f_start
+         if (.not. (f > 0.0_wp .and. f <= f_hi)) f = (s - sum(z(1:n)))/sum(1.0_wp/max(secant(1:n), min_slope))
+         if (.not. (f > 0.0_wp .and. f <= f_hi)) return
+         do k = 1, n
+            call held_at(k, f, free(k), xs(k))
+            if (free(k)) xs(k) = on_secant(k, f)
+         end do
+         k_pinned = 0
+         do sweeps = 1, max_sweeps
+            compliance = 0.0_wp
+            rest = s
+            xsum = 0.0_wp
+            balanced = .true.
+            pinned_out = .false.
+            k_flat = 0
+            do k = 1, n
+               xsum = xsum + xs(k)
+               if (.not. free(k)) then
+                  rest = rest - xs(k)
+                  cycle
+               end if
+               if (k == k_pinned .and. .not. (xs(k) >= z(k) .and. xs(k) <= x_max(k))) then
+                  ! a flat element the others' steps pushed out of its range: it
+                  ! keeps the force it set until they settle
+                  if (k_flat /= 0) return           ! (a second flat element)
+                  fb(k) = f
+                  kb(k) = 0.0_wp
+                  pinned_out = .true.
+                  k_flat = k
+                  cycle
+               end if
+               if (.not. (xs(k) >= z(k) .and. xs(k) <= x_max(k))) return    ! out of its range
+               call branch_eval(law(k), mem(k), xs(k), hint(k), b)
+               evaluations = evaluations + 1
+               fb(k) = b%force + f_gate(k)
+               kb(k) = b%slope
+               on_loading(k) = b%loading
+               x_at(k) = xs(k)
+               f_at(k) = fb(k)
+               k_at(k) = kb(k)
+               ! (to the inner searches' tolerance, or to the outer one's on the force,
+               ! 1e-14 of F_hi: near an unloading toe forces of 1e-20 lb cannot be
+               ! resolved to 1e-12 of themselves)
+               balanced = balanced .and. abs(fb(k) - f) <= max(force_tol*f, defl_tol*f_hi)
+               if (kb(k) > min_slope .and. kb(k) < rigid_slope) then
+                  compliance = compliance + 1.0_wp/kb(k)
+                  rest = rest - (xs(k) - fb(k)/kb(k))
+               else if (.not. kb(k) > min_slope .and. b%force > 0.0_wp .and. k_flat == 0) then
+                  k_flat = k           ! on a flat piece
+               else
+                  return               ! a jump, a second flat element, or at its curve's origin
+               end if
+            end do
+            if (pinned_out) then
+               ! the others carry its force, and it is still out of its range: not on its flat piece
+               if (balanced) return
+            else if (balanced .and. abs(xsum - s) <= defl_tol*s) then
+               done = .true.
+               return
+            end if
+            k_pinned = k_flat
+            if (k_flat > 0) then
+               f_new = fb(k_flat)      ! the flat element sets the force ...
+            else
+               if (.not. (compliance > 0.0_wp)) return             ! every element held
+               f_new = rest/compliance
+            end if
+            if (.not. (f_new > 0.0_wp .and. f_new < huge(1.0_wp))) return
+            do k = 1, n
+               if (.not. free(k) .or. k == k_flat) cycle
+               ! (a step past the top of its range is cut back to the top, one below
+               ! its zero-force extent to halfway there - at z_k its curve's origin has
+               ! no slope to go by; the next step comes back)
+               x_new = xs(k) + (f_new - fb(k))/kb(k)
+               if (x_new <= z(k)) x_new = 0.5_wp*(xs(k) + z(k))
+               xs(k) = min(x_new, x_max(k))
+            end do
+            if (k_flat > 0) xs(k_flat) = s - (sum(xs(1:n)) - xs(k_flat))   ! ... and takes what the others leave
+            f = f_new
+            ! the elements held at the new force; one taken up starts on its secant
+            do k = 1, n
+               was_free = free(k)
+               call held_at(k, f, free(k), x_held)
+               if (.not. free(k)) then
+                  xs(k) = x_held
+               else if (.not. was_free) then
+                  xs(k) = on_secant(k, f)
+               end if
+            end do
+         end do
+         sweeps = max_sweeps
+      end subroutine newton_split
+
+      !> Element k's deformation at force f on its secant from (z_k, its
+      !! gate) towards (x_max_k, f_max_k): Newton's start (its curve's origin
+      !! has no slope to go by, the secant has).
+      pure real(wp) function on_secant(k, f) result(x_k)
+         integer, intent(in) :: k
+         real(wp), intent(in) :: f
+         x_k = z(k)
+         if (f_max(k) > f_gate(k)) x_k = min(z(k) + (x_max(k) - z(k))*max(f - f_gate(k), 0.0_wp)/(f_max(k) - f_gate(k)), &
+                                             x_max(k))
+      end function on_secant
+
+      !> Whether element k is free at the chain's force f, and if not where
+      !! it is held (deformations_at's rules): a plastic element that has
+      !! turned at delta_max up to f_max (D-B10), a capped one at its cap from
+      !! its force there (figure 25), a gated one at z_k up to its gate.
+      pure subroutine held_at(k, f, free_k, x_held)
+         integer, intent(in) :: k
+         real(wp), intent(in) :: f
+         logical, intent(out) :: free_k
+         real(wp), intent(out) :: x_held
+         free_k = .false.
+         x_held = 0.0_wp
+         if (held_plastic(law(k), mem(k)) .and. f <= mem(k)%f_max) then
+            x_held = mem(k)%delta_max
+         else if (f >= f_cap(k)) then
+            x_held = x_max(k)
+         else if (f_gate(k) > 0.0_wp .and. f <= f_gate(k)) then
+            x_held = z(k)
+         else
+            free_k = .true.
+         end if
+      end subroutine held_at
+
       !> x_i(F) for every element, h(F) = sum x_i - s and h'(F).
-      pure subroutine deformations_at(f, xs, hf, dhf, st, iterations, hint)
+      pure subroutine deformations_at(f, xs, hf, dhf, st, iterations, hint, x_last, f_last, k_last)
          real(wp), intent(in) :: f
          real(wp), intent(out) :: xs(:), hf, dhf
          integer, intent(out) :: st
          integer, intent(inout) :: iterations
          integer, intent(inout) :: hint(:)     ! each element's table interval (curve_value_slope)
+         !> each element's last point on its branch and the slope there (f_last < 0: none)
+         real(wp), intent(inout) :: x_last(:), f_last(:), k_last(:)
          type(root_search_t) :: q
          type(branch_point_t) :: b
+         real(wp) :: x0
          integer :: k
          st = split_ok
          dhf = 0.0_wp
@@ -830,14 +1146,21 @@ contains
                xs(k) = z(k)
                call branch_eval(law(k), mem(k), z(k), hint(k), b)
             else
-               call root_begin(q, z(k), x_max(k), z(k) + (f - f_gate(k))/max(secant(k), min_slope), defl_tol*s, &
-                               force_tol, max_iter)
+               ! the start: on the tangent at the element's last point (an outer step
+               ! or Newton's method before), else on its secant
+               x0 = z(k) + (f - f_gate(k))/max(secant(k), min_slope)
+               if (f_last(k) >= 0.0_wp .and. k_last(k) > min_slope .and. k_last(k) < rigid_slope) &
+                  x0 = x_last(k) + (f - f_last(k))/k_last(k)
+               call root_begin(q, z(k), x_max(k), x0, defl_tol*s, force_tol, max_iter)
                do
                   call branch_eval(law(k), mem(k), q%x, hint(k), b)
                   call root_update(q, b%force + f_gate(k) - f, b%slope, f)
                   if (q%state /= root_running) exit
                end do
                iterations = iterations + q%iterations
+               x_last(k) = q%x               ! (where b was evaluated: the search ends there)
+               f_last(k) = b%force + f_gate(k)
+               k_last(k) = b%slope
                if (q%state == root_not_finite) then
                   st = split_not_finite
                else if (q%state == root_failed) then
