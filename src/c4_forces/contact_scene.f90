@@ -69,36 +69,44 @@ contains
    pure integer function pair_material(it, k) result(l)
       type(interior_section_t), intent(in) :: it
       integer, intent(in) :: k
+      integer :: lb
+      call surface_layers(it, k, l, lb)
+   end function pair_material
+
+   !> The material behind a padding or mat that bottoms out (figure 25,
+   !! D-C19): the backing of a padded surface with D'' > 0; 0 for none.
+   pure integer function backing_material(it, k) result(lb)
+      type(interior_section_t), intent(in) :: it
+      integer, intent(in) :: k
+      integer :: l
+      call surface_layers(it, k, l, lb)
+   end function backing_material
+
+   !> Surface k's composition (Table 10) as the scene uses it: its outer
+   !! material l (0: none) and the backing lb behind a padding or mat with
+   !! D'' > 0 (0: none). The rear floor 25 takes the toeboard 5's D''.
+   pure subroutine surface_layers(it, k, l, lb)
+      type(interior_section_t), intent(in) :: it
+      integer, intent(in) :: k
+      integer, intent(out) :: l, lb
       integer, allocatable :: comp(:)
       integer :: kd
       allocate (comp(0))      ! (realloc on assignment: a descriptor set first)
       comp = surface_materials(k)
       l = 0
+      lb = 0
       if (size(comp) == 0) return
       kd = k
       if (k == 25) kd = 5
       l = comp(1)
       if (size(comp) > 1) then
-         if (.not. it%dpp(kd) > 0.0_wp) l = comp(2)
+         if (it%dpp(kd) > 0.0_wp) then
+            lb = comp(2)
+         else
+            l = comp(2)
+         end if
       end if
-   end function pair_material
-
-   !> The material behind a padding or mat that bottoms out (figure 25,
-   !! D-C19): the backing of a padded surface with D'' > 0; 0 for none.
-   pure integer function backing_material(it, k) result(l)
-      type(interior_section_t), intent(in) :: it
-      integer, intent(in) :: k
-      integer, allocatable :: comp(:)
-      integer :: kd
-      allocate (comp(0))
-      comp = surface_materials(k)
-      l = 0
-      kd = k
-      if (k == 25) kd = 5
-      if (size(comp) > 1) then
-         if (it%dpp(kd) > 0.0_wp) l = comp(2)
-      end if
-   end function backing_material
+   end subroutine surface_layers
 
    !> Table 11 (figure 23): the body material (chest 12, face 13, shoulder
    !! 14) that shares a pair's deflection, when it has a loading curve (a
@@ -147,14 +155,14 @@ contains
       type(recurrent_law_t), allocatable :: backing, body_law
       real(wp), allocatable :: cap
       logical :: ok
-      integer :: q
+      integer :: q, l, lb
       allocate (pairs(0))
       pairs = scene_pairs(m)
       allocate (effects(size(pairs)))
       do q = 1, size(pairs)
          call resolved_surface(m%interior, pairs(q)%k, sf, ok)
-         associate (l => pair_material(m%interior, pairs(q)%k), lb => backing_material(m%interior, pairs(q)%k), &
-                    kd => merge(5, pairs(q)%k, pairs(q)%k == 25), lbody => shared_material(m, pairs(q)))
+         call surface_layers(m%interior, pairs(q)%k, l, lb)
+         associate (kd => merge(5, pairs(q)%k, pairs(q)%k == 25), lbody => shared_material(m, pairs(q)))
             if (allocated(backing)) deallocate (backing, cap)
             if (allocated(body_law)) deallocate (body_law)
             if (lb > 0) then

@@ -68,13 +68,11 @@ contains
       real(wp), intent(in) :: t
       logical, intent(in) :: injured, at_rest
       integer, intent(out) :: reason
-      logical, intent(in), optional :: undesired   !< a Table 9 contact began at this step
+      logical, intent(in) :: undesired   !< a Table 9 contact began at this step
       reason = end_none
       select case (nend)
       case (nend_contact)
-         if (present(undesired)) then
-            if (undesired) reason = end_contact
-         end if
+         if (undesired) reason = end_contact
       case (nend_injury)
          if (injured) reason = end_injury
       case (nend_rest)
