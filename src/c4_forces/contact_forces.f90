@@ -20,7 +20,8 @@ module contact_forces
    use model, only: body_section_t, n_dof
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
       energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
-      max_events_per_step, event_shatter, event_cut
+      max_events_per_step, event_shatter, event_cut, proximity_guard_t, guard_none, guard_ball, &
+      guard_half_plane, guard_capsule, guard_always
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
@@ -34,7 +35,7 @@ module contact_forces
    implicit none
    private
 
-   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far
+   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far, pair_guard
 
 
    type, extends(effect_t) :: contact_pair_effect_t
@@ -78,7 +79,9 @@ module contact_forces
       integer :: max_iter = 60
       !> add_forces returns at once, and accept takes its short path, where
       !! pair_far proves the pair slack (.false.: always the full path, for
-      !! the tests that compare the two)
+      !! the tests that compare the two; an occupant's dispatch skips the
+      !! pair where its proximity guard holds, D-C29, unless the guard's
+      !! kind is set to guard_none too)
       logical :: exit_far = .true.
       !> the surface's e(psi) (for contact_check and front_side too: the
       !! same library call on the same angle, taken once) and normal, and for
@@ -169,7 +172,58 @@ contains
       e%aux_friction = n_loading_aux*e%n_elem + 1
       e%aux_supplied = e%aux_friction + 1
       e%n_aux = e%aux_supplied
+      e%guard = pair_guard(e)
    end function contact_pair_effect
+
+   !> The pair's proximity guard (D-C29, effect_base): the cases of
+   !! far_check's bound that need no memory, with the same body point, the
+   !! same reach less far_check's margin, and twice that margin (so where
+   !! the guard holds far_check's bound holds, whatever the roundings of the
+   !! two computations: a few ulps of the coordinates' size, against a
+   !! margin of 1e-9 of it) - the point's circle farther than its radius
+   !! from a circle or a point, in front of a line or of a flat surface's
+   !! line (far whatever the side it came from and whatever its extent), the
+   !! shin's capsule from the panel's edge. Where add_forces would take its
+   !! early exit for the other reasons (a flat surface beyond its extent or
+   !! behind, broken glass) the pair is dispatched as before. none for a
+   !! radius below zero, which would turn the bound's margin round.
+   pure function pair_guard(e) result(g)
+      type(contact_pair_effect_t), intent(in) :: e
+      type(proximity_guard_t) :: g
+      real(wp) :: ext
+      g%seg = arc_segment(e%i)
+      g%size = e%size_sum
+      g%centre = e%surface%s
+      ext = 0.0_wp
+      select case (e%i)               ! the body point, as far_check places it
+      case (2, 3)
+         ext = abs(e%body%rho_arc(e%i))
+      case (4)
+         g%along = e%body%rho_arc(4)
+      case (6, 7, 8, 10)
+         g%along = e%body%length(g%seg)
+      case (9)
+         g%along = e%body%length(8)
+      end select
+      if (e%i == 9) then
+         g%kind = guard_capsule
+         g%radius = max(e%body%r_arc(7), e%body%r_arc(11))
+      else
+         g%radius = e%body%r_arc(e%i) + ext
+         select case (e%surface%kind)
+         case (surface_circle)
+            g%kind = guard_ball
+            g%radius = g%radius + 0.5_wp*e%surface%d
+         case (surface_point)
+            g%kind = guard_ball
+         case default                 ! a line, or a flat surface's line from in front
+            g%kind = guard_half_plane
+            g%normal = e%nk
+         end select
+      end if
+      if (e%shattered) g%kind = guard_always
+      if (.not. g%radius >= 0.0_wp) g%kind = guard_none
+   end function pair_guard
 
    !> The contact's geometry (figure 22), force split and virtual work at st.
    pure function pair_state(this, st) result(ps)
@@ -404,6 +458,7 @@ contains
       ! reaches FSW (never by a trial state); then a head through it is cut
       if (this%fsw > 0.0_wp .and. .not. this%shattered .and. ps%split%force >= this%fsw) then
          this%shattered = .true.
+         if (this%guard%kind /= guard_none) this%guard%kind = guard_always   ! broken glass carries nothing
          this%e_switch = stored_energy(this, aux)   ! the glass's stored energy, released
          result%restart = .true.
          call add_event(event_t(t=st%t, kind=event_shatter, index=this%i, value=ps%split%force, limit=this%fsw, &
