@@ -102,14 +102,16 @@ module contact_forces
    !> far_check's side where the bound does not decide it
    integer, parameter :: side_unknown = 2
 
-   !> Everything about the pair at one state.
+   !> Everything about the pair at one state (pair_eval sets every field;
+   !! no default values, which every evaluation would store first). The
+   !! generalized forces of unit forces along n and t, J_C^T n and J_C^T t,
+   !! are add_forces' own: no other caller reads them.
    type :: pair_state_t
       type(contact_feature_t) :: f             !< the body point (f.1) in the interior frame
       type(contact_state_t) :: cs
       type(chain_split_t) :: split
-      real(wp) :: c_in(2) = 0.0_wp, n_in(2) = 0.0_wp, t_in(2) = 0.0_wp   !< C, n, t, inertial
-      real(wp) :: b_n(n_dof) = 0.0_wp, b_t(n_dof) = 0.0_wp  !< J_C^T n, J_C^T t: of unit forces
-      real(wp) :: p_t = 0.0_wp                              !< P', the friction force
+      real(wp) :: c_in(2), n_in(2), t_in(2)    !< C, n, t, inertial
+      real(wp) :: p_t                          !< P', the friction force
    end type pair_state_t
 
 contains
@@ -225,11 +227,13 @@ contains
       if (.not. g%radius >= 0.0_wp) g%kind = guard_none
    end function pair_guard
 
-   !> The contact's geometry (figure 22), force split and virtual work at st.
-   pure function pair_state(this, st) result(ps)
+   !> The contact's geometry (figure 22), force split and friction at st
+   !! (a subroutine: the state is written in place, not copied out of a
+   !! function's result; the virtual work is add_forces').
+   pure subroutine pair_eval(this, st, ps)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
-      type(pair_state_t) :: ps
+      type(pair_state_t), intent(out) :: ps
       type(branch_point_t) :: bp
       real(wp) :: c, s, gate(3)
       ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
@@ -261,14 +265,12 @@ contains
       ps%c_in = st%vehicle%pos(1:2) + [c*ps%cs%c(1) + s*ps%cs%c(2), -s*ps%cs%c(1) + c*ps%cs%c(2)]
       ps%n_in = [c*ps%cs%n(1) + s*ps%cs%n(2), -s*ps%cs%n(1) + c*ps%cs%n(2)]
       ps%t_in = [c*ps%cs%t(1) + s*ps%cs%t(2), -s*ps%cs%t(1) + c*ps%cs%t(2)]
+      ps%p_t = 0.0_wp
       if (.not. ps%split%force > 0.0_wp) return
-      ps%b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
       ! friction (f.3, f.4, D-C18a): P' = mu P along the sliding velocity v_T
       ! once it reaches xi, in proportion to it below
       ps%p_t = this%mu*ps%split%force*ramp_of(this%xi, ps%cs%v_t)
-      if (abs(ps%p_t) > 0.0_wp) ps%b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, &
-                                                                 ps%t_in)
-   end function pair_state
+   end subroutine pair_eval
 
    !> Whether the pair is slack at st for certain, by a bound that needs
    !! neither trigonometry nor velocities: the body point's circle (for the
@@ -387,8 +389,6 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: extra_rate(:), aux_rate(:)
-      type(pair_state_t) :: ps
-      integer :: q
       associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
       end associate
       if (this%exit_far) then
@@ -397,7 +397,20 @@ contains
             return
          end if
       end if
-      ps = pair_state(this, st)
+      call pair_add_full(this, st, b, aux_rate)
+   end subroutine pair_add_forces
+
+   !> add_forces' full path (its own procedure: the pair's state is not
+   !! set up on the early exit).
+   pure subroutine pair_add_full(this, st, b, aux_rate)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: aux_rate(:)
+      type(pair_state_t) :: ps
+      real(wp) :: b_n(n_dof), b_t(n_dof)
+      integer :: q
+      call pair_eval(this, st, ps)
       if (ps%split%status /= split_ok) then
          aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)
          return
@@ -407,14 +420,18 @@ contains
       end do
       aux_rate(this%aux_friction:this%aux_supplied) = 0.0_wp
       if (.not. ps%split%force > 0.0_wp) return
-      b = b + ps%split%force*ps%b_n - ps%p_t*ps%b_t
+      ! J_C^T n and J_C^T t, the generalized forces of unit forces at C (D-C23)
+      b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
+      b_t = 0.0_wp
+      if (abs(ps%p_t) > 0.0_wp) b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%t_in)
+      b = b + ps%split%force*b_n - ps%p_t*b_t
       aux_rate(this%aux_friction) = ps%p_t*ps%cs%v_t
       ! the vehicle's work (C.6 with E6-2, docs/contacts.md 4.7: the surface moves with it):
       ! the force's power at the body's material point plus what the surface
       ! absorbs and dissipates
-      aux_rate(this%aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(ps%b_n, st%zdot)) &
-                               - ps%p_t*(dot_product(ps%b_t, st%zdot) - ps%cs%v_t)
-   end subroutine pair_add_forces
+      aux_rate(this%aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(b_n, st%zdot)) &
+                               - ps%p_t*(dot_product(b_t, st%zdot) - ps%cs%v_t)
+   end subroutine pair_add_full
 
    !> The loading cycle (figure 18) from the accepted deformation and rate;
    !! a changed law restarts the stepper.
@@ -423,10 +440,9 @@ contains
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
-      type(pair_state_t) :: ps
-      logical :: changed, far
-      integer :: q, side
-      associate (u1 => size(extra) + size(aux))
+      logical :: far
+      integer :: side
+      associate (u1 => size(extra))
       end associate
       if (this%exit_far) then
          ! slack for certain (pair_far) with its side decided: what the full
@@ -443,7 +459,20 @@ contains
             return
          end if
       end if
-      ps = pair_state(this, st)
+      call pair_accept_full(this, st, aux, result)
+   end subroutine pair_accept
+
+   !> accept's full path (its own procedure: the pair's state is not set
+   !! up on the short path).
+   subroutine pair_accept_full(this, st, aux, result)
+      class(contact_pair_effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: aux(:)
+      type(accept_result_t), intent(inout) :: result
+      type(pair_state_t) :: ps
+      logical :: changed
+      integer :: q, side
+      call pair_eval(this, st, ps)
       ! D-C16a: the side of the surface's line the point is on, where it is decided
       side = front_side(ps%f, this%surface, this%tk)
       if (side /= 0) this%behind = side < 0
@@ -482,7 +511,7 @@ contains
          result%n_events = result%n_events + 1
          result%events(result%n_events) = ev
       end subroutine add_event
-   end subroutine pair_accept
+   end subroutine pair_accept_full
 
    pure subroutine pair_energy(this, st, extra, aux, e)
       class(contact_pair_effect_t), intent(in) :: this
@@ -529,10 +558,10 @@ contains
       integer :: q
       this%e_initial = 0.0_wp
       if (this%surface%kind == surface_flat) then
-         ps = pair_state(this, st)
+         call pair_eval(this, st, ps)
          this%behind = dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp
       end if
-      ps = pair_state(this, st)
+      call pair_eval(this, st, ps)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
       do q = 1, this%n_elem
          this%e_initial(q) = curve_energy(this%law(q)%curve, ps%split%x(q))
@@ -560,7 +589,7 @@ contains
       type(pair_state_t) :: ps
       associate (u1 => size(extra) + size(aux))
       end associate
-      ps = pair_state(this, st)
+      call pair_eval(this, st, ps)
       if (.not. ps%split%force > 0.0_wp) return
       ! an arc centred on a joint (hip, shoulder, elbow, knee) passes its load on
       ! through the joint: no load across a bone (docs/contacts.md 4.3)
@@ -600,11 +629,11 @@ contains
       real(wp) :: e(n_energy_kinds)
       integer :: first
       if (item == 1) then
-         ps = pair_state(this, st)
+         call pair_eval(this, st, ps)
          values = [ps%split%force, ps%p_t, ps%cs%delta, ps%cs%delta_dot, ps%cs%v_t, ps%cs%pos]
       else if (item == 3) then
          ! the elements in series: [body,] surface [, backing] (figures 23-25)
-         ps = pair_state(this, st)
+         call pair_eval(this, st, ps)
          values = 0.0_wp
          first = merge(2, 1, this%has_body)
          if (this%has_body) values(1) = ps%split%x(1)
@@ -633,7 +662,7 @@ contains
       associate (u1 => size(extra) + size(aux))
       end associate
       text = ''
-      ps = pair_state(this, st)
+      call pair_eval(this, st, ps)
       if (ps%split%status /= split_ok) text = trim(this%title)//': ' &
          //chain_split_text(ps%split, ps%cs%delta, ps%cs%delta_dot, this%max_iter)
    end function pair_failure_text
