@@ -33,8 +33,8 @@ module ode_system
          import :: ode_system_t, wp
          class(ode_system_t), intent(inout) :: this
          real(wp), intent(in) :: t
-         real(wp), intent(in) :: y(:)
-         real(wp), intent(out) :: dydt(:)
+         real(wp), intent(in), contiguous :: y(:)
+         real(wp), intent(out), contiguous :: dydt(:)
          integer, intent(out) :: status
       end subroutine rhs_interface
    end interface
@@ -69,7 +69,7 @@ module ode_system
          class(stepper_t), intent(inout) :: this
          class(ode_system_t), intent(inout) :: sys
          real(wp), intent(in) :: t0
-         real(wp), intent(in) :: y0(:)
+         real(wp), intent(in), contiguous :: y0(:)
          integer, intent(out) :: status
       end subroutine init_interface
 
@@ -80,7 +80,7 @@ module ode_system
          class(stepper_t), intent(inout) :: this
          class(ode_system_t), intent(inout) :: sys
          real(wp), intent(inout) :: t
-         real(wp), intent(inout) :: y(:)
+         real(wp), intent(inout), contiguous :: y(:)
          real(wp), intent(in) :: t_limit
          integer, intent(out) :: status
       end subroutine advance_interface
@@ -98,7 +98,7 @@ module ode_system
          class(stepper_t), intent(inout) :: this
          class(ode_system_t), intent(inout) :: sys
          real(wp), intent(in) :: t
-         real(wp), intent(in) :: y(:)
+         real(wp), intent(in), contiguous :: y(:)
          integer, intent(out) :: status
       end subroutine restart_interface
    end interface

@@ -218,9 +218,9 @@ contains
    pure subroutine occupant_forces(occ, st, y, b, dydt, counts)
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
-      real(wp), intent(in) :: y(:)
+      real(wp), intent(in), contiguous :: y(:)
       real(wp), intent(out) :: b(n_dof)
-      real(wp), intent(inout) :: dydt(:)
+      real(wp), intent(inout), contiguous :: dydt(:)
       integer(i8), intent(inout) :: counts(:)
       integer :: n, k, xo, ao
       logical :: inert
@@ -250,8 +250,8 @@ contains
    pure subroutine occupant_rhs(occ, st, y, dydt, counts, info)
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
-      real(wp), intent(in) :: y(:)
-      real(wp), intent(inout) :: dydt(:)
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(inout), contiguous :: dydt(:)
       integer(i8), intent(inout) :: counts(:)
       integer, intent(out) :: info
       real(wp) :: b(n_dof), zdd(n_dof)
