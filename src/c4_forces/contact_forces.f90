@@ -21,7 +21,7 @@ module contact_forces
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
       energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
       max_events_per_step, event_shatter, event_cut, proximity_guard_t, guard_none, guard_ball, &
-      guard_half_plane, guard_capsule, guard_always
+      guard_half_plane, guard_slab, guard_capsule, guard_always
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
@@ -177,18 +177,21 @@ contains
       e%guard = pair_guard(e)
    end function contact_pair_effect
 
-   !> The pair's proximity guard (D-C29, effect_base): the cases of
-   !! far_check's bound that need no memory, with the same body point, the
-   !! same reach less far_check's margin, and twice that margin (so where
-   !! the guard holds far_check's bound holds, whatever the roundings of the
-   !! two computations: a few ulps of the coordinates' size, against a
-   !! margin of 1e-9 of it) - the point's circle farther than its radius
-   !! from a circle or a point, in front of a line or of a flat surface's
-   !! line (far whatever the side it came from and whatever its extent), the
-   !! shin's capsule from the panel's edge. Where add_forces would take its
-   !! early exit for the other reasons (a flat surface beyond its extent or
-   !! behind, broken glass) the pair is dispatched as before. none for a
-   !! radius below zero, which would turn the bound's margin round.
+   !> The pair's proximity guard (D-C29, effect_base): cases of
+   !! far_check's bound, with the same body point, the same reach less
+   !! far_check's margin, and twice that margin (so where the guard holds
+   !! far_check's bound holds, whatever the roundings of the two
+   !! computations: a few ulps of the coordinates' size, against a margin
+   !! of 1e-9 of it) - the point's circle farther than its radius from a
+   !! circle or a point, in front of a line or of a flat surface's line
+   !! (far whatever its extent), or, once the point has come from behind a
+   !! flat surface (the memory behind, D-C16a), off its line on either side
+   !! (a slab: accept and pair_set_initial keep the guard with the side);
+   !! the shin's capsule from the panel's edge. Where add_forces would take
+   !! its early exit for the other reason (a flat surface beyond its extent,
+   !! the point behind it but not come from behind) the pair is dispatched
+   !! as before. Broken glass: always. none for a radius below zero, which
+   !! would turn the bound's margin round.
    pure function pair_guard(e) result(g)
       type(contact_pair_effect_t), intent(in) :: e
       type(proximity_guard_t) :: g
@@ -218,8 +221,11 @@ contains
             g%radius = g%radius + 0.5_wp*e%surface%d
          case (surface_point)
             g%kind = guard_ball
-         case default                 ! a line, or a flat surface's line from in front
+         case (surface_line)
             g%kind = guard_half_plane
+            g%normal = e%nk
+         case default                 ! a flat surface's line: in front, or either side if come from behind
+            g%kind = merge(guard_slab, guard_half_plane, e%behind)
             g%normal = e%nk
          end select
       end if
@@ -433,6 +439,16 @@ contains
                                - ps%p_t*(dot_product(b_t, st%zdot) - ps%cs%v_t)
    end subroutine pair_add_full
 
+   !> D-C16a's memory of a flat surface's pair, and its proximity guard
+   !! with it (D-C29: a slab once come from behind, else a half-plane).
+   pure subroutine set_behind(this, behind)
+      type(contact_pair_effect_t), intent(inout) :: this
+      logical, intent(in) :: behind
+      this%behind = behind
+      if (this%guard%kind == guard_half_plane .or. this%guard%kind == guard_slab) &
+         this%guard%kind = merge(guard_slab, guard_half_plane, behind .and. this%surface%kind == surface_flat)
+   end subroutine set_behind
+
    !> The loading cycle (figure 18) from the accepted deformation and rate;
    !! a changed law restarts the stepper.
    subroutine pair_accept(this, st, extra, aux, result)
@@ -449,7 +465,7 @@ contains
          ! path below does at no force, without the full geometry
          call far_check(this, st, far, side)
          if (far .and. side /= side_unknown) then
-            if (side /= 0) this%behind = side < 0       ! D-C16a, as front_side
+            if (side /= 0) call set_behind(this, side < 0)   ! D-C16a, as front_side
             if (this%undesired) then                     ! D-C28: not loaded
                this%was_loaded = .false.
                this%accepted_once = .true.
@@ -475,7 +491,7 @@ contains
       call pair_eval(this, st, ps)
       ! D-C16a: the side of the surface's line the point is on, where it is decided
       side = front_side(ps%f, this%surface, this%tk)
-      if (side /= 0) this%behind = side < 0
+      if (side /= 0) call set_behind(this, side < 0)
       ! Table 9 (C.7): coming into contact (D-C28)
       if (this%undesired) then
          if (this%accepted_once .and. .not. this%was_loaded .and. ps%split%force > 0.0_wp) &
@@ -559,7 +575,7 @@ contains
       this%e_initial = 0.0_wp
       if (this%surface%kind == surface_flat) then
          call pair_eval(this, st, ps)
-         this%behind = dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp
+         call set_behind(this, dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp)
       end if
       call pair_eval(this, st, ps)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return

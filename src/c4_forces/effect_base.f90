@@ -42,7 +42,7 @@ module effect_base
    public :: event_dislocation_low, event_dislocation_high, event_kind_name, max_events_per_step
    public :: event_tension, event_compression, event_shear, event_undesired, event_shatter, event_cut
    public :: point_force_t, point_force_list_t, point_force_add
-   public :: proximity_guard_t, guard_none, guard_ball, guard_half_plane, guard_capsule, guard_always
+   public :: proximity_guard_t, guard_none, guard_ball, guard_half_plane, guard_slab, guard_capsule, guard_always
    public :: guard_rel_margin, guard_big, guard_holds
 
    !> Kinds of energy an effect reports (C.6): stored in a conservative
@@ -103,11 +103,12 @@ module effect_base
    !> Kinds of proximity guard: none (always dispatched); the body point
    !! q farther than the reach from the centre (ball); farther than the
    !! reach in front of the line through the centre, along the unit
-   !! normal (half-plane); the segment from q to q + along e (the axis
-   !! in the interior frame) farther than the reach from the centre
+   !! normal (half-plane); farther than the reach from that line on either
+   !! side (slab); the segment from the joint to q (along e, the axis in
+   !! the interior frame) farther than the reach from the centre
    !! (capsule); inert at every state (always).
    integer, parameter :: guard_none = 0, guard_ball = 1, guard_half_plane = 2, guard_capsule = 3, &
-      guard_always = 4
+      guard_always = 4, guard_slab = 5
    !> The guard's margin, guard_rel_margin (1 + size + st%joint_size(seg)),
    !! added to its reach; a guard holds only where st%rate_size and
    !! size + st%joint_size(seg) are at most guard_big (not so NaN).
@@ -115,7 +116,7 @@ module effect_base
 
    !> A proximity guard (see the module's header). The body point is
    !! q = st%frame_joint(:, seg) + along st%frame_axis(:, seg) (ball,
-   !! half-plane), the capsule's axis st%frame_joint(:, seg) to that q; the
+   !! half-plane, slab), the capsule's axis st%frame_joint(:, seg) to that q; the
    !! reach is radius + m, m = guard_rel_margin (1 + size +
    !! st%joint_size(seg)). An effect declares one only where its holding
    !! implies, whatever the roundings of the two computations, the effect's
@@ -236,6 +237,9 @@ contains
       case (guard_half_plane)
          q = st%frame_joint(:, g%seg) + g%along*st%frame_axis(:, g%seg) - g%centre
          holds = q(1)*g%normal(1) + q(2)*g%normal(2) > reach
+      case (guard_slab)
+         q = st%frame_joint(:, g%seg) + g%along*st%frame_axis(:, g%seg) - g%centre
+         holds = abs(q(1)*g%normal(1) + q(2)*g%normal(2)) > reach
       case (guard_capsule)
          ! the centre's distance to the segment from the joint to q
          v = g%along*st%frame_axis(:, g%seg)
