@@ -29,6 +29,9 @@ module ode_system
 
    abstract interface
       !> status: 0 when f could be evaluated, otherwise a code the system explains.
+      !! y and dydt are contiguous (as every integrator's arrays are; the
+      !! steppers' y too): the system passes its effects' slices of them
+      !! with a stride of one (docs/performance.md, fourth round).
       subroutine rhs_interface(this, t, y, dydt, status)
          import :: ode_system_t, wp
          class(ode_system_t), intent(inout) :: this
