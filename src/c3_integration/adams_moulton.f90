@@ -78,7 +78,7 @@ contains
       class(am_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t0
-      real(wp), intent(in) :: y0(:)
+      real(wp), intent(in), contiguous :: y0(:)
       integer, intent(out) :: status
       integer :: n
       n = size(y0)
@@ -96,7 +96,7 @@ contains
       class(am_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
-      real(wp), intent(in) :: y(:)
+      real(wp), intent(in), contiguous :: y(:)
       integer, intent(out) :: status
       status = step_bad_setting
       if (.not. allocated(this%f)) return
@@ -112,7 +112,7 @@ contains
       class(am_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
-      real(wp), intent(in) :: y(:)
+      real(wp), intent(in), contiguous :: y(:)
       integer, intent(out) :: status
       this%t0 = t
       this%n = 0
@@ -134,7 +134,7 @@ contains
       class(am_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(inout) :: t
-      real(wp), intent(inout) :: y(:)
+      real(wp), intent(inout), contiguous :: y(:)
       real(wp), intent(in) :: t_limit
       integer, intent(out) :: status
       real(wp) :: h, t_new
@@ -227,8 +227,9 @@ contains
       end function correct
 
       logical function evaluate(te, ye, fe)
-         real(wp), intent(in) :: te, ye(:)
-         real(wp), intent(out) :: fe(:)
+         real(wp), intent(in) :: te
+         real(wp), intent(in), contiguous :: ye(:)
+         real(wp), intent(out), contiguous :: fe(:)
          call sys%rhs(te, ye, fe, this%rhs_status)
          this%stats%evaluations = this%stats%evaluations + 1
          evaluate = this%rhs_status == 0

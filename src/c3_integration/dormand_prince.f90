@@ -55,7 +55,7 @@ contains
       class(dopri_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t0
-      real(wp), intent(in) :: y0(:)
+      real(wp), intent(in), contiguous :: y0(:)
       integer, intent(out) :: status
       integer :: n, i
       n = size(y0)
@@ -74,7 +74,7 @@ contains
       class(dopri_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
-      real(wp), intent(in) :: y(:)
+      real(wp), intent(in), contiguous :: y(:)
       integer, intent(out) :: status
       status = step_bad_setting
       if (.not. allocated(this%f)) return
@@ -89,7 +89,7 @@ contains
       class(dopri_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
-      real(wp), intent(in) :: y(:)
+      real(wp), intent(in), contiguous :: y(:)
       integer, intent(out) :: status
       this%err_old = dopri_err_old_initial
       call sys%rhs(t, y, this%f, this%rhs_status)
@@ -102,7 +102,7 @@ contains
       class(dopri_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(inout) :: t
-      real(wp), intent(inout) :: y(:)
+      real(wp), intent(inout), contiguous :: y(:)
       real(wp), intent(in) :: t_limit
       integer, intent(out) :: status
       real(wp) :: h, err, fac, h_floor
@@ -201,8 +201,9 @@ contains
       end subroutine try_step
 
       logical function evaluate(te, ye, fe)
-         real(wp), intent(in) :: te, ye(:)
-         real(wp), intent(out) :: fe(:)
+         real(wp), intent(in) :: te
+         real(wp), intent(in), contiguous :: ye(:)
+         real(wp), intent(out), contiguous :: fe(:)
          call sys%rhs(te, ye, fe, this%rhs_status)
          this%stats%evaluations = this%stats%evaluations + 1
          evaluate = this%rhs_status == 0

@@ -29,12 +29,15 @@ module ode_system
 
    abstract interface
       !> status: 0 when f could be evaluated, otherwise a code the system explains.
+      !! y and dydt are contiguous (as every integrator's arrays are; the
+      !! steppers' y too): the system passes its effects' slices of them
+      !! with a stride of one (docs/performance.md, fourth round).
       subroutine rhs_interface(this, t, y, dydt, status)
          import :: ode_system_t, wp
          class(ode_system_t), intent(inout) :: this
          real(wp), intent(in) :: t
-         real(wp), intent(in) :: y(:)
-         real(wp), intent(out) :: dydt(:)
+         real(wp), intent(in), contiguous :: y(:)
+         real(wp), intent(out), contiguous :: dydt(:)
          integer, intent(out) :: status
       end subroutine rhs_interface
    end interface
@@ -69,7 +72,7 @@ module ode_system
          class(stepper_t), intent(inout) :: this
          class(ode_system_t), intent(inout) :: sys
          real(wp), intent(in) :: t0
-         real(wp), intent(in) :: y0(:)
+         real(wp), intent(in), contiguous :: y0(:)
          integer, intent(out) :: status
       end subroutine init_interface
 
@@ -80,7 +83,7 @@ module ode_system
          class(stepper_t), intent(inout) :: this
          class(ode_system_t), intent(inout) :: sys
          real(wp), intent(inout) :: t
-         real(wp), intent(inout) :: y(:)
+         real(wp), intent(inout), contiguous :: y(:)
          real(wp), intent(in) :: t_limit
          integer, intent(out) :: status
       end subroutine advance_interface
@@ -98,7 +101,7 @@ module ode_system
          class(stepper_t), intent(inout) :: this
          class(ode_system_t), intent(inout) :: sys
          real(wp), intent(in) :: t
-         real(wp), intent(in) :: y(:)
+         real(wp), intent(in), contiguous :: y(:)
          integer, intent(out) :: status
       end subroutine restart_interface
    end interface

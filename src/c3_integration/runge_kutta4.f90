@@ -31,7 +31,7 @@ contains
       class(rk4_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t0
-      real(wp), intent(in) :: y0(:)
+      real(wp), intent(in), contiguous :: y0(:)
       integer, intent(out) :: status
       integer :: n
       n = size(y0)
@@ -46,7 +46,7 @@ contains
       class(rk4_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
-      real(wp), intent(in) :: y(:)
+      real(wp), intent(in), contiguous :: y(:)
       integer, intent(out) :: status
       status = step_bad_setting
       if (.not. allocated(this%f)) return
@@ -61,7 +61,7 @@ contains
       class(rk4_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
-      real(wp), intent(in) :: y(:)
+      real(wp), intent(in), contiguous :: y(:)
       integer, intent(out) :: status
       this%t0 = t
       this%n = 0
@@ -76,7 +76,7 @@ contains
       class(rk4_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(inout) :: t
-      real(wp), intent(inout) :: y(:)
+      real(wp), intent(inout), contiguous :: y(:)
       real(wp), intent(in) :: t_limit
       integer, intent(out) :: status
       real(wp) :: h, t_new
@@ -120,8 +120,9 @@ contains
       status = step_ok
    contains
       logical function evaluate(te, ye, fe)
-         real(wp), intent(in) :: te, ye(:)
-         real(wp), intent(out) :: fe(:)
+         real(wp), intent(in) :: te
+         real(wp), intent(in), contiguous :: ye(:)
+         real(wp), intent(out), contiguous :: fe(:)
          call sys%rhs(te, ye, fe, this%rhs_status)
          this%stats%evaluations = this%stats%evaluations + 1
          evaluate = this%rhs_status == 0

@@ -20,7 +20,8 @@ module contact_forces
    use model, only: body_section_t, n_dof
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
       energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
-      max_events_per_step, event_shatter, event_cut
+      max_events_per_step, event_shatter, event_cut, proximity_guard_t, guard_none, guard_ball, &
+      guard_half_plane, guard_slab, guard_capsule, guard_always
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
@@ -34,7 +35,7 @@ module contact_forces
    implicit none
    private
 
-   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far
+   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far, pair_guard
 
 
    type, extends(effect_t) :: contact_pair_effect_t
@@ -78,7 +79,9 @@ module contact_forces
       integer :: max_iter = 60
       !> add_forces returns at once, and accept takes its short path, where
       !! pair_far proves the pair slack (.false.: always the full path, for
-      !! the tests that compare the two)
+      !! the tests that compare the two; an occupant's dispatch skips the
+      !! pair where its proximity guard holds, D-C29, unless the guard's
+      !! kind is set to guard_none too)
       logical :: exit_far = .true.
       !> the surface's e(psi) (for contact_check and front_side too: the
       !! same library call on the same angle, taken once) and normal, and for
@@ -99,14 +102,16 @@ module contact_forces
    !> far_check's side where the bound does not decide it
    integer, parameter :: side_unknown = 2
 
-   !> Everything about the pair at one state.
+   !> Everything about the pair at one state (pair_eval sets every field;
+   !! no default values, which every evaluation would store first). The
+   !! generalized forces of unit forces along n and t, J_C^T n and J_C^T t,
+   !! are add_forces' own: no other caller reads them.
    type :: pair_state_t
       type(contact_feature_t) :: f             !< the body point (f.1) in the interior frame
       type(contact_state_t) :: cs
       type(chain_split_t) :: split
-      real(wp) :: c_in(2) = 0.0_wp, n_in(2) = 0.0_wp, t_in(2) = 0.0_wp   !< C, n, t, inertial
-      real(wp) :: b_n(n_dof) = 0.0_wp, b_t(n_dof) = 0.0_wp  !< J_C^T n, J_C^T t: of unit forces
-      real(wp) :: p_t = 0.0_wp                              !< P', the friction force
+      real(wp) :: c_in(2), n_in(2), t_in(2)    !< C, n, t, inertial
+      real(wp) :: p_t                          !< P', the friction force
    end type pair_state_t
 
 contains
@@ -169,13 +174,72 @@ contains
       e%aux_friction = n_loading_aux*e%n_elem + 1
       e%aux_supplied = e%aux_friction + 1
       e%n_aux = e%aux_supplied
+      e%guard = pair_guard(e)
    end function contact_pair_effect
 
-   !> The contact's geometry (figure 22), force split and virtual work at st.
-   pure function pair_state(this, st) result(ps)
+   !> The pair's proximity guard (D-C29, effect_base): cases of
+   !! far_check's bound, with the same body point, the same reach less
+   !! far_check's margin, and twice that margin (so where the guard holds
+   !! far_check's bound holds, whatever the roundings of the two
+   !! computations: a few ulps of the coordinates' size, against a margin
+   !! of 1e-9 of it) - the point's circle farther than its radius from a
+   !! circle or a point, in front of a line or of a flat surface's line
+   !! (far whatever its extent), or, once the point has come from behind a
+   !! flat surface (the memory behind, D-C16a), off its line on either side
+   !! (a slab: accept and pair_set_initial keep the guard with the side);
+   !! the shin's capsule from the panel's edge. Where add_forces would take
+   !! its early exit for the other reason (a flat surface beyond its extent,
+   !! the point behind it but not come from behind) the pair is dispatched
+   !! as before. Broken glass: always. none for a radius below zero, which
+   !! would turn the bound's margin round.
+   pure function pair_guard(e) result(g)
+      type(contact_pair_effect_t), intent(in) :: e
+      type(proximity_guard_t) :: g
+      real(wp) :: ext
+      g%seg = arc_segment(e%i)
+      g%size = e%size_sum
+      g%centre = e%surface%s
+      ext = 0.0_wp
+      select case (e%i)               ! the body point, as far_check places it
+      case (2, 3)
+         ext = abs(e%body%rho_arc(e%i))
+      case (4)
+         g%along = e%body%rho_arc(4)
+      case (6, 7, 8, 10)
+         g%along = e%body%length(g%seg)
+      case (9)
+         g%along = e%body%length(8)
+      end select
+      if (e%i == 9) then
+         g%kind = guard_capsule
+         g%radius = max(e%body%r_arc(7), e%body%r_arc(11))
+      else
+         g%radius = e%body%r_arc(e%i) + ext
+         select case (e%surface%kind)
+         case (surface_circle)
+            g%kind = guard_ball
+            g%radius = g%radius + 0.5_wp*e%surface%d
+         case (surface_point)
+            g%kind = guard_ball
+         case (surface_line)
+            g%kind = guard_half_plane
+            g%normal = e%nk
+         case default                 ! a flat surface's line: in front, or either side if come from behind
+            g%kind = merge(guard_slab, guard_half_plane, e%behind)
+            g%normal = e%nk
+         end select
+      end if
+      if (e%shattered) g%kind = guard_always
+      if (.not. g%radius >= 0.0_wp) g%kind = guard_none
+   end function pair_guard
+
+   !> The contact's geometry (figure 22), force split and friction at st
+   !! (a subroutine: the state is written in place, not copied out of a
+   !! function's result; the virtual work is add_forces').
+   pure subroutine pair_eval(this, st, ps)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
-      type(pair_state_t) :: ps
+      type(pair_state_t), intent(out) :: ps
       type(branch_point_t) :: bp
       real(wp) :: c, s, gate(3)
       ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
@@ -207,14 +271,12 @@ contains
       ps%c_in = st%vehicle%pos(1:2) + [c*ps%cs%c(1) + s*ps%cs%c(2), -s*ps%cs%c(1) + c*ps%cs%c(2)]
       ps%n_in = [c*ps%cs%n(1) + s*ps%cs%n(2), -s*ps%cs%n(1) + c*ps%cs%n(2)]
       ps%t_in = [c*ps%cs%t(1) + s*ps%cs%t(2), -s*ps%cs%t(1) + c*ps%cs%t(2)]
+      ps%p_t = 0.0_wp
       if (.not. ps%split%force > 0.0_wp) return
-      ps%b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
       ! friction (f.3, f.4, D-C18a): P' = mu P along the sliding velocity v_T
       ! once it reaches xi, in proportion to it below
       ps%p_t = this%mu*ps%split%force*ramp_of(this%xi, ps%cs%v_t)
-      if (abs(ps%p_t) > 0.0_wp) ps%b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, &
-                                                                 ps%t_in)
-   end function pair_state
+   end subroutine pair_eval
 
    !> Whether the pair is slack at st for certain, by a bound that needs
    !! neither trigonometry nor velocities: the body point's circle (for the
@@ -333,8 +395,6 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: extra_rate(:), aux_rate(:)
-      type(pair_state_t) :: ps
-      integer :: q
       associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
       end associate
       if (this%exit_far) then
@@ -343,7 +403,20 @@ contains
             return
          end if
       end if
-      ps = pair_state(this, st)
+      call pair_add_full(this, st, b, aux_rate)
+   end subroutine pair_add_forces
+
+   !> add_forces' full path (its own procedure: the pair's state is not
+   !! set up on the early exit).
+   pure subroutine pair_add_full(this, st, b, aux_rate)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: aux_rate(:)
+      type(pair_state_t) :: ps
+      real(wp) :: b_n(n_dof), b_t(n_dof)
+      integer :: q
+      call pair_eval(this, st, ps)
       if (ps%split%status /= split_ok) then
          aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)
          return
@@ -353,14 +426,28 @@ contains
       end do
       aux_rate(this%aux_friction:this%aux_supplied) = 0.0_wp
       if (.not. ps%split%force > 0.0_wp) return
-      b = b + ps%split%force*ps%b_n - ps%p_t*ps%b_t
+      ! J_C^T n and J_C^T t, the generalized forces of unit forces at C (D-C23)
+      b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
+      b_t = 0.0_wp
+      if (abs(ps%p_t) > 0.0_wp) b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%t_in)
+      b = b + ps%split%force*b_n - ps%p_t*b_t
       aux_rate(this%aux_friction) = ps%p_t*ps%cs%v_t
       ! the vehicle's work (C.6 with E6-2, docs/contacts.md 4.7: the surface moves with it):
       ! the force's power at the body's material point plus what the surface
       ! absorbs and dissipates
-      aux_rate(this%aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(ps%b_n, st%zdot)) &
-                               - ps%p_t*(dot_product(ps%b_t, st%zdot) - ps%cs%v_t)
-   end subroutine pair_add_forces
+      aux_rate(this%aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(b_n, st%zdot)) &
+                               - ps%p_t*(dot_product(b_t, st%zdot) - ps%cs%v_t)
+   end subroutine pair_add_full
+
+   !> D-C16a's memory of a flat surface's pair, and its proximity guard
+   !! with it (D-C29: a slab once come from behind, else a half-plane).
+   pure subroutine set_behind(this, behind)
+      type(contact_pair_effect_t), intent(inout) :: this
+      logical, intent(in) :: behind
+      this%behind = behind
+      if (this%guard%kind == guard_half_plane .or. this%guard%kind == guard_slab) &
+         this%guard%kind = merge(guard_slab, guard_half_plane, behind .and. this%surface%kind == surface_flat)
+   end subroutine set_behind
 
    !> The loading cycle (figure 18) from the accepted deformation and rate;
    !! a changed law restarts the stepper.
@@ -369,17 +456,16 @@ contains
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
-      type(pair_state_t) :: ps
-      logical :: changed, far
-      integer :: q, side
-      associate (u1 => size(extra) + size(aux))
+      logical :: far
+      integer :: side
+      associate (u1 => size(extra))
       end associate
       if (this%exit_far) then
          ! slack for certain (pair_far) with its side decided: what the full
          ! path below does at no force, without the full geometry
          call far_check(this, st, far, side)
          if (far .and. side /= side_unknown) then
-            if (side /= 0) this%behind = side < 0       ! D-C16a, as front_side
+            if (side /= 0) call set_behind(this, side < 0)   ! D-C16a, as front_side
             if (this%undesired) then                     ! D-C28: not loaded
                this%was_loaded = .false.
                this%accepted_once = .true.
@@ -389,10 +475,23 @@ contains
             return
          end if
       end if
-      ps = pair_state(this, st)
+      call pair_accept_full(this, st, aux, result)
+   end subroutine pair_accept
+
+   !> accept's full path (its own procedure: the pair's state is not set
+   !! up on the short path).
+   subroutine pair_accept_full(this, st, aux, result)
+      class(contact_pair_effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: aux(:)
+      type(accept_result_t), intent(inout) :: result
+      type(pair_state_t) :: ps
+      logical :: changed
+      integer :: q, side
+      call pair_eval(this, st, ps)
       ! D-C16a: the side of the surface's line the point is on, where it is decided
       side = front_side(ps%f, this%surface, this%tk)
-      if (side /= 0) this%behind = side < 0
+      if (side /= 0) call set_behind(this, side < 0)
       ! Table 9 (C.7): coming into contact (D-C28)
       if (this%undesired) then
          if (this%accepted_once .and. .not. this%was_loaded .and. ps%split%force > 0.0_wp) &
@@ -404,6 +503,7 @@ contains
       ! reaches FSW (never by a trial state); then a head through it is cut
       if (this%fsw > 0.0_wp .and. .not. this%shattered .and. ps%split%force >= this%fsw) then
          this%shattered = .true.
+         if (this%guard%kind /= guard_none) this%guard%kind = guard_always   ! broken glass carries nothing
          this%e_switch = stored_energy(this, aux)   ! the glass's stored energy, released
          result%restart = .true.
          call add_event(event_t(t=st%t, kind=event_shatter, index=this%i, value=ps%split%force, limit=this%fsw, &
@@ -427,7 +527,7 @@ contains
          result%n_events = result%n_events + 1
          result%events(result%n_events) = ev
       end subroutine add_event
-   end subroutine pair_accept
+   end subroutine pair_accept_full
 
    pure subroutine pair_energy(this, st, extra, aux, e)
       class(contact_pair_effect_t), intent(in) :: this
@@ -474,10 +574,10 @@ contains
       integer :: q
       this%e_initial = 0.0_wp
       if (this%surface%kind == surface_flat) then
-         ps = pair_state(this, st)
-         this%behind = dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp
+         call pair_eval(this, st, ps)
+         call set_behind(this, dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp)
       end if
-      ps = pair_state(this, st)
+      call pair_eval(this, st, ps)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
       do q = 1, this%n_elem
          this%e_initial(q) = curve_energy(this%law(q)%curve, ps%split%x(q))
@@ -505,7 +605,7 @@ contains
       type(pair_state_t) :: ps
       associate (u1 => size(extra) + size(aux))
       end associate
-      ps = pair_state(this, st)
+      call pair_eval(this, st, ps)
       if (.not. ps%split%force > 0.0_wp) return
       ! an arc centred on a joint (hip, shoulder, elbow, knee) passes its load on
       ! through the joint: no load across a bone (docs/contacts.md 4.3)
@@ -545,11 +645,11 @@ contains
       real(wp) :: e(n_energy_kinds)
       integer :: first
       if (item == 1) then
-         ps = pair_state(this, st)
+         call pair_eval(this, st, ps)
          values = [ps%split%force, ps%p_t, ps%cs%delta, ps%cs%delta_dot, ps%cs%v_t, ps%cs%pos]
       else if (item == 3) then
          ! the elements in series: [body,] surface [, backing] (figures 23-25)
-         ps = pair_state(this, st)
+         call pair_eval(this, st, ps)
          values = 0.0_wp
          first = merge(2, 1, this%has_body)
          if (this%has_body) values(1) = ps%split%x(1)
@@ -578,7 +678,7 @@ contains
       associate (u1 => size(extra) + size(aux))
       end associate
       text = ''
-      ps = pair_state(this, st)
+      call pair_eval(this, st, ps)
       if (ps%split%status /= split_ok) text = trim(this%title)//': ' &
          //chain_split_text(ps%split, ps%cs%delta, ps%cs%delta_dot, this%max_iter)
    end function pair_failure_text

@@ -136,8 +136,8 @@ contains
    subroutine system_rhs(this, t, y, dydt, status)
       class(crash_system_t), intent(inout) :: this
       real(wp), intent(in) :: t
-      real(wp), intent(in) :: y(:)
-      real(wp), intent(out) :: dydt(:)
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out), contiguous :: dydt(:)
       integer, intent(out) :: status
       type(body_state_t) :: st
       integer :: o, info

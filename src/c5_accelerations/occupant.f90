@@ -7,7 +7,7 @@ module occupant
    use kinds, only: wp, i8
    use model, only: model_t, body_section_t, n_dof, n_seg, solver_dense
    use preliminary, only: body_constants_t, body_constants, initial_state
-   use effect_base, only: effect_t, effect_slot_t, body_state_t, point_force_list_t
+   use effect_base, only: effect_t, effect_slot_t, body_state_t, point_force_list_t, guard_none, guard_holds
    use effect_factory, only: build_effects
    use body_kinematics, only: joint_positions
    use vehicle_motion, only: vehicle_motion_t, vehicle_state_at
@@ -82,8 +82,8 @@ contains
          if (e%n_aux_start > 0) call layout%reserve(trim(occ%label)//': '//trim(e%name)//' search starts', &
                                                     e%n_aux_start, j, error_controlled=.false.)
          occ%needs_vehicle = occ%needs_vehicle .or. e%needs_vehicle
-         occ%needs_joints = occ%needs_joints .or. e%needs_joints
-         occ%needs_vehicle = occ%needs_vehicle .or. e%needs_joints   ! (occupant_frame reads it)
+         occ%needs_joints = occ%needs_joints .or. e%needs_joints .or. e%guard%kind /= guard_none
+         occ%needs_vehicle = occ%needs_vehicle .or. occ%needs_joints   ! (occupant_frame reads it)
          if (.not. allocated(occ%evaluated)) allocate (occ%evaluated(0))
          if (.not. allocated(occ%remembering)) allocate (occ%remembering(0))
          if (e%acts .or. e%n_aux > 0 .or. e%n_extra > 0) occ%evaluated = [(occ%evaluated(j), j=1, size(occ%evaluated)), k]
@@ -211,23 +211,34 @@ contains
 
    !> b = C - G + J + S + B + Q (C.4): the sum of the evaluated effects'
    !! generalized forces, and the rates of their own quantities into dydt.
-   !! counts(k) counts the evaluations of effect k.
+   !! counts(k) counts the evaluations of effect k. An effect whose
+   !! proximity guard holds at st (effect_base; D-C29) is inert there: its
+   !! rates are zero and b is left as it is, what its add_forces would
+   !! give, without the dispatch; it is counted all the same.
    pure subroutine occupant_forces(occ, st, y, b, dydt, counts)
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
-      real(wp), intent(in) :: y(:)
+      real(wp), intent(in), contiguous :: y(:)
       real(wp), intent(out) :: b(n_dof)
-      real(wp), intent(inout) :: dydt(:)
+      real(wp), intent(inout), contiguous :: dydt(:)
       integer(i8), intent(inout) :: counts(:)
       integer :: n, k, xo, ao
+      logical :: inert
       b = 0.0_wp
       do n = 1, size(occ%evaluated)
          k = occ%evaluated(n)
          xo = occ%extra_offset(k)
          ao = occ%aux_offset(k)
          associate (e => occ%effects(k)%e)
-            call e%add_forces(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), b, &
-                              dydt(xo + 1:xo + 2*e%n_extra), dydt(ao + 1:ao + e%n_aux))
+            inert = .false.
+            if (e%guard%kind /= guard_none) inert = guard_holds(e%guard, st)
+            if (inert) then
+               dydt(xo + 1:xo + 2*e%n_extra) = 0.0_wp
+               dydt(ao + 1:ao + e%n_aux) = 0.0_wp
+            else
+               call e%add_forces(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), b, &
+                                 dydt(xo + 1:xo + 2*e%n_extra), dydt(ao + 1:ao + e%n_aux))
+            end if
          end associate
          counts(k) = counts(k) + 1
       end do
@@ -239,8 +250,8 @@ contains
    pure subroutine occupant_rhs(occ, st, y, dydt, counts, info)
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
-      real(wp), intent(in) :: y(:)
-      real(wp), intent(inout) :: dydt(:)
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(inout), contiguous :: dydt(:)
       integer(i8), intent(inout) :: counts(:)
       integer, intent(out) :: info
       real(wp) :: b(n_dof), zdd(n_dof)
