@@ -452,9 +452,10 @@ contains
          //'9 visor, 10 column, 11 abdomen, 12 chest, 13 face, 14 shoulder. MU and XI: Coulomb friction ' &
          //'against the material: for the seat (material 1) all of it once the sliding velocity reaches XI, ' &
          //'none below; for the contacts all of it from XI on and in proportion to the sliding velocity ' &
-         //'below (docs/contacts.md D-C18a), so XI should exceed mu P DT / m, the change of sliding velocity ' &
-         //'one step of the friction makes on the body part, or the friction is stiff for the step ' &
-         //'(docs/interiors.md 6). G: ratio of residual to maximum deformation; R: ratio of the energy ' &
+         //'below (docs/contacts.md D-C18a); XI should exceed mu P DT / m, the change of sliding velocity ' &
+         //'one step of the friction makes on the body part: under a fixed step (NINT 1, 2) a narrower ' &
+         //'ramp is widened to what the step can integrate, and the listing says so (D-C18b). G: ratio ' &
+         //'of residual to maximum deformation; R: ratio of the energy ' &
          //'conserved to that absorbed (recurrent loading, C.4.e figure 18); R must not exceed 1 - G ' &
          //'(docs/loading.md). CURVE: the number k of its loading curve (*LOADPOLY or *LOADTABLE, as ' &
          //'NLOAD selects), 0 for none. A material without a card ' &

@@ -20,7 +20,7 @@ module contact_forces
    use model, only: body_section_t, n_dof
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
       energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
-      max_events_per_step, event_shatter, event_cut, proximity_guard_t, guard_none, guard_ball, &
+      max_events_per_step, event_shatter, event_cut, event_ramp_widened, proximity_guard_t, guard_none, guard_ball, &
       guard_half_plane, guard_slab, guard_capsule, guard_always
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
@@ -35,7 +35,7 @@ module contact_forces
    implicit none
    private
 
-   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far, pair_guard
+   public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far, free_point_mass, pair_guard
 
 
    type, extends(effect_t) :: contact_pair_effect_t
@@ -61,6 +61,12 @@ module contact_forces
       !> the outer material's friction (D-C22): mu P, reached at the sliding
       !! velocity xi and in proportion to it below (D-C18a)
       real(wp) :: mu = 0.0_wp, xi = 0.0_wp
+      !> D-C18b: under a fixed step dt_fixed (0: an adaptive one) the ramp is
+      !! never steeper than ramp_steps m_free/dt_fixed, m_free the contact
+      !! point's effective mass as a free segment (a lower bound of the jointed
+      !! body's); widened says it has been (reported once, an event)
+      real(wp) :: dt_fixed = 0.0_wp, m_free = huge(1.0_wp)
+      logical :: widened = .false.
       !> Table 9: a contact the end test NEND = 2 watches; it counts when the
       !! pair comes into contact at an accepted step, not when it is loaded
       !! at the start (D-C28)
@@ -118,7 +124,7 @@ contains
 
    !> The pair (i, k) with surface sf (interior frame), the law of its
    !! material and its friction mu, xi (0: none).
-   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired, fsw, backing, cap, body_law, gated) &
+   function contact_pair_effect(body, i, k, sf, law, mu, xi, undesired, fsw, backing, cap, body_law, gated, dt_fixed) &
       result(e)
       type(body_section_t), intent(in) :: body
       integer, intent(in) :: i, k
@@ -131,6 +137,7 @@ contains
       real(wp), intent(in), optional :: cap                    !< the padding's bottoming depth eta D''
       type(recurrent_law_t), intent(in), optional :: body_law  !< the body's material (Table 11)
       logical, intent(in), optional :: gated                   !< the backing moves only once the padding is solid
+      real(wp), intent(in), optional :: dt_fixed               !< the integrator's fixed step (D-C18b; absent: adaptive)
       type(contact_pair_effect_t) :: e
       integer :: q
       e%name = 'contact_'//itoa(i)//'_'//itoa(k)
@@ -156,13 +163,15 @@ contains
       if (present(gated) .and. present(backing)) e%gated = gated
       if (present(mu)) e%mu = mu
       if (present(xi)) e%xi = xi
+      if (present(dt_fixed)) e%dt_fixed = dt_fixed
+      e%m_free = free_point_mass(body, i)
       if (present(undesired)) e%undesired = undesired
       if (present(fsw)) e%fsw = fsw
       e%needs_vehicle = .true.
       e%needs_joints = .true.                          ! pair_far's bound
       e%external = .true.
       e%has_energy = .true.
-      e%has_memory = e%undesired .or. e%fsw > 0.0_wp &
+      e%has_memory = e%undesired .or. e%fsw > 0.0_wp .or. (e%mu > 0.0_wp .and. e%dt_fixed > 0.0_wp) &
                      .or. sf%kind == surface_flat      ! the side it came from (D-C16a)
       do q = 1, e%n_elem                               ! (the body's material too)
          e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%law(q))
@@ -275,8 +284,58 @@ contains
       if (.not. ps%split%force > 0.0_wp) return
       ! friction (f.3, f.4, D-C18a): P' = mu P along the sliding velocity v_T
       ! once it reaches xi, in proportion to it below
-      ps%p_t = this%mu*ps%split%force*ramp_of(this%xi, ps%cs%v_t)
+      ps%p_t = this%mu*ps%split%force*ramp_of(ramp_width(this, ps%split%force), ps%cs%v_t)
    end subroutine pair_eval
+
+   !> D-C18b: a lower bound of the effective mass of body point i's contact
+   !! point: that of the point on its segment as a free body, 1/(1/m +
+   !! r**2/I), r the largest distance from the segment's centre of gravity to
+   !! the point's arc (the shin: its capsule). The joints only constrain the
+   !! segment, and a constraint never lowers a point's effective mass
+   !! (Rayleigh's theorem), so the jointed body's is at least this.
+   pure real(wp) function free_point_mass(body, i) result(m)
+      type(body_section_t), intent(in) :: body
+      integer, intent(in) :: i
+      real(wp) :: d, r, g
+      integer :: sg
+      sg = arc_segment(i)
+      g = body%rho(sg)                       ! the centre of gravity, along the axis from the joint
+      r = body%r_arc(i)
+      select case (i)
+      case (2, 3)                            ! rho'_i at gamma_i from the torso line
+         d = norm2(body%rho_arc(i)*[cos(body%gamma_arc(i)), sin(body%gamma_arc(i))] - [g, 0.0_wp])
+      case (4)
+         d = abs(body%rho_arc(4) - g)
+      case (6, 7, 8, 10)                     ! the segment's far end
+         d = abs(body%length(sg) - g)
+      case (9)                               ! the shin: from the knee to the ankle
+         d = max(g, abs(body%length(8) - g))
+         r = max(body%r_arc(7), body%r_arc(11))
+      case default                           ! hip, shoulder: the joint
+         d = g
+      end select
+      m = huge(1.0_wp)
+      if (body%mass(sg) > 0.0_wp .and. body%inertia(sg) > 0.0_wp) &
+         m = 1.0_wp/(1.0_wp/body%mass(sg) + (d + abs(r))**2/body%inertia(sg))
+   end function free_point_mass
+
+   !> D-C18b: the ramp's width at normal force p. Below xi the ramp is a
+   !! damper mu p/xi on the body part, whose rate mu p/(xi m) a fixed step
+   !! must resolve (RK4 is stable to 2.8/dt): under a fixed step the width
+   !! is at least mu p dt/(ramp_steps m_free), m_free <= the point's
+   !! effective mass, so that the damper's rate times the step stays below
+   !! ramp_steps (2: RK4's limit with a margin; Adams-Moulton held too, the
+   !! bound's mass being low). Continuous in p; xi itself where it is wider,
+   !! and always under an adaptive step, whose error control limits the
+   !! step instead. (With the deck's xi of 0.1 in/s RK4 gave the default
+   !! deck a HIC15 of 897 against Dormand-Prince's 460; widened, 460.)
+   pure real(wp) function ramp_width(this, p) result(w)
+      class(contact_pair_effect_t), intent(in) :: this
+      real(wp), intent(in) :: p
+      real(wp), parameter :: ramp_steps = 2.0_wp
+      w = this%xi
+      if (this%dt_fixed > 0.0_wp .and. this%xi > 0.0_wp) w = max(w, this%mu*p*this%dt_fixed/(ramp_steps*this%m_free))
+   end function ramp_width
 
    !> Whether the pair is slack at st for certain, by a bound that needs
    !! neither trigonometry nor velocities: the body point's circle (for the
@@ -513,6 +572,14 @@ contains
          if (ps%cs%delta > 0.0_wp .and. .not. this%cutting) call add_event(event_t(t=st%t, kind=event_cut, &
             index=this%i, value=ps%cs%delta, injury=.true., surface=this%k))
          this%cutting = ps%cs%delta > 0.0_wp
+      end if
+      ! D-C18b: the first accepted step at which the fixed step widened the ramp
+      if (.not. this%widened .and. this%mu > 0.0_wp .and. ps%split%force > 0.0_wp) then
+         if (ramp_width(this, ps%split%force) > this%xi) then
+            this%widened = .true.
+            call add_event(event_t(t=st%t, kind=event_ramp_widened, index=this%i, &
+                                   value=ramp_width(this, ps%split%force), limit=this%xi, surface=this%k))
+         end if
       end if
       ! out of contact the memory stays (as a slack belt's, belt_accept)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return

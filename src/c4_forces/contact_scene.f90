@@ -7,7 +7,7 @@
 !! outer material (increment 3: one element; docs/contacts.md 6.2).
 module contact_scene
    use kinds, only: wp, pi
-   use model, only: model_t, interior_section_t
+   use model, only: model_t, interior_section_t, nint_dopri
    use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle, surface_point, e
    use contact_tables, only: contact_pair_t, position_pairs, surface_materials, is_undesired, is_shared, body_material
    use contact_forces, only: contact_pair_effect_t, contact_pair_effect
@@ -174,7 +174,8 @@ contains
                                              material_law(m%materials, m%loading, l), m%materials%mu(l), &
                                              m%materials%xi(l), is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k), &
                                              merge(m%materials%fsw, 0.0_wp, l == 2), backing=backing, cap=cap, &
-                                             body_law=body_law, gated=lb == 10)
+                                             body_law=body_law, gated=lb == 10, &
+                                             dt_fixed=merge(0.0_wp, m%time%dt, m%options%nint == nint_dopri))
          end associate
       end do
    end function scene_contact_effects

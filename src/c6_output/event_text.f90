@@ -7,7 +7,7 @@ module event_text
    use model, only: joint_name, arc_name
    use number_format, only: fixed
    use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired, &
-      event_shatter, event_cut
+      event_shatter, event_cut, event_ramp_widened
    use contact_tables, only: surface_name
    use force_injuries, only: fc_name, fs_name
    implicit none
@@ -35,6 +35,9 @@ contains
       case (event_undesired)
          text = 'point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
                 //'): undesired contact (Table 9), force'//fixed(e%value, 10, 1)//' lb'
+      case (event_ramp_widened)
+         text = 'point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
+                //'): friction ramp widened for DT: xi'//fixed(e%value, 8, 2)//' in/s (XI'//fixed(e%limit, 8, 2)//')'
       case (event_compression, event_shear)
          text = 'bone '//merge(fc_name(e%index), fs_name(e%index), e%kind == event_compression) &
                 //'  '//trim(event_kind_name(e%kind))//': force'//fixed(e%value, 10, 1)//' lb, limit' &
