@@ -22,7 +22,7 @@ module model_builder
    use pulse_csv, only: read_pulse_csv
    use vehicle_motion, only: vehicle_table_differences
    use contact_tables, only: contact_pair_t, position_pairs, surface_code_valid, surface_name, is_undesired
-   use contact_scene, only: scene_pairs, pair_material, backing_material
+   use contact_scene, only: scene_pairs, surface_layers
    use model, only: interior_section_t
    use model, only: model_t, pulse_table_t, stop_curve_t, options_section_t, time_section_t, &
       numerics_section_t, body_section_t, joints_section_t, injury_section_t, vehicle_section_t, &
@@ -138,8 +138,7 @@ contains
       do q = 1, size(pairs)
          k = pairs(q)%k
          if (reported(k)) cycle
-         l = pair_material(m%interior, k)
-         lb = backing_material(m%interior, k)
+         call surface_layers(m%interior, k, l, lb)
          if (m%loading%material_curve(l) == 0) then
             reported(k) = .true.
             call material_problem(l, 'surface '//itoa(k)//' ('//surface_name(k)//') is made of material ' &

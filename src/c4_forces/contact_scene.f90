@@ -15,7 +15,7 @@ module contact_scene
    implicit none
    private
 
-   public :: resolved_surface, pair_material, backing_material, scene_pairs, scene_contact_effects
+   public :: resolved_surface, surface_layers, scene_pairs, scene_contact_effects
 
 contains
 
@@ -64,27 +64,11 @@ contains
       ok = .true.
    end subroutine resolved_surface
 
-   !> The material of surface k's outer element (Table 10; D-C22): a padded
-   !! surface's padding or mat when D'' > 0, else its backing.
-   pure integer function pair_material(it, k) result(l)
-      type(interior_section_t), intent(in) :: it
-      integer, intent(in) :: k
-      integer :: lb
-      call surface_layers(it, k, l, lb)
-   end function pair_material
-
-   !> The material behind a padding or mat that bottoms out (figure 25,
-   !! D-C19): the backing of a padded surface with D'' > 0; 0 for none.
-   pure integer function backing_material(it, k) result(lb)
-      type(interior_section_t), intent(in) :: it
-      integer, intent(in) :: k
-      integer :: l
-      call surface_layers(it, k, l, lb)
-   end function backing_material
-
    !> Surface k's composition (Table 10) as the scene uses it: its outer
-   !! material l (0: none) and the backing lb behind a padding or mat with
-   !! D'' > 0 (0: none). The rear floor 25 takes the toeboard 5's D''.
+   !! material l (0: none; D-C22: a padded surface's padding or mat when
+   !! D'' > 0, else its backing) and the backing lb behind a padding or mat
+   !! with D'' > 0 that bottoms out (figure 25, D-C19; 0: none). The rear
+   !! floor 25 takes the toeboard 5's D''.
    pure subroutine surface_layers(it, k, l, lb)
       type(interior_section_t), intent(in) :: it
       integer, intent(in) :: k

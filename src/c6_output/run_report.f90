@@ -30,7 +30,7 @@ module run_report
    use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired, &
       event_shatter, event_cut
    use contact_tables, only: surface_name, contact_pair_t, is_undesired
-   use contact_scene, only: scene_pairs, resolved_surface, pair_material, backing_material
+   use contact_scene, only: scene_pairs, resolved_surface, surface_layers
    use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t
    use force_injuries, only: fc_defined, fs_defined, fc_name, fs_name
@@ -1010,7 +1010,7 @@ contains
       type(contact_surface_t) :: sf
       character(len=132) :: line
       logical :: ok
-      integer :: q, k, n
+      integer :: q, k, n, l, lb
       if (.not. any(m%interior%given)) return
       allocate (pairs(0))
       pairs = scene_pairs(m)
@@ -1035,9 +1035,9 @@ contains
                        size(pairs) + 3)
       call lst%put('   I  BODY POINT      K  SURFACE                MATERIAL  BACKING  UNDESIRED (TABLE 9)')
       do q = 1, size(pairs)
+         call surface_layers(m%interior, pairs(q)%k, l, lb)
          write (line, '(i4,2x,a12,i5,2x,a22,i6,i9,5x,a)') pairs(q)%i, arc_name(pairs(q)%i), pairs(q)%k, &
-            name22(surface_name(pairs(q)%k)), pair_material(m%interior, pairs(q)%k), &
-            backing_material(m%interior, pairs(q)%k), &
+            name22(surface_name(pairs(q)%k)), l, lb, &
             trim(merge('yes', '   ', is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k)))
          call lst%put(line)
       end do
