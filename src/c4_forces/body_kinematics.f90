@@ -145,14 +145,18 @@ contains
       type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: z(n_dof), c(n_seg), s(n_seg)
       real(wp) :: p(2, n_seg)
-      p(:, 1) = [z(hip_x), z(hip_y)]
-      p(:, 2) = p(:, 1) + body%length(1)*[c(1), s(1)]
-      p(:, 3) = p(:, 2) + body%length(2)*[c(2), s(2)]
-      p(:, 4) = p(:, 3) + body%length(3)*[c(3), s(3)]   ! the neck, L3
-      p(:, 5) = p(:, 3) + body%length(4)*[c(3), s(3)]   ! the shoulder, L4 along segment 3
-      p(:, 6) = p(:, 5) + body%length(5)*[c(5), s(5)]
-      p(:, 7) = p(:, 1)
-      p(:, 8) = p(:, 7) + body%length(7)*[c(7), s(7)]
+      integer :: i, k, j
+      ! (in the order 1..8 the last link's segment j of every chain comes
+      ! before i, and its own joint is that chain's prefix)
+      do i = 1, n_seg
+         k = n_links(i)
+         if (k == 0) then
+            p(:, i) = [z(hip_x), z(hip_y)]
+         else
+            j = chain_seg(k, i)
+            p(:, i) = p(:, j) + body%length(chain_len(k, i))*[c(j), s(j)]
+         end if
+      end do
    end function joint_positions
 
    !> The generalized force of a force f (inertial) at the inertial point p
@@ -183,14 +187,6 @@ contains
          jx = jx + len*c
          jy = jy + len*s
       end do
-      ! point_on_segment's last link, along segment i by d = 0, adds 0 cos(alpha_i)
-      ! and 0 sin(alpha_i): nothing b can tell (at most a zero's sign, which
-      ! b(i), +0 before, loses in the sums below) but the NaN of a
-      ! non-finite angle, where it is added as there
-      if (.not. abs(z(i)) <= huge(1.0_wp)) then
-         jx = jx + 0.0_wp*cos(z(i))
-         jy = jy + 0.0_wp*sin(z(i))
-      end if
       b(i) = b(i) - f(1)*(p(2) - jy) + f(2)*(p(1) - jx)
    end function point_force_generalized
 

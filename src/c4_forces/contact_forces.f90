@@ -325,7 +325,8 @@ contains
    !! is at least mu p dt/(ramp_steps m_free), m_free <= the point's
    !! effective mass, so that the damper's rate times the step stays below
    !! ramp_steps (2: RK4's limit with a margin; Adams-Moulton held too, the
-   !! bound's mass being low). Continuous in p; xi itself where it is wider,
+   !! bound's mass being low). Continuous in p; xi itself where it is wider
+   !! (with xi = 0, the bare Coulomb sign, only under an adaptive step),
    !! and always under an adaptive step, whose error control limits the
    !! step instead. (With the deck's xi of 0.1 in/s RK4 gave the default
    !! deck a HIC15 of 897 against Dormand-Prince's 460; widened, 460.)
@@ -334,7 +335,7 @@ contains
       real(wp), intent(in) :: p
       real(wp), parameter :: ramp_steps = 2.0_wp
       w = this%xi
-      if (this%dt_fixed > 0.0_wp .and. this%xi > 0.0_wp) w = max(w, this%mu*p*this%dt_fixed/(ramp_steps*this%m_free))
+      if (this%dt_fixed > 0.0_wp) w = max(w, this%mu*p*this%dt_fixed/(ramp_steps*this%m_free))
    end function ramp_width
 
    !> Whether the pair is slack at st for certain, by a bound that needs
@@ -350,7 +351,7 @@ contains
    !! acts with its face only over its extent and from in front, unless the
    !! point came from behind, D-C16a), so chain_split clears the chain and
    !! the full path gives no force and zero rates: the memory (the loading
-   !! cycle, a friction's held direction, the side) plays no part there.
+   !! cycle, the side) plays no part there.
    !! Broken glass carries nothing at any state. Not taken (.false.) when
    !! the rates or coordinates are not finite or beyond 1e100, where the
    !! full path's delta' could be non-finite and fail the split. st carries

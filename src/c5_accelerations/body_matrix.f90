@@ -243,7 +243,8 @@ contains
             u(q, p) = l_pq
             pivot = pivot - c(q)*l_pq
          end do
-         if (.not. (pivot > 0.0_wp .and. pivot <= huge(pivot))) then
+         ! (a subnormal pivot too: its reciprocal would overflow)
+         if (.not. (pivot >= tiny(pivot) .and. pivot <= huge(pivot))) then
             info = elimination_order(p)
             return
          end if
