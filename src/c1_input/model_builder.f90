@@ -152,24 +152,37 @@ contains
                   //'number of a curve, or DPP = 0 on *SURFACES for no padding')
             end if
          end if
+         ! D-C18a: the contacts' friction ramps up to mu P over XI; with XI = 0
+         ! it is the bare Coulomb sign, which an adaptive step cannot resolve
+         if (.not. reported(k) .and. m%materials%mu(l) > 0.0_wp .and. .not. m%materials%xi(l) > 0.0_wp) then
+            reported(k) = .true.
+            call material_problem(l, 'surface '//itoa(k)//' ('//surface_name(k)//') is made of material ' &
+               //itoa(l)//', whose friction MU > 0 has XI = 0: the contacts'' friction ramps up to MU P over ' &
+               //'the sliding velocity XI (docs/contacts.md D-C18a); expected XI > 0 (4 in/s in the shipped ' &
+               //'interiors)', 'XI')
+         end if
       end do
    contains
-      !> At material l's *MATERIALS card and its CURVE field when the deck
-      !! has one, else at *SURFACES.
-      subroutine material_problem(l, message)
+      !> At material l's *MATERIALS card and its field (CURVE when not
+      !! given) when the deck has one, else at *SURFACES.
+      subroutine material_problem(l, message, field)
          integer, intent(in) :: l
          character(len=*), intent(in) :: message
+         character(len=*), intent(in), optional :: field
+         character(len=:), allocatable :: name
          integer :: c
+         name = 'CURVE'
+         if (present(field)) name = field
          associate (g => deck%group(g_materials))
             do c = 1, g%n
                if (g%card(c)%index /= l) cycle
                call problem(deck, err, g%card(c), '*MATERIALS material '//itoa(l)//', field ' &
-                            //field_where(deck, g_materials, 'CURVE')//': '//message)
+                            //field_where(deck, g_materials, name)//': '//message)
                return
             end do
          end associate
          call problem_at(deck, err, g_surfaces, message//' on a *MATERIALS card for material '//itoa(l) &
-                         //', field '//field_where(deck, g_materials, 'CURVE'))
+                         //', field '//field_where(deck, g_materials, name))
       end subroutine material_problem
    end subroutine check_contact_materials
 

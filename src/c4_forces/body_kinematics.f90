@@ -16,7 +16,7 @@ module body_kinematics
    private
 
    public :: point_state_t, segment_cg_state, joint_state, to_interior, joint_segment
-   public :: point_force_generalized, joint_position_velocity, joint_position, joint_positions
+   public :: point_force_generalized, joint_position_velocity, joint_positions
 
    integer, parameter :: max_links = 4
    integer, parameter :: n_links(n_seg) = [0, 1, 2, 3, 3, 4, 0, 1]
@@ -118,26 +118,9 @@ contains
       end do
    end subroutine joint_position_velocity
 
-   !> Position (inertial) of the proximal joint of segment i from the
-   !! cosines c and sines s of the angles: joint_position_velocity's p alone.
-   pure function joint_position(body, z, c, s, i) result(p)
-      type(body_section_t), intent(in) :: body
-      real(wp), intent(in) :: z(n_dof), c(n_seg), s(n_seg)
-      integer, intent(in) :: i
-      real(wp) :: p(2)
-      integer :: k, j
-      real(wp) :: len
-      p = [z(hip_x), z(hip_y)]
-      do k = 1, n_links(i)
-         j = chain_seg(k, i)
-         len = body%length(chain_len(k, i))
-         p = p + len*[c(j), s(j)]
-      end do
-   end function joint_position
-
    !> The proximal joints (inertial) of all segments, p(:, i) for segment i,
-   !! from the cosines c and sines s of the angles: joint_position for each
-   !! i with the same arithmetic in the same order, each chain's prefix taken
+   !! from the cosines c and sines s of the angles: joint_position_velocity's
+   !! p for each i with the same arithmetic in the same order, each chain's prefix taken
    !! once (the chains of the module's header: the chain to segment i's
    !! joint is the chain to the joint of its last link's segment, then that
    !! link).

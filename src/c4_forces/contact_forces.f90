@@ -324,7 +324,8 @@ contains
    !! must resolve (RK4 is stable to 2.8/dt): under a fixed step the width
    !! is at least mu p dt/(ramp_steps m_free), m_free <= the point's
    !! effective mass, so that the damper's rate times the step stays below
-   !! ramp_steps (2: RK4's limit with a margin; Adams-Moulton held too, the
+   !! ramp_steps for this pair (pairs loaded at once on one body part add
+   !! their rates: docs/contacts.md D-C18b) (2: RK4's limit with a margin; Adams-Moulton held too, the
    !! bound's mass being low). Continuous in p; xi itself where it is wider
    !! (with xi = 0, the bare Coulomb sign, only under an adaptive step),
    !! and always under an adaptive step, whose error control limits the
@@ -641,11 +642,11 @@ contains
       type(pair_state_t) :: ps
       integer :: q
       this%e_initial = 0.0_wp
-      if (this%surface%kind == surface_flat) then
-         call pair_eval(this, st, ps)
-         call set_behind(this, dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp)
-      end if
       call pair_eval(this, st, ps)
+      if (this%surface%kind == surface_flat) then
+         call set_behind(this, dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp)
+         if (this%behind) call pair_eval(this, st, ps)      ! (its penetration with that side)
+      end if
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
       do q = 1, this%n_elem
          this%e_initial(q) = curve_energy(this%law(q)%curve, ps%split%x(q))

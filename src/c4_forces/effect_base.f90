@@ -125,7 +125,10 @@ module effect_base
    !! implies, whatever the roundings of the two computations, the effect's
    !! own proof that it is inert (for a contact pair, far_check's bound,
    !! whose margin is half the guard's; radius >= 0). Declaring one makes
-   !! the occupant fill st's interior frame data (as needs_joints).
+   !! the occupant fill st's interior frame data (as needs_joints); the
+   !! occupant decides that when the effect is placed, so an effect whose
+   !! guard may turn from none to another kind later must set needs_joints
+   !! at construction (the contact pairs do).
    type :: proximity_guard_t
       integer :: kind = guard_none
       integer :: seg = 1

@@ -23,7 +23,7 @@ module joint_friction
    implicit none
    private
 
-   public :: joint_friction_t, joint_friction_effect, friction_torque
+   public :: joint_friction_t, joint_friction_effect
 
    type, extends(effect_t) :: joint_friction_t
       integer, allocatable :: joints(:)          !< joints with C' > 0
@@ -62,7 +62,10 @@ contains
       if (present(zdot0)) e%slip = slips(e, zdot0)
    end function joint_friction_effect
 
-   !> The sliding direction of every joint with friction at the rates zdot.
+   !> The sliding direction of every joint with friction at the rates zdot:
+   !! C.4.c's torque is -C' times it, -C' sgn(w) once |w| reaches xi, none
+   !! below - and none at w = 0 even when xi = 0 (Fortran's sign(C', 0) is
+   !! +C': a torque without motion, outside the energy balance; slip_of).
    pure function slips(this, zdot) result(slip)
       class(joint_friction_t), intent(in) :: this
       real(wp), intent(in) :: zdot(n_dof)
@@ -89,16 +92,6 @@ contains
       if (any(slip /= this%slip)) result%restart = .true.
       this%slip = slip
    end subroutine friction_accept
-
-   !> The torque on segment i at relative rate w: -C' sgn(w) when |w| >= xi,
-   !! else 0 - and 0 at w = 0 even when xi = 0 (Fortran's sign(C', 0) is +C',
-   !! which would be a torque without motion, outside the energy balance).
-   !! The law of C.4.c at one state: the effect applies it with the sliding
-   !! direction of the last accepted state (D-4a).
-   pure real(wp) function friction_torque(c_friction, xi, w) result(tau)
-      real(wp), intent(in) :: c_friction, xi, w
-      tau = -c_friction*real(slip_of(xi, w), wp)
-   end function friction_torque
 
    pure subroutine friction_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
       class(joint_friction_t), intent(in) :: this

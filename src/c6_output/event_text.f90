@@ -37,7 +37,7 @@ contains
                 //'): undesired contact (Table 9), force'//fixed(e%value, 10, 1)//' lb'
       case (event_ramp_widened)
          text = 'point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
-                //'): friction ramp widened for DT: xi'//fixed(e%value, 8, 2)//' in/s (XI'//fixed(e%limit, 8, 2)//')'
+                //'): friction ramp widened for DT: xi'//fixed(e%value, 7, 3)//' in/s (XI'//fixed(e%limit, 7, 3)//')'
       case (event_compression, event_shear)
          text = 'bone '//merge(fc_name(e%index), fs_name(e%index), e%kind == event_compression) &
                 //'  '//trim(event_kind_name(e%kind))//': force'//fixed(e%value, 10, 1)//' lb, limit' &

@@ -6,7 +6,7 @@
 !! print time, series after series.
 module output_registry
    use kinds, only: wp
-   use output_series, only: output_series_t
+   use output_series, only: output_series_t, output_column_t
    implicit none
    private
 
@@ -53,20 +53,23 @@ contains
       call move_alloc(longer, this%series)
    end subroutine registry_add
 
-   !> to = from, the allocatable parts moved (from is left without them).
+   !> to = from, the allocatable parts moved (from is left without them):
+   !! they are taken out, the rest assigned (every other component, whatever
+   !! the type gains later), and they are put back into to.
    pure subroutine series_move(from, to)
       type(output_series_t), intent(inout) :: from
       type(output_series_t), intent(inout) :: to
-      call move_alloc(from%name, to%name)
-      call move_alloc(from%title, to%title)
-      call move_alloc(from%description, to%description)
-      call move_alloc(from%col, to%col)
-      to%nout = from%nout
-      to%producer = from%producer
-      to%item = from%item
-      to%occupant = from%occupant
-      to%generalized_force = from%generalized_force
-      to%offset = from%offset
+      character(len=:), allocatable :: name, title, description
+      type(output_column_t), allocatable :: col(:)
+      call move_alloc(from%name, name)
+      call move_alloc(from%title, title)
+      call move_alloc(from%description, description)
+      call move_alloc(from%col, col)
+      to = from
+      call move_alloc(name, to%name)
+      call move_alloc(title, to%title)
+      call move_alloc(description, to%description)
+      call move_alloc(col, to%col)
    end subroutine series_move
 
    !> The index of the series called name, or 0.
