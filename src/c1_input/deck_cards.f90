@@ -332,7 +332,8 @@ contains
       t(g_arcs)%layout = layout_indexed
       t(g_arcs)%max_index = 11
       t(g_arcs)%index_name = 'arc i'
-      t(g_arcs)%note = 'RHOP is used for arcs 2-4 and GAMMA for arcs 2-3 (Table 1). Read here for the contacts to come.'
+      t(g_arcs)%note = 'RHOP is used for arcs 2-4 and GAMMA for arcs 2-3 (Table 1). Their centres are the body ' &
+                       //'points of the contacts (C.4.f).'
       call set_fields(t(g_arcs), [ &
          real_field('R', 'in', one, blank_default, zero, zero, big, 'contact arc radius r_i'), &
          real_field('RHOP', 'in', one, blank_default, zero, zero, big, 'distance rho''_i to the arc centre'), &

@@ -1,8 +1,8 @@
 !> One contact pair of C.4.f as an effect (docs/contacts.md 3.1, D-C15):
 !! body point i against surface k. Its normal force P comes from the
-!! surface's material through recurrent loading (Table 4, figure 18; the
-!! chain of one element of increment 3 in docs/contacts.md 6.2: the outer
-!! material); the friction P' = mu P r (f.3, f.4) with r = v_T/xi clipped to
+!! surface's materials through recurrent loading (Table 4, figure 18), a
+!! chain of the body's material, the padding and what backs it (figures
+!! 23-25, docs/contacts.md 3.4); the friction P' = mu P r (f.3, f.4) with r = v_T/xi clipped to
 !! [-1, 1], v_T the sliding velocity of the body's material point along t:
 !! the Coulomb force once the sliding reaches xi, in proportion to it below
 !! (D-C18a, D-C22). The force P n - P' t acts at the contact point C, a

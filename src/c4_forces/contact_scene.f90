@@ -3,8 +3,9 @@
 !! windshield's lower end, the rim at the column's angle with its opening,
 !! the side rim 10*, roof and floor, the lower panel's edge 5*), and the
 !! pairs of the occupant's position (Tables 7, 8) whose surface the deck
-!! describes and does not switch off, each with the law of its surface's
-!! outer material (increment 3: one element; docs/contacts.md 6.2).
+!! describes and does not switch off, each with the laws of its chain: the
+!! body's material where Table 11 shares the deflection, the surface's
+!! outer material and its backing (docs/contacts.md 3.4).
 module contact_scene
    use kinds, only: wp, pi
    use model, only: model_t, interior_section_t, nint_dopri

@@ -1105,7 +1105,7 @@ contains
       end do
    contains
       !> name, largest value and its time, limit; '-' where the dynamics
-      !! does not give it (yet: the contacts' bones)
+      !! does not give it
       function cell(defined, name, e, limit) result(text)
          logical, intent(in) :: defined
          character(len=*), intent(in) :: name
