@@ -22,7 +22,7 @@ module run_report
    use error_handling, only: error_t, error_set, exit_io
    use listing, only: listing_t
    use loading_curves, only: curve_is_defined, curve_polynomial, curve_table
-   use number_format, only: fixed
+   use number_format, only: fixed, es11_3, f10_5
    use output_series, only: output_series_t, max_listing_columns
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
@@ -152,7 +152,6 @@ contains
       class(listing_sink_t), intent(inout) :: this
       integer :: q, first, last, k, c
       character(len=132) :: line, names, units
-      real(wp) :: row(max_listing_columns)
       do q = 1, size(this%tables)
          associate (s => this%reg%series(this%tables(q)))
             do first = 1, size(s%col), max_listing_columns
@@ -168,11 +167,12 @@ contains
                call this%lst%put(names)
                call this%lst%put(units)
                do k = 1, this%n_rows
-                  ! one formatted write per row: the time fits F10.5 (TMAX <= 1000 s)
+                  ! the row as write (line, '(f10.5,11es11.3)') would give it (number_format)
+                  line = f10_5(this%t(k))
                   do c = first, last
-                     row(c - first + 1) = this%rows(s%offset + c, k)*s%col(c)%listing_scale
+                     line(11 + 11*(c - first):21 + 11*(c - first)) = &
+                        es11_3(this%rows(s%offset + c, k)*s%col(c)%listing_scale)
                   end do
-                  write (line, '(f10.5,11es11.3)') this%t(k), row(1:last - first + 1)
                   call this%lst%put(line)
                end do
             end do
