@@ -21,13 +21,13 @@ module contact_forces
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
       energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
       max_events_per_step, event_shatter, event_cut, event_ramp_widened, proximity_guard_t, guard_none, guard_ball, &
-      guard_half_plane, guard_slab, guard_capsule, guard_always
+      guard_half_plane, guard_slab, guard_capsule, guard_always, effect_peak_t
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
       arc_segment, front_side, surface_flat, surface_line, surface_circle, surface_point
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
-      recurrent_is_elastic, n_loading_aux, aux_work, aux_absorbed
+      n_loading_aux, aux_work, aux_absorbed
    use loading_curves, only: curve_energy
    use belt_shared_deflection, only: chain_split_t, chain_split, split_ok, branch_point_t, branch_at, &
       chain_split_text
@@ -79,6 +79,9 @@ module contact_forces
       real(wp) :: fsw = 0.0_wp                  !< 0: never shatters
       logical :: shattered = .false., cutting = .false.
       real(wp) :: e_switch = 0.0_wp
+      !> the largest P over the accepted steps, when, and where (T and delta
+      !! then): the summary's contact peaks (peaks)
+      real(wp) :: peak_p = 0.0_wp, peak_t = 0.0_wp, peak_pos = 0.0_wp, peak_delta = 0.0_wp
       !> D-C26: each element's curve energy at its initial deformation, where
       !! its W and E_abs start (the penetration counts as a loading before t = 0)
       real(wp) :: e_initial(3) = 0.0_wp
@@ -103,6 +106,7 @@ module contact_forces
       procedure :: point_forces => pair_point_forces
       procedure :: describe => pair_describe
       procedure :: failure_text => pair_failure_text
+      procedure :: peaks => pair_peaks
    end type contact_pair_effect_t
 
    !> far_check's side where the bound does not decide it
@@ -171,11 +175,10 @@ contains
       e%needs_joints = .true.                          ! pair_far's bound
       e%external = .true.
       e%has_energy = .true.
-      e%has_memory = e%undesired .or. e%fsw > 0.0_wp .or. (e%mu > 0.0_wp .and. e%dt_fixed > 0.0_wp) &
-                     .or. sf%kind == surface_flat      ! the side it came from (D-C16a)
-      do q = 1, e%n_elem                               ! (the body's material too)
-         e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%law(q))
-      end do
+      ! memory: the peak force (peaks) in every pair, and where they apply the
+      ! loading cycles, the side a flat surface's pair came from (D-C16a), the
+      ! windshield, Table 9's contacts and D-C18b's note
+      e%has_memory = .true.
       e%tk = [cos(sf%psi), sin(sf%psi)]
       e%nk = [-e%tk(2), e%tk(1)]
       e%size_sum = sum(abs(body%length)) + sum(abs(body%rho_arc)) + sum(abs(body%r_arc)) + abs(sf%s(1)) + &
@@ -510,6 +513,21 @@ contains
          this%guard%kind = merge(guard_slab, guard_half_plane, behind .and. this%surface%kind == surface_flat)
    end subroutine set_behind
 
+   !> The largest P over the accepted steps, with T and delta then (none
+   !! when the pair never touched).
+   function pair_peaks(this) result(p)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(effect_peak_t), allocatable :: p(:)
+      allocate (p(0))
+      if (.not. this%peak_p > 0.0_wp) return
+      p = [effect_peak_t(name=trim(this%name)//'_force', title=this%title, label='largest force P', unit='lb', &
+                         value=this%peak_p, t=this%peak_t), &
+           effect_peak_t(name=trim(this%name)//'_pos', title=this%title, label='  where: T', unit='in', &
+                         value=this%peak_pos, t=this%peak_t), &
+           effect_peak_t(name=trim(this%name)//'_delta', title=this%title, label='  penetration delta', unit='in', &
+                         value=this%peak_delta, t=this%peak_t)]
+   end function pair_peaks
+
    !> The loading cycle (figure 18) from the accepted deformation and rate;
    !! a changed law restarts the stepper.
    subroutine pair_accept(this, st, extra, aux, result)
@@ -582,6 +600,12 @@ contains
             call add_event(event_t(t=st%t, kind=event_ramp_widened, index=this%i, &
                                    value=ramp_width(this, ps%split%force), limit=this%xi, surface=this%k))
          end if
+      end if
+      if (ps%split%status == split_ok .and. ps%split%force > this%peak_p) then
+         this%peak_p = ps%split%force
+         this%peak_t = st%t
+         this%peak_pos = ps%cs%pos
+         this%peak_delta = ps%cs%delta
       end if
       ! out of contact the memory stays (as a slack belt's, belt_accept)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return

@@ -37,7 +37,7 @@ module effect_base
    implicit none
    private
 
-   public :: effect_t, effect_slot_t, body_state_t, event_t, accept_result_t
+   public :: effect_t, effect_slot_t, body_state_t, event_t, accept_result_t, effect_peak_t
    public :: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    public :: event_dislocation_low, event_dislocation_high, event_kind_name, max_events_per_step
    public :: event_tension, event_compression, event_shear, event_undesired, event_shatter, event_cut
@@ -165,6 +165,19 @@ module effect_base
       type(point_force_t), allocatable :: f(:)
    end type point_force_list_t
 
+   !> A largest value over the accepted steps that an effect keeps (in its
+   !! memory, changed in accept) and reports at the end of the run: the
+   !! summary lists it and /summary/maxima of the HDF5 file has a column
+   !! for it.
+   type :: effect_peak_t
+      character(len=19) :: name = ' '    !< the column: <effect>_<quantity>, lower case
+      character(len=40) :: title = ' '   !< the effect's (for the listing)
+      character(len=24) :: label = ' '   !< the quantity, for the listing
+      character(len=8) :: unit = ' '
+      real(wp) :: value = 0.0_wp
+      real(wp) :: t = 0.0_wp             !< when
+   end type effect_peak_t
+
    !> What `accept` reports.
    type :: accept_result_t
       logical :: restart = .false.  !< the right-hand side jumped: the stepper must restart
@@ -200,6 +213,7 @@ module effect_base
       procedure :: initial_extra => effect_initial_extra
       procedure :: failure_text => effect_failure_text
       procedure :: point_forces => effect_point_forces
+      procedure :: peaks => effect_peaks
    end type effect_t
 
    !> An effect in a list.
@@ -302,6 +316,16 @@ contains
       associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux), u4 => result%n_events)
       end associate
    end subroutine effect_accept
+
+   !> The largest values the effect kept over the accepted steps (effect_peak_t).
+   !! None by default.
+   function effect_peaks(this) result(p)
+      class(effect_t), intent(in) :: this
+      type(effect_peak_t), allocatable :: p(:)
+      associate (unused => this%name)
+      end associate
+      allocate (p(0))
+   end function effect_peaks
 
    !> The effect's energies (in*lb): stored, dissipated, supplied. Zero by default.
    pure subroutine effect_energy(this, st, extra, aux, e)

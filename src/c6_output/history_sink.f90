@@ -125,6 +125,9 @@ contains
       character(len=8) :: prefix
       if (err%failed()) return
       n = size(summary%occ)*(2 + 2*n_joint + n_joint + 2*n_injury)
+      do o = 1, size(summary%occ)
+         if (allocated(summary%occ(o)%peaks)) n = n + size(summary%occ(o)%peaks)
+      end do
       allocate (names(n), units(n), values(n), times(n))
       n = 0
       do o = 1, size(summary%occ)
@@ -146,6 +149,12 @@ contains
                                               os%fc_max(i)%t)
                   if (fs_defined(i)) call put(trim(prefix)//'shear_'//trim(itoa(i)), 'lb', os%fs_max(i)%value, &
                                               os%fs_max(i)%t)
+               end do
+            end if
+            ! the effects' peaks (the contact pairs' largest force, and where and how deep then)
+            if (allocated(os%peaks)) then
+               do i = 1, size(os%peaks)
+                  call put(trim(prefix)//os%peaks(i)%name, os%peaks(i)%unit, os%peaks(i)%value, os%peaks(i)%t)
                end do
             end if
          end associate

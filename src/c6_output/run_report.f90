@@ -884,6 +884,7 @@ contains
             call lst%put('  chest acceleration '//fixed(os%chest_max%value/g_std, 10, 3)//' g   at t ='// &
                          fixed(os%chest_max%t, 10, 5)//' s')
             call put_injury_criteria(lst, os)
+            call put_peaks(lst, os)
 
             call lst%heading('JOINT ANGLE RANGES, ALPHA(I) - ALPHA(M) (deg)', 10)
             call lst%put('   I  JOINT          MINIMUM   AT t (s)    MAXIMUM   AT t (s)    STOPS            DISLOCATION')
@@ -1078,6 +1079,35 @@ contains
       call lst%put('  chest GSI          '//fixed(os%chest_criteria%gsi, 10, 1))
       call lst%put('  chest 3 ms clip    '//fixed(os%chest_criteria%clip3ms(), 10, 3)//' g')
    end subroutine put_injury_criteria
+
+   !> The largest values the effects kept over the accepted steps (the
+   !! contact pairs' largest force, where and how deep it acted), an effect's
+   !! title and a time where they change. Nothing when no effect kept one.
+   subroutine put_peaks(lst, os)
+      type(listing_t), intent(inout) :: lst
+      type(occupant_summary_t), intent(in) :: os
+      character(len=132) :: line
+      integer :: i
+      if (.not. allocated(os%peaks)) return
+      if (size(os%peaks) == 0) return
+      call lst%heading('PEAKS OVER ALL ACCEPTED STEPS (CONTACT PAIRS: WHERE, T, AND HOW DEEP, DELTA)', &
+                       min(size(os%peaks), 12))
+      do i = 1, size(os%peaks)
+         associate (p => os%peaks(i))
+            line = ' '
+            if (i == 1) then
+               line(3:42) = p%title
+            else if (p%title /= os%peaks(i - 1)%title) then
+               line(3:42) = p%title
+            end if
+            line(44:67) = p%label
+            line(68:79) = fixed(p%value, 12, 3)
+            line(81:88) = p%unit
+            if (len_trim(line(3:42)) > 0) line(89:) = 'at t ='//fixed(p%t, 10, 5)//' s'
+            call lst%put(line)
+         end associate
+      end do
+   end subroutine put_peaks
 
    !> Table 5's force criteria: the largest tension at each joint and
    !! compression and shear of each bone over all accepted steps, with the

@@ -6,7 +6,7 @@ module run_summary
    use kinds, only: wp, i8
    use model, only: n_joint, n_injury
    use ode_system, only: step_stats_t
-   use effect_base, only: event_t
+   use effect_base, only: event_t, effect_peak_t
    use acceleration_criteria, only: acceleration_criteria_t
    implicit none
    private
@@ -36,6 +36,9 @@ module run_summary
       real(wp) :: ke_max = 0.0_wp               !< largest body kinetic energy
       logical :: energy_flagged = .false.       !< the balance exceeded its tolerance
       real(wp) :: t_flagged = 0.0_wp
+      !> the largest values its effects kept over the accepted steps (the
+      !! contact pairs' forces), at the end of the run
+      type(effect_peak_t), allocatable :: peaks(:)
    end type occupant_summary_t
 
    type :: run_summary_t

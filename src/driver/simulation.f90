@@ -184,9 +184,11 @@ contains
          summary%effect_names = ' '
          summary%effect_titles = ' '
          do o = 1, n_occ
+            allocate (summary%occ(o)%peaks(0))
             do i = 1, size(sys%occupants(o)%effects)
                summary%effect_names(i, o) = sys%occupants(o)%effects(i)%e%name
                summary%effect_titles(i, o) = sys%occupants(o)%effects(i)%e%title
+               summary%occ(o)%peaks = [summary%occ(o)%peaks, sys%occupants(o)%effects(i)%e%peaks()]
             end do
          end do
          summary%evaluations = sys%evaluations
