@@ -71,6 +71,7 @@ contains
       call build_seat(deck, m, err)
       call build_interior(deck, m%options%nbody, m%interior, err)
       if (.not. err%failed()) call check_contact_materials(deck, m, err)
+      if (.not. err%failed()) call warn_unused_surfaces(deck, m)
       if (m%options%nbody /= 1 .and. .not. any(m%interior%given)) call append_string(m%warnings, &
          located(deck, deck%group(g_options)%card(1), 'NBODY = '//itoa(m%options%nbody)//' (the ' &
          //trim(merge('front-seat passenger', 'rear-seat passenger ', m%options%nbody == 2))//') selects the ' &
@@ -185,6 +186,48 @@ contains
                          //', field '//field_where(deck, g_materials, name))
       end subroutine material_problem
    end subroutine check_contact_materials
+
+   !> D-C14 (7): a *SURFACES card that builds nothing - no pair of the
+   !! scene strikes the surface or one that f.2's relations derive from it
+   !! (the upper panel and the roof from the windshield, the rim and the
+   !! side rim from the column, the floor from the toeboard, the panel's edge
+   !! from the lower panel) - is most likely a slip (another occupant
+   !! position's surface, a pair switched off): a warning at its card.
+   subroutine warn_unused_surfaces(deck, m)
+      type(deck_t), intent(in) :: deck
+      type(model_t), intent(inout) :: m
+      type(contact_pair_t), allocatable :: pairs(:)
+      logical :: used(32)
+      integer :: q, k
+      allocate (pairs(0))
+      pairs = scene_pairs(m)
+      used = .false.
+      do q = 1, size(pairs)
+         k = pairs(q)%k
+         select case (k)
+         case (4, 11)                  ! from the windshield's ends (D-C6)
+            used([k, 2]) = .true.
+         case (10, 30)                 ! the rim and the side rim: at the column's angle (D-C11, D-C12)
+            used([10, 8]) = .true.
+         case (12)                     ! at the toeboard's lower end
+            used([12, 6]) = .true.
+         case (25)                     ! the lower panel's edge
+            used(5) = .true.
+         case default
+            used(k) = .true.
+         end select
+      end do
+      associate (g => deck%group(g_surfaces))
+         do q = 1, g%n
+            k = g%card(q)%index
+            if (k < 1 .or. k > size(used)) cycle
+            if (used(k)) cycle
+            call append_string(m%warnings, located(deck, g%card(q), '*SURFACES surface '//itoa(k)//' (' &
+               //surface_name(k)//') builds nothing: no pair of NBODY '//itoa(m%options%nbody) &
+               //' strikes it (Tables 7, 8, less *CONTACTOFF) nor a surface derived from it'))
+         end do
+      end associate
+   end subroutine warn_unused_surfaces
 
    !> *SURFACES, *INTERIOR, *CONTACTOFF (C.4.f, Table 3; docs/contacts.md
    !! 2.4): each surface's fields as Table 3 marks them, the ones f.2's

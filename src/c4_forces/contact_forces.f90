@@ -15,9 +15,11 @@
 !! v_T), the power of the force at the surface's material point.
 module contact_forces
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-   use kinds, only: wp
+   use kinds, only: wp, g_std
    use strings, only: itoa, num
-   use model, only: body_section_t, n_dof
+   use text_io, only: string_t, append_string
+   use model, only: body_section_t, n_dof, arc_name
+   use contact_tables, only: surface_name
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
       energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
       max_events_per_step, event_shatter, event_cut, event_ramp_widened, proximity_guard_t, guard_none, guard_ball, &
@@ -107,6 +109,7 @@ module contact_forces
       procedure :: describe => pair_describe
       procedure :: failure_text => pair_failure_text
       procedure :: peaks => pair_peaks
+      procedure :: initial_notes => pair_initial_notes
    end type contact_pair_effect_t
 
    !> far_check's side where the bound does not decide it
@@ -512,6 +515,35 @@ contains
       if (this%guard%kind == guard_half_plane .or. this%guard%kind == guard_slab) &
          this%guard%kind = merge(guard_slab, guard_half_plane, behind .and. this%surface%kind == surface_flat)
    end subroutine set_behind
+
+   !> D-C14 (7): a pair that starts deep in its surface - more than half its
+   !! arc's radius, or loaded beyond the body's weight - is most likely a
+   !! misplaced surface (a sign of PSI, a point given at the wrong end).
+   function pair_initial_notes(this, st, extra, aux) result(notes)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(string_t), allocatable :: notes(:)
+      type(pair_state_t) :: ps
+      real(wp) :: weight
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      allocate (notes(0))
+      call pair_eval(this, st, ps)
+      if (ps%split%status /= split_ok) return
+      weight = g_std*sum(this%body%mass)
+      if (ps%cs%delta > 0.5_wp*ps%f%r .or. ps%split%force > weight) call append_string(notes, &
+         '*SURFACES surface '//itoa(this%k)//' ('//trim(surface_name(this%k))//'): body point '//itoa(this%i) &
+         //' ('//trim(arc_name(this%i))//') starts '//cents(ps%cs%delta)//' in into it, with a force of ' &
+         //cents(ps%split%force)//' lb (half its arc''s radius is '//cents(0.5_wp*ps%f%r)//' in, the body''s ' &
+         //'weight '//cents(weight)//' lb): is the surface where it should be? (docs/contacts.md D-C14)')
+   contains
+      function cents(x) result(s)
+         real(wp), intent(in) :: x
+         character(len=:), allocatable :: s
+         s = num(anint(100.0_wp*x)/100.0_wp)
+      end function cents
+   end function pair_initial_notes
 
    !> The largest P over the accepted steps, with T and delta then (none
    !! when the pair never touched).

@@ -34,6 +34,7 @@ module effect_base
    use model, only: n_dof, n_seg
    use vehicle_motion, only: vehicle_state_t
    use output_series, only: output_series_t
+   use text_io, only: string_t
    implicit none
    private
 
@@ -214,6 +215,7 @@ module effect_base
       procedure :: failure_text => effect_failure_text
       procedure :: point_forces => effect_point_forces
       procedure :: peaks => effect_peaks
+      procedure :: initial_notes => effect_initial_notes
    end type effect_t
 
    !> An effect in a list.
@@ -316,6 +318,18 @@ contains
       associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux), u4 => result%n_events)
       end associate
    end subroutine effect_accept
+
+   !> What the user should know of the effect at the initial state st (a
+   !! warning each, for the listing and standard error): nothing by default.
+   function effect_initial_notes(this, st, extra, aux) result(notes)
+      class(effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(string_t), allocatable :: notes(:)
+      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux))
+      end associate
+      allocate (notes(0))
+   end function effect_initial_notes
 
    !> The largest values the effect kept over the accepted steps (effect_peak_t).
    !! None by default.

@@ -11,7 +11,7 @@ module run_case_mod
    use default_deck, only: default_deck_lines
    use model_builder, only: build_model
    use model, only: model_t
-   use simulation, only: run_simulation
+   use simulation, only: run_simulation, initial_warnings
    use run_summary, only: run_summary_t
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
@@ -75,6 +75,7 @@ contains
       end do
       if (err%code /= exit_io) call deck_finish(deck, err)
       if (.not. err%failed()) call build_model(deck, m, err)
+      if (.not. err%failed()) m%warnings = [m%warnings, initial_warnings(m)]
    end subroutine read_case_deck
 
    !> Run one case: read the decks, simulate (C.2-C.7), write the listing

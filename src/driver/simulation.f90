@@ -9,6 +9,7 @@ module simulation
    use acceleration_criteria, only: criteria_new
    use error_handling, only: error_t, error_set, exit_numerical
    use strings, only: num
+   use text_io, only: string_t
    use model, only: model_t, n_dof, n_joint, n_injury, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state, &
       rhs_status_text, rhs_diverged, rhs_not_finite
@@ -30,7 +31,7 @@ module simulation
    implicit none
    private
 
-   public :: run_simulation, run_system
+   public :: run_simulation, run_system, initial_warnings
 
    !> A balance error below this fraction of the largest kinetic energy is rounding.
    real(wp), parameter :: rounding = 1.0e-9_wp
@@ -54,6 +55,33 @@ contains
          call run_system(m, sys, summary, err)
       end if
    end subroutine run_simulation
+
+   !> What the model's effects say of its initial state (effect_t%
+   !! initial_notes: a contact pair starting deep in its surface): warnings,
+   !! before the run.
+   function initial_warnings(m) result(notes)
+      type(model_t), intent(in) :: m
+      type(string_t), allocatable :: notes(:)
+      type(crash_system_t) :: sys
+      type(body_state_t) :: st
+      real(wp), allocatable :: y(:)
+      integer :: o, k, xo, ao
+      allocate (notes(0))
+      call system_build(m, sys)
+      call system_initial_y(sys, y)
+      do o = 1, size(sys%occupants)
+         st = system_body_state(sys, o, 0.0_wp, y)
+         associate (occ => sys%occupants(o))
+            do k = 1, size(occ%effects)
+               xo = occ%extra_offset(k)
+               ao = occ%aux_offset(k)
+               associate (e => occ%effects(k)%e)
+                  notes = [notes, e%initial_notes(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux))]
+               end associate
+            end do
+         end associate
+      end do
+   end function initial_warnings
 
    !> Run an assembled system (its occupants may come from several models;
    !! m gives the time controls, options and the vehicle).
