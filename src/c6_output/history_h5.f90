@@ -24,7 +24,10 @@
 !! extend/select/write cost; `flush` writes whatever is pending, then
 !! H5Fflush(H5F_SCOPE_GLOBAL) hands everything to the operating system
 !! (no fsync: this survives a killed process, not a system crash). `open`
-!! and `add_series` flush too, so the file is readable from the start.
+!! and `add_series` flush too, so the file is readable from the start
+!! (a caller adding many series at once may ask add_series not to, and
+!! flush once after the last: a flush per series made the setup of a
+!! file of some 400 series quadratic).
 !!
 !! A run killed between flushes leaves a readable file holding everything
 !! up to the last flush (tests/h5/h5_killed_run.sh). This relies on the
@@ -261,8 +264,8 @@ contains
    !! chooses the dataset's shape: 1, rows only, for a series of one
    !! column (such as /time); 2, (rows, ncols). By default a one-column
    !! series is 1-D and any other 2-D. `id` is what `append` takes; 0 when
-   !! it fails.
-   subroutine history_file_add_series(this, name, columns, units, description, id, err, rank)
+   !! it fails. flush (default true): flush the file after it.
+   subroutine history_file_add_series(this, name, columns, units, description, id, err, rank, flush)
       class(history_file_t), intent(inout) :: this
       character(len=*), intent(in) :: name
       character(len=*), intent(in) :: columns(:)
@@ -271,6 +274,7 @@ contains
       integer, intent(out) :: id
       type(error_t), intent(inout) :: err
       integer, intent(in), optional :: rank
+      logical, intent(in), optional :: flush
       type(series_t), allocatable :: bigger(:)
       type(error_t) :: local
       integer(hid_t) :: dset
@@ -339,6 +343,9 @@ contains
          allocate (s%buf(s%ncols, block_rows))
       end associate
       ! The file's structure is then on disk even if no row ever is.
+      if (present(flush)) then
+         if (.not. flush) return
+      end if
       call flush_file(this, 'cannot add series '//trim(name)//' to HDF5 file '//this%path, local)
       if (local%failed()) call error_set(err, local%code, local%message)
    end subroutine history_file_add_series
@@ -452,17 +459,24 @@ contains
 
    !> Write every pending row, then have HDF5 write all it holds to the
    !! file: a run stopped after this leaves a readable file with everything
-   !! appended so far.
-   subroutine history_file_flush(this, err)
+   !! appended so far. rows = .false.: HDF5's part only - what add_event and
+   !! the series' full blocks wrote, the rows still pending left for the
+   !! next flush (an event made durable at once without the partial block
+   !! of every series, which was most of a flush's cost).
+   subroutine history_file_flush(this, err, rows)
       class(history_file_t), intent(inout) :: this
       type(error_t), intent(inout) :: err
+      logical, intent(in), optional :: rows
       type(error_t) :: local
+      logical :: with_rows
 
       if (.not. this%is_open()) then
          call error_set(err, exit_io, 'cannot flush: no HDF5 file is open')
          return
       end if
-      call flush_file(this, 'cannot flush HDF5 file '//this%path, local)
+      with_rows = .true.
+      if (present(rows)) with_rows = rows
+      call flush_file(this, 'cannot flush HDF5 file '//this%path, local, with_rows)
       if (local%failed()) call error_set(err, local%code, local%message)
    end subroutine history_file_flush
 
@@ -567,10 +581,11 @@ contains
    !> Write the pending rows of every series, then have HDF5 write
    !! everything it holds for the file (metadata, chunk caches) to the
    !! operating system. `failure` says what failed if that does.
-   subroutine flush_file(this, failure, err)
+   subroutine flush_file(this, failure, err, rows)
       class(history_file_t), intent(inout) :: this
       character(len=*), intent(in) :: failure
       type(error_t), intent(inout) :: err
+      logical, intent(in), optional :: rows
       integer :: k, hdferr
 
       if (allocated(this%failure)) then
@@ -578,6 +593,9 @@ contains
          return
       end if
       do k = 1, this%nseries
+         if (present(rows)) then
+            if (.not. rows) exit                ! (the pending rows stay pending)
+         end if
          call write_block(this, this%series(k), err)
          if (allocated(this%failure)) return
       end do

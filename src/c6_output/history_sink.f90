@@ -65,7 +65,7 @@ contains
       this%id = 0
       if (err%failed()) return
       call this%file%add_series('time', [character(len=4) :: 't'], [character(len=4) :: 's'], &
-                                'print times (C.6)', this%id_time, err)
+                                'print times (C.6)', this%id_time, err, flush=.false.)
       do k = 1, size(reg%series)
          if (err%failed()) return
          associate (s => reg%series(k))
@@ -73,11 +73,13 @@ contains
                          s%description, this%id(k))
          end associate
       end do
+      ! one flush for the whole structure (one per series was most of the file's cost)
+      if (.not. err%failed()) call this%file%flush(err)
    contains
       subroutine add_one(name, columns, units, description, id)
          character(len=*), intent(in) :: name, columns(:), units(:), description
          integer, intent(out) :: id
-         call this%file%add_series(name, columns, units, description, id, err)
+         call this%file%add_series(name, columns, units, description, id, err, flush=.false.)
       end subroutine add_one
    end subroutine sink_begin
 
@@ -110,7 +112,9 @@ contains
       if (err%failed()) return
       text = event_description(e)
       call this%file%add_event(e%t, e%kind, e%index, text, err)
-      if (.not. err%failed()) call this%file%flush(err)
+      ! the event on disk at once; the series' pending rows wait for the next
+      ! flush (every flush_every records), as they would without it
+      if (.not. err%failed()) call this%file%flush(err, rows=.false.)
    end subroutine sink_event
 
    !> The summary's maxima and their times: /summary/maxima (values) and
