@@ -2,6 +2,7 @@
 !! b with a minus sign (b_i = C_i - G_i + ...).
 module gravity
    use kinds, only: wp
+   use segment_trig, only: segment_cos_sin
    use model, only: n_seg, n_dof, hip_y
    use preliminary, only: body_constants_t
    use model, only: body_section_t
@@ -33,13 +34,14 @@ contains
       type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: g, z0(n_dof)
       type(gravity_effect_t) :: e
+      real(wp) :: c0(n_seg)
       e%name = 'gravity'
       e%title = 'gravity (C.4.b)'
       e%external = .true.
       e%bc = bc
       e%body = body
       e%g = g
-      e%s0 = sin(z0(1:n_seg))
+      call segment_cos_sin(z0(1:n_seg), c0, e%s0)      ! (segment_trig: the same bits in every build)
       e%y0 = z0(hip_y)
       e%has_energy(energy_stored) = .true.
    end function gravity_effect

@@ -14,6 +14,7 @@
 !! F . dP/dz_k with the vehicle held fixed (virtual work).
 module seat_geometry
    use kinds, only: wp, deg
+   use segment_trig, only: segment_cos_sin
    use model, only: n_dof, n_seg, hip_x, hip_y
    use effect_base, only: body_state_t, point_force_list_t, point_force_add
    use dead_band, only: slip_of    ! (the hip slides once |x_1'| reaches xi, A-S4)
@@ -85,8 +86,7 @@ contains
       st%t = 0.0_wp
       st%z = z0
       st%zdot = 0.0_wp
-      st%c = cos(z0(1:n_seg))
-      st%s = sin(z0(1:n_seg))
+      call segment_cos_sin(z0(1:n_seg), st%c, st%s)     ! (segment_trig: the same bits in every build)
       st%vehicle%pos = [0.0_wp, 0.0_wp, phi0]
       st%vehicle%vel = 0.0_wp
       st%vehicle%acc = 0.0_wp

@@ -5,6 +5,7 @@
 !! directions (two occupants; Section D) have room here.
 module occupant
    use kinds, only: wp, i8
+   use segment_trig, only: segment_cos_sin
    use model, only: model_t, body_section_t, n_dof, n_seg, solver_dense
    use preliminary, only: body_constants_t, body_constants, initial_state
    use effect_base, only: effect_t, effect_slot_t, body_state_t, point_force_list_t, guard_none, guard_holds
@@ -139,8 +140,7 @@ contains
       st%t = t
       st%z = y(occ%z_offset + 1:occ%z_offset + n_dof)
       st%zdot = y(occ%zdot_offset + 1:occ%zdot_offset + n_dof)
-      st%c = cos(st%z(1:n_seg))
-      st%s = sin(st%z(1:n_seg))
+      call segment_cos_sin(st%z(1:n_seg), st%c, st%s)     ! (segment_trig: the same bits in every build)
    end subroutine occupant_state
 
    !> The vehicle's state at t into st, after occupant_state, and then the
