@@ -80,6 +80,9 @@ module contact_forces
       !! broken glass is cut, once per episode of contact
       real(wp) :: fsw = 0.0_wp                  !< 0: never shatters
       logical :: shattered = .false., cutting = .false.
+      !> P at the last accepted state (the glass: where its break is located
+      !! from, D-C24b)
+      real(wp) :: p_accepted = 0.0_wp
       real(wp) :: e_switch = 0.0_wp
       !> the largest P over the accepted steps, when, and where (T and delta
       !! then): the summary's contact peaks (peaks)
@@ -110,10 +113,13 @@ module contact_forces
       procedure :: failure_text => pair_failure_text
       procedure :: peaks => pair_peaks
       procedure :: initial_notes => pair_initial_notes
+      procedure :: locate => pair_locate
    end type contact_pair_effect_t
 
    !> far_check's side where the bound does not decide it
    integer, parameter :: side_unknown = 2
+   !> D-C24b: the glass breaks within this fraction above FSW (located)
+   real(wp), parameter :: locate_tol = 1.0e-3_wp
 
    !> Everything about the pair at one state (pair_eval sets every field;
    !! no default values, which every evaluation would store first). The
@@ -174,6 +180,7 @@ contains
       e%m_free = free_point_mass(body, i)
       if (present(undesired)) e%undesired = undesired
       if (present(fsw)) e%fsw = fsw
+      e%locates = e%fsw > 0.0_wp          ! the glass's break (D-C24b)
       e%needs_vehicle = .true.
       e%needs_joints = .true.                          ! pair_far's bound
       e%external = .true.
@@ -516,6 +523,30 @@ contains
          this%guard%kind = merge(guard_slab, guard_half_plane, behind .and. this%surface%kind == surface_flat)
    end subroutine set_behind
 
+   !> D-C24b: where in the step just taken the glass's force P reached FSW,
+   !! when it went from below FSW at the last accepted state to beyond it at
+   !! st by more than locate_tol: the fraction of the step, by the secant of
+   !! P through the two states, aimed at FSW (1 + locate_tol/2) so that the
+   !! glass breaks at the state the driver steps to. 0 otherwise.
+   pure real(wp) function pair_locate(this, st, extra, aux) result(theta)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(pair_state_t) :: ps
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      theta = 0.0_wp
+      if (.not. this%fsw > 0.0_wp .or. this%shattered .or. .not. this%p_accepted < this%fsw) return
+      if (this%exit_far) then
+         if (pair_far(this, st)) return
+      end if
+      call pair_eval(this, st, ps)
+      if (ps%split%status /= split_ok) return
+      if (.not. ps%split%force > this%fsw*(1.0_wp + locate_tol)) return
+      theta = (this%fsw*(1.0_wp + 0.5_wp*locate_tol) - this%p_accepted)/(ps%split%force - this%p_accepted)
+      theta = min(max(theta, 0.0_wp), 1.0_wp)
+   end function pair_locate
+
    !> D-C14 (7): a pair that starts deep in its surface - more than half its
    !! arc's radius, or loaded beyond the body's weight - is most likely a
    !! misplaced surface (a sign of PSI, a point given at the wrong end).
@@ -583,6 +614,7 @@ contains
             end if
             ! no force: the glass holds (D-C24; broken glass, whose cut needs
             ! delta, has side_unknown), and the loading cycle keeps its memory
+            this%p_accepted = 0.0_wp
             return
          end if
       end if
@@ -633,6 +665,7 @@ contains
                                    value=ramp_width(this, ps%split%force), limit=this%xi, surface=this%k))
          end if
       end if
+      this%p_accepted = ps%split%force
       if (ps%split%status == split_ok .and. ps%split%force > this%peak_p) then
          this%peak_p = ps%split%force
          this%peak_t = st%t

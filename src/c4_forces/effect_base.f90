@@ -199,6 +199,9 @@ module effect_base
       logical :: needs_joints = .false.
       logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)
       logical :: has_memory = .false.    !< its accept changes something (only such are called)
+      !> a jump of its right-hand side can be located inside a step (locate;
+      !! only such are asked)
+      logical :: locates = .false.
       logical :: has_energy(n_energy_kinds) = .false.
       !> applies forces from outside the body, which `point_forces` reports
       logical :: external = .false.
@@ -215,6 +218,7 @@ module effect_base
       procedure :: failure_text => effect_failure_text
       procedure :: point_forces => effect_point_forces
       procedure :: peaks => effect_peaks
+      procedure :: locate => effect_locate
       procedure :: initial_notes => effect_initial_notes
    end type effect_t
 
@@ -318,6 +322,21 @@ contains
       associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux), u4 => result%n_events)
       end associate
    end subroutine effect_accept
+
+   !> Where inside the step just taken the effect's right-hand side should
+   !! have jumped, as a fraction theta of the step (0 < theta < 1) from the
+   !! last accepted state to st, a state not yet accepted (memory
+   !! read-only); 0 when it need not be located. The driver then takes the
+   !! step again to that fraction (simulation: the windshield's break,
+   !! D-C24b). The default effect never asks.
+   pure real(wp) function effect_locate(this, st, extra, aux) result(theta)
+      class(effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux))
+      end associate
+      theta = 0.0_wp
+   end function effect_locate
 
    !> What the user should know of the effect at the initial state st (a
    !! warning each, for the listing and standard error): nothing by default.

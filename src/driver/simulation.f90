@@ -96,9 +96,9 @@ contains
       type(end_state_t) :: end_state
       type(output_registry_t) :: reg
       type(output_frame_t) :: frame
-      real(wp), allocatable :: y(:), total0(:), f_accepted(:)
-      real(wp) :: t, t_limit, t_frame
-      logical :: fixed_step, print_now, at_end
+      real(wp), allocatable :: y(:), total0(:), f_accepted(:), y_prev(:)
+      real(wp) :: t, t_limit, t_frame, t_prev, t_resume, t_prev_end
+      logical :: fixed_step, print_now, at_end, locating, located
       integer :: status, reason, o, i, n_occ
       integer(i8) :: n, n_steps, print_every, next_print
       type(body_state_t) :: st
@@ -154,18 +154,39 @@ contains
       next_print = 1
       n = 0
       t_frame = 0.0_wp
+      ! D-C24b: a jump an effect can locate (the windshield's break) is stepped
+      ! to, under RK4 and Dormand-Prince (Adams-Moulton keeps its fixed step)
+      locating = m%options%nint /= nint_adams .and. any_locating()
+      if (locating) allocate (y_prev(size(y)))
+      t_resume = -1.0_wp
       do while (reason == end_none .and. .not. out_err%failed())
          if (fixed_step) then
             t_limit = huge(1.0_wp)
+            if (t_resume > t) t_limit = t_resume    ! back onto the grid after a located jump
+            t_resume = -1.0_wp
          else
             t_limit = min(real(next_print, wp)*m%time%dt_print, m%time%t_max)
          end if
+         if (locating) then
+            y_prev = y
+            t_prev = t
+         end if
          call stepper%advance(sys, t, y, t_limit, status)
+         if (status == step_ok .and. locating) call locate_jump(located, status)
          if (status /= step_ok) then
             ! keep the last accepted state in the output, then stop
             if (t > t_frame) call output_frame(t)
             call fail(status)
             exit
+         end if
+         if (locating .and. located) then
+            ! an accepted state inside the step, not a step of the grid nor a
+            ! print time (unless the run ends there); the step goes on from it
+            call on_accepted(t, .false., reason)
+            if (fixed_step) t_resume = t_prev_end
+            if (reason /= end_none) call output_frame(t)
+            if (summary%end_reason == end_energy) reason = end_energy
+            cycle
          end if
          n = n + 1
          ! whether TMAX is reached here is known before the step's memory
@@ -191,6 +212,65 @@ contains
       call merge_output_error()
 
    contains
+
+      !> Whether an effect of the system can locate a jump (effect_t%locates).
+      logical function any_locating()
+         integer :: oo, kk
+         any_locating = .false.
+         do oo = 1, n_occ
+            do kk = 1, size(sys%occupants(oo)%effects)
+               any_locating = any_locating .or. sys%occupants(oo)%effects(kk)%e%locates
+            end do
+         end do
+      end function any_locating
+
+      !> D-C24b: after a step from (t_prev, y_prev) to (t, y), ask the effects
+      !! that can (effect_t%locate) where inside it their right-hand side
+      !! should have jumped; while one answers, take the step again from
+      !! t_prev to that fraction of it (at most max_locate times, each answer
+      !! a secant from the accepted state). located: (t, y) is now inside the
+      !! step, t_prev_end its end.
+      subroutine locate_jump(done, stat)
+         logical, intent(out) :: done
+         integer, intent(out) :: stat
+         integer, parameter :: max_locate = 8
+         real(wp) :: theta, theta_k
+         integer :: k, oo, kk, xo2, ao2
+         type(body_state_t) :: st2
+         done = .false.
+         stat = step_ok
+         t_prev_end = t
+         do k = 1, max_locate
+            theta = 1.0_wp
+            do oo = 1, n_occ
+               associate (occ => sys%occupants(oo))
+                  st2 = system_body_state(sys, oo, t, y)
+                  do kk = 1, size(occ%effects)
+                     associate (e => occ%effects(kk)%e)
+                        if (.not. e%locates) cycle
+                        xo2 = occ%extra_offset(kk)
+                        ao2 = occ%aux_offset(kk)
+                        theta_k = e%locate(st2, y(xo2 + 1:xo2 + 2*e%n_extra), y(ao2 + 1:ao2 + e%n_aux))
+                        if (theta_k > 0.0_wp) theta = min(theta, theta_k)
+                     end associate
+                  end do
+               end associate
+            end do
+            if (.not. theta < 1.0_wp) return
+            ! the step again, to the fraction theta of what it was
+            theta = t_prev + theta*(t - t_prev)
+            if (.not. (theta > t_prev .and. theta < t)) return
+            y = y_prev
+            t = t_prev
+            ! the step taken is not kept: a rejected step in the statistics
+            stepper%stats%steps = stepper%stats%steps - 1
+            stepper%stats%rejected = stepper%stats%rejected + 1
+            call stepper%restart(sys, t, y, stat)
+            if (stat == step_ok) call stepper%advance(sys, t, y, theta, stat)
+            if (stat /= step_ok) return
+            done = .true.
+         end do
+      end subroutine locate_jump
 
       !> An output error outweighs a numerical failure (docs/usage.md): the
       !! outputs that would show the run up to the failure are incomplete.
