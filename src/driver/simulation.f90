@@ -262,10 +262,12 @@ contains
             if (.not. (theta > t_prev .and. theta < t)) return
             y = y_prev
             t = t_prev
-            ! the step taken is not kept: a rejected step in the statistics
+            ! the step taken is not kept: a rejected step in the statistics (and
+            ! its start again no restart after a jump)
             stepper%stats%steps = stepper%stats%steps - 1
             stepper%stats%rejected = stepper%stats%rejected + 1
             call stepper%restart(sys, t, y, stat)
+            stepper%stats%restarts = stepper%stats%restarts - 1
             if (stat == step_ok) call stepper%advance(sys, t, y, theta, stat)
             if (stat /= step_ok) return
             done = .true.
