@@ -72,6 +72,7 @@ contains
       call build_interior(deck, m%options%nbody, m%interior, err)
       if (.not. err%failed()) call check_contact_materials(deck, m, err)
       if (.not. err%failed()) call warn_unused_surfaces(deck, m)
+      if (.not. err%failed()) call warn_surface_angles(deck, m)
       if (m%options%nbody /= 1 .and. .not. any(m%interior%given)) call append_string(m%warnings, &
          located(deck, deck%group(g_options)%card(1), 'NBODY = '//itoa(m%options%nbody)//' (the ' &
          //trim(merge('front-seat passenger', 'rear-seat passenger ', m%options%nbody == 2))//') selects the ' &
@@ -228,6 +229,38 @@ contains
          end do
       end associate
    end subroutine warn_unused_surfaces
+
+   !> D-C14 (7): a surface's PSI outside the range its orientation allows
+   !! (docs/contacts.md 2.1: the occupant is on the left of e(PSI), so a
+   !! reversed angle turns the surface's face away from him) - a warning at
+   !! its card. The circle, the lines and the derived surfaces have none.
+   subroutine warn_surface_angles(deck, m)
+      type(deck_t), intent(in) :: deck
+      type(model_t), intent(inout) :: m
+      integer, parameter :: n_ranged = 11
+      integer, parameter :: code(n_ranged) = [21, 2, 3, 4, 5, 6, 7, 8, 9, 29, 26]
+      real(wp), parameter :: low(n_ranged) = [45.0_wp, 95.0_wp, 45.0_wp, -45.0_wp, 45.0_wp, 10.0_wp, 45.0_wp, &
+                                              20.0_wp, -135.0_wp, -135.0_wp, 0.0_wp]
+      real(wp), parameter :: high(n_ranged) = [135.0_wp, 175.0_wp, 180.0_wp, 60.0_wp, 135.0_wp, 80.0_wp, 150.0_wp, &
+                                               110.0_wp, -45.0_wp, -45.0_wp, 80.0_wp]
+      real(wp) :: psi
+      integer :: q, k, r
+      associate (g => deck%group(g_surfaces))
+         do q = 1, g%n
+            k = g%card(q)%index
+            r = findloc(code, k, 1)
+            if (r == 0) cycle
+            if (.not. card_given(deck, g_surfaces, g%card(q), 'PSI')) cycle
+            psi = modulo(m%interior%psi(k)/deg + 180.0_wp, 360.0_wp) - 180.0_wp   ! (-180, 180]
+            if (psi <= -180.0_wp) psi = psi + 360.0_wp
+            if (psi >= low(r) .and. psi <= high(r)) cycle
+            call append_string(m%warnings, located(deck, g%card(q), '*SURFACES surface '//itoa(k)//' (' &
+               //surface_name(k)//'): PSI = '//num(anint(100.0_wp*psi)/100.0_wp)//' deg is outside the usual ' &
+               //num(low(r))//' to '//num(high(r))//' deg (docs/contacts.md 2.1): the occupant must be on the ' &
+               //'left of e(PSI), the direction from the far end to (X, Y); is the angle reversed?'))
+         end do
+      end associate
+   end subroutine warn_surface_angles
 
    !> *SURFACES, *INTERIOR, *CONTACTOFF (C.4.f, Table 3; docs/contacts.md
    !! 2.4): each surface's fields as Table 3 marks them, the ones f.2's
