@@ -563,17 +563,37 @@ contains
       call pair_eval(this, st, ps)
       if (ps%split%status /= split_ok) return
       weight = g_std*sum(this%body%mass)
-      if (ps%cs%delta > 0.5_wp*ps%f%r .or. ps%split%force > weight) call append_string(notes, &
-         '*SURFACES surface '//itoa(this%k)//' ('//trim(surface_name(this%k))//'): body point '//itoa(this%i) &
-         //' ('//trim(arc_name(this%i))//') starts '//cents(ps%cs%delta)//' in into it, with a force of ' &
-         //cents(ps%split%force)//' lb (half its arc''s radius is '//cents(0.5_wp*ps%f%r)//' in, the body''s ' &
-         //'weight '//cents(weight)//' lb): is the surface where it should be? (docs/contacts.md D-C14)')
+      ! (an arc of radius 0, a point, is judged by its force alone)
+      if ((ps%f%r > 0.0_wp .and. ps%cs%delta > 0.5_wp*ps%f%r) .or. ps%split%force > weight) &
+         call append_string(notes, '*SURFACES surface '//itoa(this%k)//' ('//trim(surface_name(this%k))//')' &
+         //placed_by(this%k)//': body point '//itoa(this%i)//' ('//trim(arc_name(this%i))//') starts ' &
+         //cents(ps%cs%delta)//' in into it, with a force of '//cents(ps%split%force)//' lb (half its arc''s ' &
+         //'radius is '//cents(0.5_wp*ps%f%r)//' in, the body''s weight '//cents(weight)//' lb): is the ' &
+         //'surface where it should be? (docs/contacts.md D-C14)')
    contains
       function cents(x) result(s)
          real(wp), intent(in) :: x
          character(len=:), allocatable :: s
          s = num(anint(100.0_wp*x)/100.0_wp)
       end function cents
+
+      !> The card whose fields place a surface that f.2's relations derive.
+      function placed_by(k) result(s)
+         integer, intent(in) :: k
+         character(len=:), allocatable :: s
+         select case (k)
+         case (4, 11)
+            s = ', placed by surface 2''s card'
+         case (10, 30)
+            s = ', placed by surfaces 10 and 8'
+         case (12)
+            s = ', placed by surface 6''s card'
+         case (25)
+            s = ', the edge of surface 5'
+         case default
+            s = ''
+         end select
+      end function placed_by
    end function pair_initial_notes
 
    !> The largest P over the accepted steps, with T and delta then (none
@@ -646,6 +666,7 @@ contains
       ! reaches FSW (never by a trial state); then a head through it is cut
       if (this%fsw > 0.0_wp .and. .not. this%shattered .and. ps%split%force >= this%fsw) then
          this%shattered = .true.
+         this%locates = .false.                                             ! nothing left to locate (D-C24b)
          if (this%guard%kind /= guard_none) this%guard%kind = guard_always   ! broken glass carries nothing
          this%e_switch = stored_energy(this, aux)   ! the glass's stored energy, released
          result%restart = .true.

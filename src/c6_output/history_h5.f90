@@ -29,8 +29,9 @@
 !! flush once after the last: a flush per series made the setup of a
 !! file of some 400 series quadratic).
 !!
-!! A run killed between flushes leaves a readable file holding everything
-!! up to the last flush (tests/h5/h5_killed_run.sh). This relies on the
+!! A run killed between flushes leaves a readable file holding the series'
+!! rows up to the last flush and every event added (the sink flushes
+!! HDF5's part, add_event's writes, at each event; tests/h5/h5_killed_run.sh). This relies on the
 !! HDF5 default file format (libver bounds earliest..latest, superblock
 !! v0), whose superblock has no "open for writing" flag: with libver
 !! latest (and so with SWMR, which needs it) a killed writer leaves a file

@@ -14,7 +14,7 @@ module simulation
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state, &
       rhs_status_text, rhs_diverged, rhs_not_finite
    use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
-   use ode_system, only: stepper_t, step_ok, step_rhs_failed, step_status_text
+   use ode_system, only: stepper_t, step_ok, step_rhs_failed, step_status_text, step_stats_t
    use runge_kutta4, only: rk4_stepper_t
    use adams_moulton, only: am_stepper_t, am_start_euler, am_start_rk4
    use dormand_prince, only: dopri_stepper_t
@@ -96,9 +96,10 @@ contains
       type(end_state_t) :: end_state
       type(output_registry_t) :: reg
       type(output_frame_t) :: frame
-      real(wp), allocatable :: y(:), total0(:), f_accepted(:), y_prev(:)
+      real(wp), allocatable :: y(:), total0(:), f_accepted(:), y_prev(:), y_end(:)
       real(wp) :: t, t_limit, t_frame, t_prev, t_resume, t_prev_end
       logical :: fixed_step, print_now, at_end, locating, located
+      type(step_stats_t) :: stats_prev
       integer :: status, reason, o, i, n_occ
       integer(i8) :: n, n_steps, print_every, next_print
       type(body_state_t) :: st
@@ -157,8 +158,9 @@ contains
       ! D-C24b: a jump an effect can locate (the windshield's break) is stepped
       ! to, under RK4 and Dormand-Prince (Adams-Moulton keeps its fixed step)
       locating = m%options%nint /= nint_adams .and. any_locating()
-      if (locating) allocate (y_prev(size(y)))
+      if (locating) allocate (y_prev(size(y)), y_end(size(y)))
       t_resume = -1.0_wp
+      located = .false.
       do while (reason == end_none .and. .not. out_err%failed())
          if (fixed_step) then
             t_limit = huge(1.0_wp)
@@ -170,8 +172,10 @@ contains
          if (locating) then
             y_prev = y
             t_prev = t
+            stats_prev = stepper%stats
          end if
          call stepper%advance(sys, t, y, t_limit, status)
+         located = .false.
          if (status == step_ok .and. locating) call locate_jump(located, status)
          if (status /= step_ok) then
             ! keep the last accepted state in the output, then stop
@@ -228,51 +232,81 @@ contains
       !! that can (effect_t%locate) where inside it their right-hand side
       !! should have jumped; while one answers, take the step again from
       !! t_prev to that fraction of it (at most max_locate times, each answer
-      !! a secant from the accepted state). located: (t, y) is now inside the
-      !! step, t_prev_end its end.
+      !! a secant from the accepted state). done: (t, y) is now inside the
+      !! step, t_prev_end its end. A step taken again that fails gives the
+      !! step as first taken back (the jump then at its end, as without
+      !! location), and only if that fails too does the run fail (stat).
       subroutine locate_jump(done, stat)
          logical, intent(out) :: done
          integer, intent(out) :: stat
          integer, parameter :: max_locate = 8
-         real(wp) :: theta, theta_k
-         integer :: k, oo, kk, xo2, ao2
-         type(body_state_t) :: st2
+         real(wp) :: theta, t_to
+         integer :: k
          done = .false.
          stat = step_ok
          t_prev_end = t
+         y_end = y
          do k = 1, max_locate
-            theta = 1.0_wp
-            do oo = 1, n_occ
-               associate (occ => sys%occupants(oo))
-                  st2 = system_body_state(sys, oo, t, y)
-                  do kk = 1, size(occ%effects)
-                     associate (e => occ%effects(kk)%e)
-                        if (.not. e%locates) cycle
-                        xo2 = occ%extra_offset(kk)
-                        ao2 = occ%aux_offset(kk)
-                        theta_k = e%locate(st2, y(xo2 + 1:xo2 + 2*e%n_extra), y(ao2 + 1:ao2 + e%n_aux))
-                        if (theta_k > 0.0_wp) theta = min(theta, theta_k)
-                     end associate
-                  end do
-               end associate
-            end do
+            theta = fraction_asked()
             if (.not. theta < 1.0_wp) return
             ! the step again, to the fraction theta of what it was
-            theta = t_prev + theta*(t - t_prev)
-            if (.not. (theta > t_prev .and. theta < t)) return
+            t_to = t_prev + theta*(t - t_prev)
+            if (.not. (t_to > t_prev .and. t_to < t)) return
             y = y_prev
             t = t_prev
-            ! the step taken is not kept: a rejected step in the statistics (and
-            ! its start again no restart after a jump)
+            ! the step taken is not kept: a rejected step in the statistics (its
+            ! size not among the accepted ones, its start again no restart after
+            ! a jump)
             stepper%stats%steps = stepper%stats%steps - 1
             stepper%stats%rejected = stepper%stats%rejected + 1
+            stepper%stats%h_min = stats_prev%h_min
+            stepper%stats%h_max = stats_prev%h_max
             call stepper%restart(sys, t, y, stat)
             stepper%stats%restarts = stepper%stats%restarts - 1
-            if (stat == step_ok) call stepper%advance(sys, t, y, theta, stat)
-            if (stat /= step_ok) return
+            if (stat == step_ok) call stepper%advance(sys, t, y, t_to, stat)
+            if (stat /= step_ok) then
+               ! back to the step as first taken (memory untouched since: the
+               ! same derivative), kept with the jump at its end
+               y = y_end
+               t = t_prev_end
+               stepper%stats%steps = stepper%stats%steps + 1
+               stepper%stats%h_min = min(stats_prev%h_min, t_prev_end - t_prev)
+               stepper%stats%h_max = max(stats_prev%h_max, t_prev_end - t_prev)
+               call stepper%restart(sys, t, y, stat)
+               stepper%stats%restarts = stepper%stats%restarts - 1
+               done = .false.
+               return
+            end if
             done = .true.
          end do
       end subroutine locate_jump
+
+      !> The smallest fraction of the last step at which an effect asks for
+      !! its jump (effect_t%locate), 1 when none asks; the body state is
+      !! made only for an occupant with an effect that may ask.
+      real(wp) function fraction_asked() result(theta)
+         real(wp) :: theta_k
+         integer :: oo, kk, xo2, ao2
+         type(body_state_t) :: st2
+         logical :: made
+         theta = 1.0_wp
+         do oo = 1, n_occ
+            associate (occ => sys%occupants(oo))
+               made = .false.
+               do kk = 1, size(occ%effects)
+                  associate (e => occ%effects(kk)%e)
+                     if (.not. e%locates) cycle
+                     if (.not. made) st2 = system_body_state(sys, oo, t, y)
+                     made = .true.
+                     xo2 = occ%extra_offset(kk)
+                     ao2 = occ%aux_offset(kk)
+                     theta_k = e%locate(st2, y(xo2 + 1:xo2 + 2*e%n_extra), y(ao2 + 1:ao2 + e%n_aux))
+                     if (theta_k > 0.0_wp) theta = min(theta, theta_k)
+                  end associate
+               end do
+            end associate
+         end do
+      end function fraction_asked
 
       !> An output error outweighs a numerical failure (docs/usage.md): the
       !! outputs that would show the run up to the failure are incomplete.
