@@ -27,7 +27,7 @@ module seat_springs
    use strings, only: num
    use model, only: n_dof, n_seg, hip_x, hip_y, seat_section_t, body_section_t
    use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
-      energy_supplied, n_energy_kinds, point_force_list_t
+      energy_supplied, n_energy_kinds, point_force_list_t, effect_peak_t
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_state_t, segment_cg_state
    use seat_geometry, only: add_seat_point_forces, contact_reference, &
@@ -46,6 +46,9 @@ module seat_springs
       real(wp) :: y_zo = 0.0_wp                 !< z_o tan gamma_o (A-S2)
       real(wp) :: w_pred = 0.0_wp, fps_pred = 0.0_wp  !< static loads of the initial posture
       type(seat_memory_t) :: mem
+      !> the largest hip and front-edge forces F_s, F'_s over the accepted
+      !! steps and when (memory, changed in accept; peaks)
+      real(wp) :: peak_hip = 0.0_wp, t_hip = 0.0_wp, peak_edge = 0.0_wp, t_edge = 0.0_wp
    contains
       procedure :: add_forces => springs_add_forces
       procedure :: accept => springs_accept
@@ -54,6 +57,7 @@ module seat_springs
       procedure :: outputs => springs_outputs
       procedure :: output_values => springs_output_values
       procedure :: describe => springs_describe
+      procedure :: peaks => springs_peaks
    end type seat_springs_t
 
    !> The seat at one state: figure 12's quantities, forces and powers.
@@ -245,6 +249,14 @@ contains
       associate (u1 => size(extra) + size(aux))
       end associate
       before = springs_state(this, st, this%mem)
+      if (before%f_s > this%peak_hip) then
+         this%peak_hip = before%f_s
+         this%t_hip = st%t
+      end if
+      if (before%fp_s > this%peak_edge) then
+         this%peak_edge = before%fp_s
+         this%t_edge = st%t
+      end if
       new = this%mem
       new%case = seat_case(before%z, this%p%z_hat)
       new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l8)
@@ -275,6 +287,20 @@ contains
       this%mem = new
       result%restart = .true.
    end subroutine springs_accept
+
+   !> The largest hip and front-edge forces over the accepted steps (none
+   !! that never acted).
+   function springs_peaks(this) result(p)
+      class(seat_springs_t), intent(in) :: this
+      type(effect_peak_t), allocatable :: p(:)
+      allocate (p(0))
+      if (this%peak_hip > 0.0_wp) p = [p, effect_peak_t(name=trim(this%name)//'_hip_force', title=this%title, &
+                                                       label='largest hip force F_s', unit='lb', value=this%peak_hip, &
+                                                       t=this%t_hip)]
+      if (this%peak_edge > 0.0_wp) p = [p, effect_peak_t(name=trim(this%name)//'_edge_force', title=this%title, &
+                                                         label='largest edge force F''_s', unit='lb', &
+                                                         value=this%peak_edge, t=this%t_edge)]
+   end function springs_peaks
 
    !> The hip's law on a switch into case (A or B) at compression d, where
    !! the law in force gives the elastic force f0 and the stored energy v0

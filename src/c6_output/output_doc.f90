@@ -42,8 +42,9 @@ contains
       end do
       call append_string(lines, '| `/summary/maxima`, `/summary/maxima_time` | (1, m) | head_acceleration, ' &
                          //'chest_acceleration (in/s^2), joint_i_min, joint_i_max (rad); with limits tension_j, ' &
-                         //'compression_i, shear_i (lb); for each contact pair that touched contact_i_k_force (lb), ' &
-                         //'contact_i_k_pos and contact_i_k_delta (in) at its largest force; the times (s) | ' &
+                         //'compression_i, shear_i (lb); the spring seat''s seat_hip_force, seat_edge_force (lb); ' &
+                         //'for each contact pair that touched contact_i_k_force (lb), contact_i_k_pos and ' &
+                         //'contact_i_k_delta (in) at its largest force; the times (s) | ' &
                          //'summary | the maxima over all accepted steps and when they happened, as the listing''s ' &
                          //'summary gives them |')
       call append_string(lines, '| `/summary/injury_criteria` | (1, 9) | head_hic15, head_hic15_t1, head_hic15_t2, ' &

@@ -1088,9 +1088,10 @@ contains
       type(occupant_summary_t), intent(in) :: os
       character(len=132) :: line
       integer :: i
+      logical :: new_time
       if (.not. allocated(os%peaks)) return
       if (size(os%peaks) == 0) return
-      call lst%heading('PEAKS OVER ALL ACCEPTED STEPS (CONTACT PAIRS: WHERE, T, AND HOW DEEP, DELTA)', &
+      call lst%heading('PEAKS OVER ALL ACCEPTED STEPS (THE SEAT; EACH CONTACT PAIR: WHERE, T, HOW DEEP, DELTA)', &
                        min(size(os%peaks), 12))
       do i = 1, size(os%peaks)
          associate (p => os%peaks(i))
@@ -1103,7 +1104,10 @@ contains
             line(44:67) = p%label
             line(68:79) = fixed(p%value, 12, 3)
             line(81:88) = p%unit
-            if (len_trim(line(3:42)) > 0) line(89:) = 'at t ='//fixed(p%t, 10, 5)//' s'
+            ! the time where the effect or the time changes (a pair's T and delta are at its peak's)
+            new_time = len_trim(line(3:42)) > 0
+            if (i > 1) new_time = new_time .or. p%t > os%peaks(i - 1)%t .or. p%t < os%peaks(i - 1)%t
+            if (new_time) line(89:) = 'at t ='//fixed(p%t, 10, 5)//' s'
             call lst%put(line)
          end associate
       end do
