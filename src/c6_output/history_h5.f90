@@ -26,8 +26,7 @@
 !! (no fsync: this survives a killed process, not a system crash). `open`
 !! and `add_series` flush too, so the file is readable from the start
 !! (a caller adding many series at once may ask add_series not to, and
-!! flush once after the last: a flush per series made the setup of a
-!! file of some 400 series quadratic).
+!! flush once after the last).
 !!
 !! A run killed between flushes leaves a readable file holding the series'
 !! rows up to the last flush and every event added (the sink flushes

@@ -73,7 +73,8 @@ contains
                          s%description, this%id(k))
          end associate
       end do
-      ! one flush for the whole structure (one per series was most of the file's cost)
+      ! one flush for the whole structure, after its last series (one per series
+      ! costs little more, some 1.5 M instructions for the default deck's file)
       if (.not. err%failed()) call this%file%flush(err)
    contains
       subroutine add_one(name, columns, units, description, id)
