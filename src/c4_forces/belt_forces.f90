@@ -18,9 +18,11 @@
 !! Generalized forces: B = -F sum_j d(delta_j)/dz over the chain's sections
 !! (erratum BE-1: the printed B_2, B_3 are not this).
 !!
-!! Energies (C.6 with E6-2): each element's W, E_abs, D_v are integrated
-!! (auxiliary quantities), its stored CE = W - DE and dissipated DE = (1 -
-!! R) E_abs + D_v; and the work the vehicle supplies through the belt,
+!! Energies (C.6; docs/loading.md 4): each element's stored energy is a
+!! function of its deformation and memory, its dissipated energy what its
+!! memory booked at turning points plus the work of its rate terms
+!! (integrated, an auxiliary quantity); and the work the vehicle supplies
+!! through the belt,
 !! integrated with the rate F (s' - g . z'), g = sum_j d(delta_j)/dz: the
 !! part of the chain's deformation rate that the moving anchorages make
 !! (the vehicle's motion at fixed z). Its difference from F s' is B . z',
@@ -30,12 +32,12 @@
 !! Memory (figure 18: cycle, turning point, residual deformation of every
 !! element) changes only in accept, from the accepted state.
 !!
-!! Each chain integrates one more auxiliary quantity: the unknown of its
-!! shared-deflection search (the first element's deformation, or the force
-!! when three or more elements share it), whose rate the split gives. It is
-!! only the search's start: from it one or two Newton steps reach the
-!! tolerance, where the bracket's ends would take several; the forces do not
-!! depend on it (docs/belts.md 3).
+!! A rate-dependent body under a webbing (the chest, the abdomen) has its
+!! deflection as a state of the chain (series_chain: one tension in every
+!! element, each with its own rate term), integrated with the motion. Each
+!! chain integrates one more auxiliary quantity: the unknown of its
+!! shared-deflection search, whose rate the split gives. It is only the
+!! search's start: the forces do not depend on it (docs/belts.md 3).
 module belt_forces
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_finite
    use kinds, only: wp, deg
@@ -47,9 +49,11 @@ module belt_forces
    use output_series, only: output_series_t, series_new, column
    use belt_geometry, only: belt_section_geometry_t, belt_kinematics_t, belt_body_t, &
       lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state, belt_body_fill, belt_section_add
-   use recurrent_loading, only: recurrent_law_t, loading_memory_t, belt_law, material_law, recurrent_accept, &
-      recurrent_energies, recurrent_is_elastic, n_loading_aux
-   use belt_shared_deflection, only: max_chain, chain_split_t, chain_split, chain_split_text, split_ok, scaled_law
+   use recurrent_loading, only: recurrent_law_t, belt_law, material_law
+   use series_chain, only: max_chain, chain_split_t, chain_split_text, split_ok, chain_new, chain_relaxing, &
+      chain_n_aux
+   use belt_shared_deflection, only: belt_chain_t, belt_chain_n_aux, belt_chain_split, belt_chain_rates, &
+      belt_chain_accept, belt_chain_energies, scaled_law
    implicit none
    private
 
@@ -65,20 +69,6 @@ module belt_forces
    integer, parameter :: material_abdomen = 11, material_chest = 12
    !> The effect's output series (item numbers).
    integer, parameter :: out_force = 1, out_angle = 2, out_deformation = 3, out_rate = 4, out_energy = 5
-
-   !> Sections carrying one tension, and the elements in series along them.
-   type :: belt_chain_t
-      integer :: n_sections = 0
-      integer :: section(3) = 0              !< the effect's sections in this chain
-      integer :: n_elements = 0
-      type(recurrent_law_t) :: law(max_chain)
-      type(loading_memory_t) :: mem(max_chain)
-      integer :: webbing(3) = 0              !< element of each section's webbing
-      integer :: body(3) = 0                 !< element of the body under each section (0: rigid)
-      real(wp) :: slack = 0.0_wp             !< sum of the sections' Delta_j
-      integer :: aux_offset = 0              !< its first auxiliary quantity in the effect's
-      integer :: start_aux = 0               !< its search's start among the effect's aux (D-B7)
-   end type belt_chain_t
 
    type, extends(effect_t) :: belt_effect_t
       integer :: n_sections = 0
@@ -170,7 +160,7 @@ contains
       e%n_aux = 0
       do c = 1, e%n_chains
          e%chain(c)%aux_offset = e%n_aux
-         e%n_aux = e%n_aux + n_loading_aux*e%chain(c)%n_elements + 1   ! elements, supplied
+         e%n_aux = e%n_aux + belt_chain_n_aux(e%chain(c))   ! elements, states, supplied
       end do
       ! the searches' starts last, outside the step-size control (D-B7)
       e%n_aux_start = e%n_chains
@@ -179,9 +169,12 @@ contains
       end do
       e%n_aux = e%n_aux + e%n_aux_start
       do c = 1, e%n_chains
-         do j = 1, e%chain(c)%n_elements
-            e%has_memory = e%has_memory .or. .not. recurrent_is_elastic(e%chain(c)%law(j))
-         end do
+         associate (ch => e%chain(c)%chain)
+            do j = 1, ch%n
+               e%has_memory = e%has_memory .or. .not. ch%law(j)%elastic
+            end do
+            e%has_memory = e%has_memory .or. ch%n_states > 0
+         end associate
       end do
    contains
       !> Section j of the *BELTS cards: its geometry at t = 0 (C.2).
@@ -208,10 +201,12 @@ contains
       !! material has a loading curve, the body surface under it.
       subroutine add_chain(ks)
          integer, intent(in) :: ks(:)
-         integer :: q, k, j, jl, l, c
+         integer :: q, k, j, jl, l, c, n
          real(wp) :: factor
+         type(recurrent_law_t) :: law(max_chain)
          e%n_chains = e%n_chains + 1
          c = e%n_chains
+         n = 0
          associate (ch => e%chain(c))
             ch%n_sections = size(ks)
             do q = 1, size(ks)
@@ -223,18 +218,19 @@ contains
                ch%slack = ch%slack + m%belts%slack(j)
                factor = 1.0_wp
                if (two_sides .and. (j == 1 .or. j == belt_card_lap2)) factor = 0.5_wp   ! each side half the law (D-B5)
-               ch%n_elements = ch%n_elements + 1
-               ch%webbing(q) = ch%n_elements
+               n = n + 1
+               ch%webbing(q) = n
                jl = j
                if (j == belt_card_lap2) jl = 1          ! the lap belt's second side: the lap law
-               ch%law(ch%n_elements) = scaled_law(belt_law(m%loading, jl), factor)
+               law(n) = scaled_law(belt_law(m%loading, jl), factor)
                l = merge(material_abdomen, material_chest, j == 1 .or. j == belt_card_lap2)
                if (m%loading%material_curve(l) > 0) then       ! else the body is rigid (D-B6)
-                  ch%n_elements = ch%n_elements + 1
-                  ch%body(q) = ch%n_elements
-                  ch%law(ch%n_elements) = scaled_law(material_law(m%materials, m%loading, l), factor)
+                  n = n + 1
+                  ch%body(q) = n
+                  law(n) = scaled_law(material_law(m%materials, m%loading, l), factor)
                end if
             end do
+            ch%chain = chain_new(law(1:n), max_iter=m%belts%max_iter)
          end associate
       end subroutine add_chain
    end function belt_effect
@@ -261,8 +257,7 @@ contains
                bs%s_dot(c) = bs%s_dot(c) + bs%kin(k)%delta_rate
                bs%g(:, c) = bs%g(:, c) + bs%kin(k)%gradient
             end do
-            call chain_split(ch%n_elements, ch%law, ch%mem, bs%s(c), bs%s_dot(c), this%max_iter, bs%split(c), &
-                             aux(ch%start_aux))
+            call belt_chain_split(ch, bs%s(c), bs%s_dot(c), aux, bs%split(c))
          end associate
       end do
    end function belt_section_state
@@ -309,8 +304,8 @@ contains
       real(wp), intent(out) :: extra_rate(:), aux_rate(:)
       type(belt_body_t) :: bb
       type(chain_split_t) :: sp
-      real(wp) :: s, s_dot, g(n_dof), f
-      integer :: c, n, a, i
+      real(wp) :: s, s_dot, g(n_dof)
+      integer :: c, a
       associate (u1 => size(extra), u2 => size(extra_rate))
       end associate
       call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
@@ -318,22 +313,16 @@ contains
       do c = 1, this%n_chains
          associate (ch => this%chain(c))
             call chain_deformation(this, ch, bb, s, s_dot, g)
-            n = ch%n_elements
-            a = ch%aux_offset
-            call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, aux(ch%start_aux))
+            call belt_chain_split(ch, s, s_dot, aux, sp)
             if (sp%status /= split_ok) then
-               aux_rate(a + 1:a + n_loading_aux*n + 1) = ieee_value(0.0_wp, ieee_quiet_nan)
+               a = ch%aux_offset
+               aux_rate(a + 1:a + belt_chain_n_aux(ch)) = ieee_value(0.0_wp, ieee_quiet_nan)
                aux_rate(ch%start_aux) = ieee_value(0.0_wp, ieee_quiet_nan)
                cycle
             end if
-            f = sp%force
-            b = b - f*g
-            do i = 1, n       ! (element by element: no temporary of a reshape)
-               aux_rate(a + n_loading_aux*(i - 1) + 1:a + n_loading_aux*i) = sp%aux_rate(:, i)
-            end do
+            b = b - sp%force*g
             ! the work of the moving anchorages: F times the deformation rate at fixed z (D-B4)
-            aux_rate(a + n_loading_aux*n + 1) = f*(s_dot - dot_product(g, st%zdot))
-            aux_rate(ch%start_aux) = sp%guess_rate     ! the search's start (D-B7)
+            call belt_chain_rates(ch, sp, s_dot - dot_product(g, st%zdot), aux_rate)
          end associate
       end do
    end subroutine belt_add_forces
@@ -354,22 +343,20 @@ contains
       end do
    end subroutine chain_deformation
 
-   !> After an accepted step: every element's memory from its share of the
-   !! accepted deformation and rate (figure 18); a changed law restarts the
-   !! stepper. An element's rate is x_i' = w_i s' with w_i >= 0 (0 when the
-   !! chain is slack), and its memory changes only at x_i' < 0 while it
-   !! loads, or x_i' /= 0 while it unloads (recurrent_accept): a chain that is
-   !! slack, or does not move, or lengthens while every element loads, keeps
-   !! its memories, and needs no split.
+   !> After an accepted step: every element's memory from its deformation
+   !! and rate at the accepted state (figure 18; series_chain's chain_accept,
+   !! which also recovers a slack chain's rate-dependent body); a changed law
+   !! restarts the stepper. A chain that is slack and holds no rate-dependent
+   !! element still loaded, or whose elements are all elastic and stateless,
+   !! keeps its memories and needs no split.
    subroutine belt_accept(this, st, extra, aux, result)
       class(belt_effect_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
       type(belt_body_t) :: bb
-      type(chain_split_t) :: sp
       real(wp) :: s, s_dot, g(n_dof)
-      integer :: c, i, n
+      integer :: c
       logical :: changed
       associate (u1 => size(extra))
       end associate
@@ -377,47 +364,39 @@ contains
                           this%last_segment, bb)
       do c = 1, this%n_chains
          associate (ch => this%chain(c))
-            n = ch%n_elements
-            if (all(ch%law(1:n)%elastic)) cycle     ! no memory in this chain
+            if (all(ch%chain%law(1:ch%chain%n)%elastic) .and. ch%chain%n_states == 0) cycle   ! no memory
             call chain_deformation(this, ch, bb, s, s_dot, g)
-            if (.not. s > 0.0_wp) cycle
-            if (.not. abs(s_dot) > 0.0_wp .and. ieee_is_finite(s_dot)) cycle
-            if (s_dot > 0.0_wp .and. .not. any(ch%mem(1:n)%unloading)) cycle
-            call chain_split(n, ch%law, ch%mem, s, s_dot, this%max_iter, sp, &
-                             aux(ch%start_aux))
-            ! a split that fails here fails again at the next step's first
-            ! evaluation of this state, which ends the run with failure_text
-            if (sp%status /= split_ok) cycle
-            do i = 1, n
-               call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), sp%rate(i), changed)
-               result%restart = result%restart .or. changed
-            end do
+            if (.not. s > 0.0_wp .and. ch%chain%n_states > 0) then
+               if (.not. chain_relaxing(ch%chain, aux(ch%aux_offset + 1:ch%aux_offset + chain_n_aux(ch%chain)))) cycle
+            else if (.not. s > 0.0_wp) then
+               cycle
+            end if
+            call belt_chain_accept(ch, s, s_dot, aux, changed)
+            result%restart = result%restart .or. changed
          end associate
       end do
    end subroutine belt_accept
 
-   !> Stored and dissipated energy of every element (E6-2), and the work
-   !! supplied by the vehicle.
+   !> Stored and dissipated energy of every element (docs/loading.md 4), and
+   !! the work supplied by the vehicle.
    pure subroutine belt_energy(this, st, extra, aux, e)
       class(belt_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(out) :: e(n_energy_kinds)
-      real(wp) :: ce, de
-      integer :: c, i, a
-      associate (u1 => st%t, u2 => size(extra))
+      type(belt_state_t) :: bs
+      real(wp) :: ce(max_chain), de(max_chain), supplied
+      integer :: c, n
+      associate (u2 => size(extra))
       end associate
       e = 0.0_wp
+      bs = belt_section_state(this, st, aux)
       do c = 1, this%n_chains
-         associate (ch => this%chain(c))
-            a = ch%aux_offset
-            do i = 1, ch%n_elements
-               call recurrent_energies(ch%law(i), aux(a + n_loading_aux*(i - 1) + 1:a + n_loading_aux*i), ce, de)
-               e(energy_stored) = e(energy_stored) + ce
-               e(energy_dissipated) = e(energy_dissipated) + de
-            end do
-            e(energy_supplied) = e(energy_supplied) + aux(a + n_loading_aux*ch%n_elements + 1)
-         end associate
+         n = this%chain(c)%chain%n
+         call belt_chain_energies(this%chain(c), bs%split(c), aux, ce, de, supplied)
+         e(energy_stored) = e(energy_stored) + sum(ce(1:n))
+         e(energy_dissipated) = e(energy_dissipated) + sum(de(1:n))
+         e(energy_supplied) = e(energy_supplied) + supplied
       end do
    end subroutine belt_energy
 
@@ -471,8 +450,8 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(out) :: values(:)
       type(belt_state_t) :: bs
-      real(wp) :: ce, de
-      integer :: k, c, q, a, i, n
+      real(wp) :: ce(max_chain), de(max_chain), supplied
+      integer :: k, c, q, i
       associate (u1 => size(extra))
       end associate
       values = 0.0_wp
@@ -495,22 +474,18 @@ contains
                values(3*k - 1) = sp%rate(ch%webbing(q))
                if (ch%body(q) > 0) values(3*k) = sp%rate(ch%body(q))
             case (out_energy)
-               a = ch%aux_offset
+               call belt_chain_energies(ch, sp, aux, ce, de, supplied)
                i = ch%webbing(q)
-               call recurrent_energies(ch%law(i), aux(a + n_loading_aux*(i - 1) + 1:a + n_loading_aux*i), ce, de)
-               values(4*k - 3:4*k - 2) = [ce, de]
+               values(4*k - 3:4*k - 2) = [ce(i), de(i)]
                i = ch%body(q)
-               if (i > 0) then
-                  call recurrent_energies(ch%law(i), aux(a + n_loading_aux*(i - 1) + 1:a + n_loading_aux*i), ce, de)
-                  values(4*k - 1:4*k) = [ce, de]
-               end if
+               if (i > 0) values(4*k - 1:4*k) = [ce(i), de(i)]
             end select
          end associate
       end do
       if (item == out_energy) then
          do c = 1, this%n_chains
-            n = this%chain(c)%n_elements
-            values(4*this%n_sections + c) = aux(this%chain(c)%aux_offset + n_loading_aux*n + 1)
+            call belt_chain_energies(this%chain(c), bs%split(c), aux, ce, de, supplied)
+            values(4*this%n_sections + c) = supplied
          end do
       end if
    end subroutine belt_output_values

@@ -9,8 +9,10 @@
 !! material point of the segment carrying the arc, so its generalized
 !! forces are the virtual work J_C^T F (D-C23: the printed f.8 and its
 !! errata F8-1..F8-6 are not needed). Memory (the loading cycle) changes
-!! only on accepted steps. Energies (E6-2, as the belts): per element W,
-!! E_abs, D_v, the friction's work P' v_T, and the work supplied by the
+!! only on accepted steps. Energies (as the belts, docs/loading.md 4): per
+!! element its stored energy from its deformation and memory and its
+!! dissipated energy (booked by its memory, and its rate terms' work), the
+!! friction's work P' v_T, and the work supplied by the
 !! moving vehicle, S' = P (delta' + (J_C^T n) . z') - P' ((J_C^T t) . z' -
 !! v_T), the power of the force at the surface's material point.
 module contact_forces
@@ -28,11 +30,9 @@ module contact_forces
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
       arc_segment, front_side, surface_flat, surface_line, surface_circle, surface_point
-   use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
-      n_loading_aux, aux_work, aux_absorbed
-   use loading_curves, only: curve_energy
-   use belt_shared_deflection, only: chain_split_t, chain_split, split_ok, branch_point_t, branch_at, &
-      chain_split_text
+   use recurrent_loading, only: recurrent_law_t
+   use series_chain, only: series_chain_t, chain_split_t, chain_split, split_ok, chain_split_text, chain_new, &
+      chain_accept, chain_energies, chain_n_aux, chain_set_initial, chain_relaxing, max_chain
    use dead_band, only: ramp_of
    implicit none
    private
@@ -49,16 +49,15 @@ module contact_forces
       !! or a padding (or mat) that bottoms out at its cap eta D'' and its
       !! backing (figure 25, D-C19)
       integer :: n_elem = 1
-      logical :: has_body = .false.            !< law(1) is the body's material
-      type(recurrent_law_t) :: law(3)
-      type(loading_memory_t) :: mem(3)
-      real(wp) :: cap(3) = 0.0_wp
-      !> the backing is the steering column: it does not move until its
-      !! padding has bottomed out (C.4.f; its gate the padding's force at the cap)
-      logical :: gated = .false.
+      logical :: has_body = .false.            !< element 1 is the body's material
+      !> the elements' laws and memories in series (series_chain): a padding's
+      !! cap; the steering column gated, not moving until its padding has
+      !! bottomed out (C.4.f, D-C19; its gate the padding's force at the cap)
+      type(series_chain_t) :: chain
       !> D-C16a: the point came at a flat surface from behind its line (memory)
       logical :: behind = .false.
-      !> aux: each element's W, E_abs, D_v, then the friction's work and the supplied work
+      !> aux: the chain's (its elements' rate-term work and states), then the
+      !! friction's work and the supplied work
       integer :: aux_friction = 0, aux_supplied = 0
       !> the outer material's friction (D-C22): mu P, reached at the sliding
       !! velocity xi and in proportion to it below (D-C18a)
@@ -87,9 +86,6 @@ module contact_forces
       !> the largest P over the accepted steps, when, and where (T and delta
       !! then): the summary's contact peaks (peaks)
       real(wp) :: peak_p = 0.0_wp, peak_t = 0.0_wp, peak_pos = 0.0_wp, peak_delta = 0.0_wp
-      !> D-C26: each element's curve energy at its initial deformation, where
-      !! its W and E_abs start (the penetration counts as a loading before t = 0)
-      real(wp) :: e_initial(3) = 0.0_wp
       integer :: max_iter = 60
       !> add_forces returns at once, and accept takes its short path, where
       !! pair_far proves the pair slack (.false.: always the full path, for
@@ -152,6 +148,9 @@ contains
       logical, intent(in), optional :: gated                   !< the backing moves only once the padding is solid
       real(wp), intent(in), optional :: dt_fixed               !< the integrator's fixed step (D-C18b; absent: adaptive)
       type(contact_pair_effect_t) :: e
+      type(recurrent_law_t) :: laws(3)
+      real(wp) :: caps(3)
+      logical :: gates(3)
       integer :: q
       e%name = 'contact_'//itoa(i)//'_'//itoa(k)
       e%title = 'contact '//itoa(i)//' on '//itoa(k)//' (C.4.f)'
@@ -160,20 +159,23 @@ contains
       e%body = body
       e%surface = sf
       q = 0
+      caps = 0.0_wp
+      gates = .false.
       if (present(body_law)) then
          q = q + 1
-         e%law(q) = body_law
+         laws(q) = body_law
          e%has_body = .true.
       end if
       q = q + 1
-      e%law(q) = law
+      laws(q) = law
       if (present(backing)) then
-         if (present(cap)) e%cap(q) = cap
+         if (present(cap)) caps(q) = cap
          q = q + 1
-         e%law(q) = backing
+         laws(q) = backing
+         if (present(gated)) gates(q) = gated
       end if
       e%n_elem = q
-      if (present(gated) .and. present(backing)) e%gated = gated
+      e%chain = chain_new(laws(1:q), caps(1:q), gates(1:q), e%max_iter)
       if (present(mu)) e%mu = mu
       if (present(xi)) e%xi = xi
       if (present(dt_fixed)) e%dt_fixed = dt_fixed
@@ -193,7 +195,7 @@ contains
       e%nk = [-e%tk(2), e%tk(1)]
       e%size_sum = sum(abs(body%length)) + sum(abs(body%rho_arc)) + sum(abs(body%r_arc)) + abs(sf%s(1)) + &
                abs(sf%s(2)) + abs(sf%d)
-      e%aux_friction = n_loading_aux*e%n_elem + 1
+      e%aux_friction = chain_n_aux(e%chain) + 1
       e%aux_supplied = e%aux_friction + 1
       e%n_aux = e%aux_supplied
       e%guard = pair_guard(e)
@@ -258,12 +260,12 @@ contains
    !> The contact's geometry (figure 22), force split and friction at st
    !! (a subroutine: the state is written in place, not copied out of a
    !! function's result; the virtual work is add_forces').
-   pure subroutine pair_eval(this, st, ps)
+   pure subroutine pair_eval(this, st, aux, ps)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: aux(:)              !< the pair's (the chain's states)
       type(pair_state_t), intent(out) :: ps
-      type(branch_point_t) :: bp
-      real(wp) :: c, s, gate(3)
+      real(wp) :: c, s
       ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
       c = 1.0_wp
       s = st%vehicle%pos(3)
@@ -276,19 +278,9 @@ contains
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
-         call chain_split(this%n_elem, this%law, this%mem, -1.0_wp, 0.0_wp, this%max_iter, ps%split)
-      else if (this%gated) then
-         ! the column's gate: the padding's force at its cap, with its memory
-         gate = 0.0_wp
-         bp = branch_at(this%law(this%n_elem - 1), this%mem(this%n_elem - 1), this%cap(this%n_elem - 1))
-         gate(this%n_elem) = bp%force
-         call chain_split(this%n_elem, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split, &
-                          cap=this%cap, gate=gate)
-      else if (this%n_elem > 1) then
-         call chain_split(this%n_elem, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split, &
-                          cap=this%cap)
+         call chain_split(this%chain, -1.0_wp, 0.0_wp, aux, ps%split)
       else
-         call chain_split(1, this%law, this%mem, ps%cs%delta, ps%cs%delta_dot, this%max_iter, ps%split)
+         call chain_split(this%chain, ps%cs%delta, ps%cs%delta_dot, aux, ps%split)
       end if
       ps%c_in = st%vehicle%pos(1:2) + [c*ps%cs%c(1) + s*ps%cs%c(2), -s*ps%cs%c(1) + c*ps%cs%c(2)]
       ps%n_in = [c*ps%cs%n(1) + s*ps%cs%n(2), -s*ps%cs%n(1) + c*ps%cs%n(2)]
@@ -477,27 +469,25 @@ contains
             return
          end if
       end if
-      call pair_add_full(this, st, b, aux_rate)
+      call pair_add_full(this, st, aux, b, aux_rate)
    end subroutine pair_add_forces
 
    !> add_forces' full path (its own procedure: the pair's state is not
    !! set up on the early exit).
-   pure subroutine pair_add_full(this, st, b, aux_rate)
+   pure subroutine pair_add_full(this, st, aux, b, aux_rate)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: aux(:)
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: aux_rate(:)
       type(pair_state_t) :: ps
       real(wp) :: b_n(n_dof), b_t(n_dof)
-      integer :: q
-      call pair_eval(this, st, ps)
+      call pair_eval(this, st, aux, ps)
       if (ps%split%status /= split_ok) then
          aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)
          return
       end if
-      do q = 1, this%n_elem
-         aux_rate(n_loading_aux*(q - 1) + 1:n_loading_aux*q) = ps%split%aux_rate(:, q)
-      end do
+      aux_rate(1:this%aux_friction - 1) = ps%split%aux_rate(1:this%aux_friction - 1)
       aux_rate(this%aux_friction:this%aux_supplied) = 0.0_wp
       if (.not. ps%split%force > 0.0_wp) return
       ! J_C^T n and J_C^T t, the generalized forces of unit forces at C (D-C23)
@@ -540,7 +530,7 @@ contains
       if (this%exit_far) then
          if (pair_far(this, st)) return
       end if
-      call pair_eval(this, st, ps)
+      call pair_eval(this, st, aux, ps)
       if (ps%split%status /= split_ok) return
       if (.not. ps%split%force > this%fsw*(1.0_wp + locate_tol)) return
       theta = (this%fsw*(1.0_wp + 0.5_wp*locate_tol) - this%p_accepted)/(ps%split%force - this%p_accepted)
@@ -560,7 +550,7 @@ contains
       associate (u1 => size(extra) + size(aux))
       end associate
       allocate (notes(0))
-      call pair_eval(this, st, ps)
+      call pair_eval(this, st, aux, ps)
       if (ps%split%status /= split_ok) return
       weight = g_std*sum(this%body%mass)
       ! (an arc of radius 0, a point, is judged by its force alone)
@@ -626,7 +616,9 @@ contains
          ! slack for certain (pair_far) with its side decided: what the full
          ! path below does at no force, without the full geometry
          call far_check(this, st, far, side)
-         if (far .and. side /= side_unknown) then
+         ! (a rate-dependent element still loaded takes the full path: a slack
+         ! chain's accept recovers it, series_chain)
+         if (far .and. side /= side_unknown .and. .not. chain_relaxing(this%chain, aux)) then
             if (side /= 0) call set_behind(this, side < 0)   ! D-C16a, as front_side
             if (this%undesired) then                     ! D-C28: not loaded
                this%was_loaded = .false.
@@ -650,8 +642,8 @@ contains
       type(accept_result_t), intent(inout) :: result
       type(pair_state_t) :: ps
       logical :: changed
-      integer :: q, side
-      call pair_eval(this, st, ps)
+      integer :: side
+      call pair_eval(this, st, aux, ps)
       ! D-C16a: the side of the surface's line the point is on, where it is decided
       side = front_side(ps%f, this%surface, this%tk)
       if (side /= 0) call set_behind(this, side < 0)
@@ -668,7 +660,7 @@ contains
          this%shattered = .true.
          this%locates = .false.                                             ! nothing left to locate (D-C24b)
          if (this%guard%kind /= guard_none) this%guard%kind = guard_always   ! broken glass carries nothing
-         this%e_switch = stored_energy(this, aux)   ! the glass's stored energy, released
+         this%e_switch = stored_energy(this, ps%split, aux)   ! the glass's stored energy, released
          result%restart = .true.
          call add_event(event_t(t=st%t, kind=event_shatter, index=this%i, value=ps%split%force, limit=this%fsw, &
                                 surface=this%k))
@@ -693,12 +685,13 @@ contains
          this%peak_pos = ps%cs%pos
          this%peak_delta = ps%cs%delta
       end if
-      ! out of contact the memory stays (as a slack belt's, belt_accept)
-      if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
-      do q = 1, this%n_elem
-         call recurrent_accept(this%law(q), this%mem(q), ps%split%x(q), ps%split%rate(q), changed)
-         result%restart = result%restart .or. changed
-      end do
+      ! out of contact the memory stays (as a slack belt's, belt_accept), but a
+      ! rate-dependent element recovers (series_chain's chain_accept)
+      if (ps%split%status /= split_ok) return
+      if (.not. ps%cs%delta > 0.0_wp .and. .not. chain_relaxing(this%chain, aux)) return
+      if (this%shattered) return
+      call chain_accept(this%chain, ps%cs%delta, ps%cs%delta_dot, aux, changed)
+      result%restart = result%restart .or. changed
    contains
       subroutine add_event(ev)
          type(event_t), intent(in) :: ev
@@ -713,67 +706,48 @@ contains
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(out) :: e(n_energy_kinds)
-      real(wp) :: ce, de
-      integer :: q
-      associate (u1 => st%t, u2 => size(extra))
+      type(pair_state_t) :: ps
+      real(wp) :: ce(max_chain), de(max_chain)
+      associate (u2 => size(extra))
       end associate
-      e = 0.0_wp
-      do q = 1, this%n_elem
-         call recurrent_energies(this%law(q), element_aux(this, aux, q), ce, de)
-         e(energy_stored) = e(energy_stored) + ce
-         e(energy_dissipated) = e(energy_dissipated) + de
-      end do
-      e(energy_stored) = e(energy_stored) - this%e_switch
-      e(energy_dissipated) = e(energy_dissipated) + aux(this%aux_friction) + this%e_switch
+      call pair_eval(this, st, aux, ps)
+      call chain_energies(this%chain, ps%split, aux, ce, de)
+      e(energy_stored) = sum(ce(1:this%n_elem))
+      e(energy_dissipated) = sum(de(1:this%n_elem)) + aux(this%aux_friction) + this%e_switch
       e(energy_supplied) = aux(this%aux_supplied)
    end subroutine pair_energy
-
-   !> Element q's W, E_abs, D_v: the integrated ones plus, for W and E_abs,
-   !! its initial curve energy (D-C26).
-   pure function element_aux(this, aux, q) result(a)
-      class(contact_pair_effect_t), intent(in) :: this
-      real(wp), intent(in) :: aux(:)
-      integer, intent(in) :: q
-      real(wp) :: a(n_loading_aux)
-      a = aux(n_loading_aux*(q - 1) + 1:n_loading_aux*q)
-      a(aux_work) = a(aux_work) + this%e_initial(q)
-      a(aux_absorbed) = a(aux_absorbed) + this%e_initial(q)
-   end function element_aux
 
    !> At the initial state st (the occupant at z0 in the vehicle at rest at
    !! pitch phi0): D-C16a's side of a flat surface, the side of its line the
    !! point's centre starts on (a point that starts behind the line has not
    !! come through the face: it meets the ends only, as one that came from
-   !! behind); D-C26's initial element energies, each element's curve
-   !! energy at its deformation, from zero memory.
+   !! behind); D-C21's initial split, where the chain's rate-dependent
+   !! elements start (their stored energy then the curves' energy at their
+   !! deformations, D-C26).
    pure subroutine pair_set_initial(this, st)
       type(contact_pair_effect_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
       type(pair_state_t) :: ps
-      integer :: q
-      this%e_initial = 0.0_wp
-      call pair_eval(this, st, ps)
+      real(wp) :: none(chain_n_aux(this%chain))
+      none = 0.0_wp
+      call chain_set_initial(this%chain, 0.0_wp)
+      call pair_eval(this, st, none, ps)
       if (this%surface%kind == surface_flat) then
          call set_behind(this, dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp)
-         if (this%behind) call pair_eval(this, st, ps)      ! (its penetration with that side)
+         if (this%behind) call pair_eval(this, st, none, ps)      ! (its penetration with that side)
       end if
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
-      do q = 1, this%n_elem
-         this%e_initial(q) = curve_energy(this%law(q)%curve, ps%split%x(q))
-      end do
+      call chain_set_initial(this%chain, ps%cs%delta)
    end subroutine pair_set_initial
 
-   !> The elements' stored energy (E6-2), before any switch.
-   pure real(wp) function stored_energy(this, aux) result(total)
+   !> The elements' stored energy at the split sp, before any switch.
+   pure real(wp) function stored_energy(this, sp, aux) result(total)
       class(contact_pair_effect_t), intent(in) :: this
+      type(chain_split_t), intent(in) :: sp
       real(wp), intent(in) :: aux(:)
-      real(wp) :: ce, de
-      integer :: q
-      total = 0.0_wp
-      do q = 1, this%n_elem
-         call recurrent_energies(this%law(q), element_aux(this, aux, q), ce, de)
-         total = total + ce
-      end do
+      real(wp) :: ce(max_chain), de(max_chain)
+      call chain_energies(this%chain, sp, aux, ce, de)
+      total = sum(ce(1:this%n_elem))
    end function stored_energy
 
    pure subroutine pair_point_forces(this, st, extra, aux, list)
@@ -782,9 +756,9 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       type(point_force_list_t), intent(inout) :: list
       type(pair_state_t) :: ps
-      associate (u1 => size(extra) + size(aux))
+      associate (u1 => size(extra))
       end associate
-      call pair_eval(this, st, ps)
+      call pair_eval(this, st, aux, ps)
       if (.not. ps%split%force > 0.0_wp) return
       ! an arc centred on a joint (hip, shoulder, elbow, knee) passes its load on
       ! through the joint: no load across a bone (docs/contacts.md 4.3)
@@ -824,11 +798,11 @@ contains
       real(wp) :: e(n_energy_kinds)
       integer :: first
       if (item == 1) then
-         call pair_eval(this, st, ps)
+         call pair_eval(this, st, aux, ps)
          values = [ps%split%force, ps%p_t, ps%cs%delta, ps%cs%delta_dot, ps%cs%v_t, ps%cs%pos]
       else if (item == 3) then
          ! the elements in series: [body,] surface [, backing] (figures 23-25)
-         call pair_eval(this, st, ps)
+         call pair_eval(this, st, aux, ps)
          values = 0.0_wp
          first = merge(2, 1, this%has_body)
          if (this%has_body) values(1) = ps%split%x(1)
@@ -854,10 +828,10 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       character(len=:), allocatable :: text
       type(pair_state_t) :: ps
-      associate (u1 => size(extra) + size(aux))
+      associate (u1 => size(extra))
       end associate
       text = ''
-      call pair_eval(this, st, ps)
+      call pair_eval(this, st, aux, ps)
       if (ps%split%status /= split_ok) text = trim(this%title)//': ' &
          //chain_split_text(ps%split, ps%cs%delta, ps%cs%delta_dot, this%max_iter)
    end function pair_failure_text

@@ -31,34 +31,33 @@
 !! the law changed so that the stepper restarts (docs/architecture.md,
 !! rule 1).
 !!
-!! Energies (erratum E6-2, extended to the rate terms): an effect integrates
-!! three auxiliary quantities per element, whose rates recurrent_rates gives:
-!! W, the net work done on the element (integral of F d-dot); E_abs, the work
-!! of F_b over loading phases (d-dot > 0 on a loading branch); D_v, the work of
-!! the rate part F - F_b (>= 0). Then DE = (1 - R) E_abs + D_v and CE = W - DE
-!! (recurrent_energies): W = CE + DE always, and CE returns to 0 once an
-!! element has unloaded completely.
+!! Energies (C.6; erratum E6-2 as revised in issue 14, docs/loading.md 4):
+!! the stored energy of an element is a function of its deformation and its
+!! memory (recurrent_stored): the area under the path its law returns
+!! along from the present state down to zero force - the unloading curve
+!! once the turning point is accepted, and until then the loading curve
+!! itself, which a trial state past the peak retraces (the memory changes
+!! only on accepted steps). The energy between the two curves is
+!! dissipated where the law changes, at the accepted turning point:
+!! recurrent_accept books the drop of the stored energy into the memory's
+!! e_dissipated. So the stored energy is 0 whenever the element carries no
+!! force on its unloading branch, never jumps up, and the dissipated
+!! energy only grows; the rate terms' work, >= 0, is integrated by the
+!! effect.
 module recurrent_loading
    use kinds, only: wp
    use strings, only: num
    use loading_curves, only: loading_curve_t, curve_elastic_force, curve_rate_force, curve_energy, &
-      curve_moment, curve_deflection_at, curve_flat_extent
+      curve_moment, curve_deflection_at, curve_flat_extent, curve_is_defined
    use model, only: materials_section_t, loading_section_t
    implicit none
    private
 
    public :: recurrent_law_t, loading_memory_t, loading_point_t
    public :: recurrent_law, recurrent_check, recurrent_is_elastic
-   public :: recurrent_eval, recurrent_force, recurrent_rates, recurrent_accept, recurrent_energies
+   public :: recurrent_eval, recurrent_force, recurrent_accept, recurrent_stored, recurrent_rate_dissipation
    public :: unloading_exponent, material_law, belt_law
-   public :: n_loading_aux, aux_work, aux_absorbed, aux_rate_work
    public :: cycle_first, cycle_case_1, cycle_case_2
-
-   !> The auxiliary quantities an effect integrates per element (E6-2).
-   integer, parameter :: aux_work = 1       !< W: integral of F d-dot dt, the net work on the element
-   integer, parameter :: aux_absorbed = 2   !< E_abs: the same for F_b over loading phases only
-   integer, parameter :: aux_rate_work = 3  !< D_v: the work of the rate terms (dissipated)
-   integer, parameter :: n_loading_aux = 3
 
    !> How the present cycle began (figure 18).
    integer, parameter :: cycle_first = 0, cycle_case_1 = 1, cycle_case_2 = 2
@@ -93,6 +92,18 @@ module recurrent_loading
       real(wp) :: p = 0.0_wp               !< exponent of the unloading curve
       real(wp) :: delta_x = 0.0_wp         !< where cycle n began (point x of figure 18)
       real(wp) :: f_x = 0.0_wp             !< the force there
+      !> the part of the loading curve's area already counted as dissipated on
+      !! the present loading branch: its stored energy is E(delta - eps_n) -
+      !! e_spent (a cycle begun under load, case 2, or a loading taken up again
+      !! beyond the turning point: what makes the stored energy continuous there)
+      real(wp) :: e_spent = 0.0_wp
+      !> the energy dissipated at the accepted changes of the law so far (the
+      !! drops of the stored energy at turning points; docs/loading.md 4)
+      real(wp) :: e_dissipated = 0.0_wp
+      !> where the element last stopped: 0 at first, delta_max at a turning
+      !! point, where a new cycle began. A gated element (the steering column,
+      !! D-C19) is held there by its gate (series_split)
+      real(wp) :: x_hold = 0.0_wp
    end type loading_memory_t
 
    !> The force at one (delta, delta-dot).
@@ -185,54 +196,91 @@ contains
       f = pt%force
    end function recurrent_force
 
-   !> The force and the rates of the auxiliary quantities (aux_work,
-   !! aux_absorbed, aux_rate_work) at a trial state (E6-2; loading.md 4).
-   pure subroutine recurrent_rates(law, mem, delta, delta_dot, force, rates)
+   !> The power the rate terms of a single element dissipate at (delta,
+   !! delta_dot): (F - F_b) delta_dot >= 0 (the clip keeps F - F_b of the sign
+   !! of delta_dot). A chain of several elements has its own (series_chain).
+   pure real(wp) function recurrent_rate_dissipation(law, mem, delta, delta_dot) result(p)
       type(recurrent_law_t), intent(in) :: law
       type(loading_memory_t), intent(in) :: mem
       real(wp), intent(in) :: delta, delta_dot
-      real(wp), intent(out) :: force
-      real(wp), intent(out) :: rates(n_loading_aux)
       type(loading_point_t) :: pt
       pt = recurrent_eval(law, mem, delta, delta_dot)
-      force = pt%force
-      rates(aux_work) = pt%force*delta_dot
-      rates(aux_absorbed) = 0.0_wp
-      if (pt%loading .and. delta_dot > 0.0_wp) rates(aux_absorbed) = pt%branch*delta_dot
-      rates(aux_rate_work) = (pt%force - pt%branch)*delta_dot
-   end subroutine recurrent_rates
+      p = (pt%force - pt%branch)*delta_dot
+   end function recurrent_rate_dissipation
 
-   !> Conserved and dissipated energy of an element from its auxiliary
-   !! quantities (C.6 with erratum E6-2): DE = (1 - R) E_abs + D_v, CE = W - DE.
-   pure subroutine recurrent_energies(law, aux, conserved, dissipated)
+   !> The energy the element stores at deformation delta with its memory
+   !! (docs/loading.md 4): the area under the path its law returns along
+   !! from delta down to zero force. On a loading branch that is the
+   !! loading curve, E(delta - eps_n) - e_spent (the law changes only at an
+   !! accepted turning point, so until then a state past the peak retraces
+   !! the loading curve); on the unloading curve its area from delta_0 to
+   !! delta, (span/d_max) xi**p M(xi d_max, p) with span = delta_max -
+   !! delta_0 - (1 - G) M(d_max, p) = R E(d_max) at the turning point, 0 at
+   !! delta_0 and below; beyond delta_max while unloading, that plus the
+   !! loading curve's area from delta_max. 0 for a law without a curve.
+   pure real(wp) function recurrent_stored(law, mem, delta) result(e)
       type(recurrent_law_t), intent(in) :: law
-      real(wp), intent(in) :: aux(n_loading_aux)
-      real(wp), intent(out) :: conserved, dissipated
-      dissipated = (1.0_wp - law%r)*aux(aux_absorbed) + aux(aux_rate_work)
-      conserved = aux(aux_work) - dissipated
-   end subroutine recurrent_energies
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: delta
+      e = 0.0_wp
+      if (.not. curve_is_defined(law%curve)) return
+      if (law%elastic .or. .not. mem%unloading) then
+         e = curve_energy(law%curve, delta - mem%eps) - mem%e_spent
+      else if (delta >= mem%delta_max) then
+         e = unloading_area(law, mem, mem%delta_max) + curve_energy(law%curve, delta - mem%eps) &
+             - curve_energy(law%curve, mem%delta_max - mem%eps)
+      else
+         e = unloading_area(law, mem, delta)
+      end if
+   end function recurrent_stored
+
+   !> The area under the unloading curve from delta_0 to delta (delta <=
+   !! delta_max): with v = t d_max, the integral of F_e(t d_max) t**p over
+   !! t from 0 to xi, times span, is (span/d_max) xi**p M(xi d_max, p).
+   pure real(wp) function unloading_area(law, mem, delta) result(e)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: delta
+      real(wp) :: span, dm, xi
+      e = 0.0_wp
+      if (law%plastic .or. .not. delta > mem%delta_zero) return
+      span = mem%delta_max - mem%delta_zero
+      dm = mem%delta_max - mem%eps
+      if (.not. (span > 0.0_wp .and. dm > 0.0_wp)) return
+      xi = min((delta - mem%delta_zero)/span, 1.0_wp)
+      e = span/dm*curve_moment(law%curve, xi*dm, mem%p)
+      if (mem%p > 0.0_wp) e = e*xi**mem%p
+   end function unloading_area
 
    !> After an ACCEPTED step: update the memory from the accepted state
    !! (figure 18; docs/loading.md 3). changed: the law is a different
    !! function from here on (a turning point, a new cycle), so the stepper
    !! must restart. The force is continuous at every change except the
    !! turning point of a plastic law (R = 0), where it drops to zero.
+   !! Energy (docs/loading.md 4): the stored energy recurrent_stored is kept
+   !! continuous where a new loading branch begins (e_spent), and its drop at
+   !! a turning point - the energy between the loading and the unloading
+   !! curve - is added to e_dissipated.
    pure subroutine recurrent_accept(law, mem, delta, delta_dot, changed)
       type(recurrent_law_t), intent(in) :: law
       type(loading_memory_t), intent(inout) :: mem
       real(wp), intent(in) :: delta, delta_dot
       logical, intent(out) :: changed
-      real(wp) :: fx
+      real(wp) :: fx, e_before
       changed = .false.
       if (law%elastic) return
+      e_before = recurrent_stored(law, mem, delta)
       if (.not. mem%unloading) then
          ! loading: the turning point, where d-dot becomes negative under load
-         if (delta_dot < 0.0_wp) call turn(law, mem, delta, changed)
+         if (delta_dot < 0.0_wp) call turn(law, mem, delta, e_before, changed)
       else if (delta >= mem%delta_max) then
          ! back beyond the turning point within one step: on the loading curve again
          if (delta_dot < 0.0_wp) then
-            call turn(law, mem, delta, changed)
+            call turn(law, mem, delta, e_before, changed)
          else if (delta_dot > 0.0_wp) then
+            ! (its stored energy as before: the unloading curve's area to
+            ! delta_max and the loading curve's beyond)
+            mem%e_spent = curve_energy(law%curve, delta - mem%eps) - e_before
             mem%unloading = .false.
             changed = .true.
          end if
@@ -254,15 +302,19 @@ contains
          mem%cycle = mem%cycle + 1
          mem%unloading = .false.
          mem%delta_x = delta
+         mem%x_hold = max(delta, mem%eps)
+         ! the stored energy as it was on the unloading curve (0 in case 1)
+         mem%e_spent = curve_energy(law%curve, delta - mem%eps) - e_before
          changed = .true.
       end if
    end subroutine recurrent_accept
 
-   !> The turning point of the cycle at delta, if the element is loaded there.
-   pure subroutine turn(law, mem, delta, changed)
+   !> The turning point of the cycle at delta, if the element is loaded
+   !! there; e_before, its stored energy before: the drop is dissipated.
+   pure subroutine turn(law, mem, delta, e_before, changed)
       type(recurrent_law_t), intent(in) :: law
       type(loading_memory_t), intent(inout) :: mem
-      real(wp), intent(in) :: delta
+      real(wp), intent(in) :: delta, e_before
       logical, intent(inout) :: changed
       real(wp) :: d, fm
       d = delta - mem%eps
@@ -273,6 +325,9 @@ contains
       mem%f_max = fm
       mem%delta_zero = mem%eps + law%g*d
       mem%p = unloading_exponent(law, d)
+      mem%x_hold = delta
+      mem%e_spent = 0.0_wp
+      mem%e_dissipated = mem%e_dissipated + (e_before - recurrent_stored(law, mem, delta))
       changed = .true.
    end subroutine turn
 

@@ -1,0 +1,275 @@
+!> One element of a series chain (docs/belts.md 3, docs/loading.md): its
+!! rate-independent branch of figure 18 at a deformation with the slope
+!! there, where it carries nothing, and its rate terms and their inverse.
+!! The shared deflection of the belts and contacts (series_split,
+!! series_chain) evaluates its elements only through this module. Taken out
+!! of belt_shared_deflection (issue 14, item 34).
+module loading_branch
+   use kinds, only: wp
+   use loading_curves, only: loading_curve_t, curve_polynomial, curve_table, table_interval
+   use recurrent_loading, only: recurrent_law_t, loading_memory_t
+   implicit none
+   private
+
+   public :: branch_point_t, branch_at, branch_at_memo, branch_eval, held_plastic, zero_extent
+   public :: rate_force, rate_slope, rate_inverse, min_slope, rigid_slope
+
+   !> A branch flatter than this (lb/in) is flat: its compliance is infinite.
+   real(wp), parameter :: min_slope = 1.0e-200_wp
+   !> The slope of a rigid element (a plastic one held at delta_max): no compliance.
+   real(wp), parameter :: rigid_slope = huge(1.0_wp)
+
+   !> An element's rate-independent branch at one deformation (figure 18).
+   type :: branch_point_t
+      real(wp) :: force = 0.0_wp    !< F_b, as recurrent_eval's branch
+      real(wp) :: slope = 0.0_wp    !< dF_b/dx (right derivative at kinks)
+      logical :: loading = .false.  !< on a loading branch
+   end type branch_point_t
+
+contains
+
+   !> F_e(d) and dF_e/dd of a curve at once (the value as loading_curves'
+   !! curve_elastic_force computes it, the right derivative; 0 and 0 for
+   !! d <= 0): one search of a table for both. seg: the table interval to
+   !! try first (0: none), and on return the one used - a search's later
+   !! evaluations mostly fall in the interval of the one before, and the
+   !! interval holding d is unique, so the hint changes nothing but the cost.
+   pure subroutine curve_value_slope(c, d, f, k, seg)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: d
+      real(wp), intent(out) :: f, k
+      integer, intent(inout) :: seg
+      integer :: n, lo
+      f = 0.0_wp
+      k = 0.0_wp
+      if (.not. d > 0.0_wp) return
+      select case (c%form)
+      case (curve_polynomial)
+         ! Tables 2, 4: F_e = sum sigma_n d**n and its derivative (Horner)
+         do n = c%order, 1, -1
+            k = k*d + f + c%sigma(n)
+            f = (f + c%sigma(n))*d
+         end do
+      case (curve_table)
+         lo = table_interval_from(c%defl, d, seg)
+         seg = lo
+         k = (c%force(lo + 1) - c%force(lo))/(c%defl(lo + 1) - c%defl(lo))
+         f = c%force(lo) + k*(d - c%defl(lo))
+      end select
+      f = max(f, 0.0_wp)
+      k = max(k, 0.0_wp)
+   end subroutine curve_value_slope
+
+   !> The table interval lo (1 <= lo < n) holding d > 0, loading_curves'
+   !! table_interval (the largest lo < n with defl(lo) <= d, 1 if none), found
+   !! by walking from the interval hint (when 1 <= hint < n; a search's next
+   !! evaluation is mostly in the same interval or the next), or for a table
+   !! of up to walk_points points from its first (cheaper than bisection's
+   !! call; table_interval for a longer one without a hint). The interval is
+   !! unique, so the way it is found changes nothing but the cost.
+   pure integer function table_interval_from(defl, d, hint) result(lo)
+      real(wp), intent(in) :: defl(:), d
+      integer, intent(in) :: hint
+      integer, parameter :: walk_points = 16
+      integer :: n
+      n = size(defl)
+      lo = hint
+      if (lo < 1 .or. lo >= n) then
+         if (n > walk_points) then
+            lo = table_interval(defl, d)
+            return
+         end if
+         lo = 1
+      end if
+      do while (lo < n - 1)
+         if (.not. defl(lo + 1) <= d) exit
+         lo = lo + 1
+      end do
+      do while (lo > 1)
+         if (defl(lo) <= d) exit
+         lo = lo - 1
+      end do
+   end function table_interval_from
+
+   !> The branch of figure 18 at deformation x with the memory as it stands:
+   !! the same selection and force as recurrent_loading's recurrent_eval
+   !! (test_branch_matches_recurrent_eval), with the slope.
+   pure function branch_at(law, mem, x) result(bp)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x
+      type(branch_point_t) :: bp
+      integer :: seg
+      seg = 0
+      call branch_eval(law, mem, x, seg, bp)
+   end function branch_at
+
+   !> branch_at with the memo of xi**p of a search (xi0, xp0; branch_eval),
+   !! for the tests.
+   pure subroutine branch_at_memo(law, mem, x, xi0, xp0, bp)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x
+      real(wp), intent(inout) :: xi0, xp0
+      type(branch_point_t), intent(out) :: bp
+      integer :: seg
+      seg = 0
+      call branch_eval(law, mem, x, seg, bp, xi0, xp0)
+   end subroutine branch_at_memo
+
+   !> branch_at with a table interval to try first (seg, see curve_value_slope).
+   !! (One evaluation of the curve, whichever the branch: the compiler can
+   !! then put it in line.) xi0, xp0: a search's memo of the unloading
+   !! curve's xi**p, for its later evaluations close by (xi0 = 0: none yet;
+   !! set where pow is called): the same value to a few ulps.
+   pure subroutine branch_eval(law, mem, x, seg, bp, xi0, xp0)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x
+      integer, intent(inout) :: seg
+      type(branch_point_t), intent(out) :: bp
+      real(wp), intent(inout), optional :: xi0, xp0
+      real(wp) :: xi, span, dm, d, fe, se, xp, u, p
+      if (law%elastic .or. .not. mem%unloading .or. x >= mem%delta_max) then
+         ! the loading curve of cycle n: F_e(x - eps_n)
+         bp%loading = .true.
+         d = x - mem%eps
+      else if (law%plastic .or. .not. x > mem%delta_zero) then
+         bp%loading = .false.
+         bp%force = 0.0_wp
+         bp%slope = 0.0_wp
+         return
+      else
+         ! the unloading curve F_e(xi d_max) xi**p, xi = (x - delta_0)/(delta_max - delta_0)
+         bp%loading = .false.
+         span = mem%delta_max - mem%delta_zero
+         dm = mem%delta_max - mem%eps
+         xi = (x - mem%delta_zero)/span
+         d = xi*dm
+      end if
+      call curve_value_slope(law%curve, d, fe, se, seg)
+      if (bp%loading) then
+         bp%force = fe
+         bp%slope = se
+      else if (mem%p > 0.0_wp) then
+         xp = -1.0_wp
+         if (present(xi0)) then
+            ! near xi0, where xp0 = xi0**p was computed: xi**p = xp0 (1 + u)**p, u =
+            ! xi/xi0 - 1, by the binomial series to u**4 - its remainder, about
+            ! (p u)**5/120, below 1e-17 of it while p |u| <= 1e-3 - in place of
+            ! pow, whose latency the search's later evaluations (a Newton step
+            ! away) waited for
+            p = mem%p
+            if (xi0 > 0.0_wp) then
+               u = (xi - xi0)/xi0
+               if (abs(u)*max(p, 1.0_wp) <= 1.0e-3_wp) &
+                  xp = xp0*(1.0_wp + u*p*(1.0_wp + u*(p - 1.0_wp)*0.5_wp*(1.0_wp + u*(p - 2.0_wp)*(1.0_wp/3.0_wp) &
+                       *(1.0_wp + u*(p - 3.0_wp)*0.25_wp))))
+            end if
+         end if
+         if (xp < 0.0_wp) then
+            xp = xi**mem%p
+            if (present(xi0)) then
+               xi0 = xi
+               xp0 = xp
+            end if
+         end if
+         bp%force = fe*xp
+         bp%slope = (se*dm*xp + fe*mem%p*xp/xi)/span
+      else
+         bp%force = fe
+         bp%slope = se*dm/span
+      end if
+   end subroutine branch_eval
+
+   !> (D-B10) A plastic element (R = 0) that has turned: its graph is a
+   !! vertical segment at delta_max, from 0 to f_max, where it is rigid -
+   !! for a force up to f_max it keeps delta_max, beyond it it reloads.
+   pure logical function held_plastic(law, mem)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      held_plastic = law%plastic .and. .not. law%elastic .and. mem%unloading
+   end function held_plastic
+
+   !> The largest deformation at which the element's branch carries no
+   !! force (its residual deformation, and for a table that starts flat the
+   !! flat part): below it the element is slack.
+   pure real(wp) function zero_extent(law, mem) result(z)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      if (law%elastic .or. .not. mem%unloading) then
+         z = mem%eps + law%flat
+      else if (law%plastic) then
+         z = mem%delta_max
+      else
+         z = mem%delta_zero + (mem%delta_max - mem%delta_zero)*law%flat/(mem%delta_max - mem%eps)
+      end if
+   end function zero_extent
+
+   !> loading_curves' curve_rate_force of the law's curve, its Horner sum
+   !! begun at the highest rate term the curve has (law%n_rate; the terms
+   !! above it are zero, and so would add nothing): the same value.
+   pure real(wp) function rate_force(law, v) result(f)
+      type(recurrent_law_t), intent(in) :: law
+      real(wp), intent(in) :: v
+      integer :: k
+      real(wp) :: a
+      f = 0.0_wp
+      a = abs(v)
+      do k = law%n_rate, 1, -1
+         f = (f + law%curve%sigma_rate(k))*a
+      end do
+      f = sign(f, v)
+      if (.not. abs(v) > 0.0_wp) f = 0.0_wp
+   end function rate_force
+
+   !> dF_v/dv at v (>= 0; the rate terms of rate_force).
+   pure real(wp) function rate_slope(law, v) result(c)
+      type(recurrent_law_t), intent(in) :: law
+      real(wp), intent(in) :: v
+      integer :: k
+      real(wp) :: a
+      c = 0.0_wp
+      a = abs(v)
+      do k = law%n_rate, 1, -1
+         c = c*a + real(k, wp)*law%curve%sigma_rate(k)
+      end do
+   end function rate_slope
+
+   !> The rate v at which the rate terms carry the force f: F_v(v) = f
+   !! (F_v odd and increasing, rate_force). Exact for a linear rate term;
+   !! otherwise Newton's method on |v| from above, which F_v's convexity
+   !! for v > 0 (every coefficient >= 0) makes monotone, then a bisection
+   !! polish. 0 for a law without rate terms.
+   pure real(wp) function rate_inverse(law, f) result(v)
+      type(recurrent_law_t), intent(in) :: law
+      real(wp), intent(in) :: f
+      real(wp) :: a, lo, hi, g, c
+      integer :: it
+      v = 0.0_wp
+      if (law%n_rate < 1 .or. .not. abs(f) > 0.0_wp) return
+      a = abs(f)
+      if (law%n_rate == 1) then
+         v = sign(a/law%curve%sigma_rate(1), f)
+         return
+      end if
+      ! a bracket [lo, hi] of |v|: F_v(hi) >= a
+      lo = 0.0_wp
+      hi = 1.0_wp
+      do it = 1, 400
+         if (rate_force(law, hi) >= a) exit
+         lo = hi
+         hi = 2.0_wp*hi
+      end do
+      ! Newton from hi: F_v convex on v > 0, so the iterates stay above the root
+      v = hi
+      do it = 1, 100
+         g = rate_force(law, v) - a
+         c = rate_slope(law, v)
+         if (.not. (g > 0.0_wp .and. c > 0.0_wp)) exit
+         if (.not. v - g/c < v) exit
+         v = max(v - g/c, lo)
+      end do
+      v = sign(v, f)
+   end function rate_inverse
+end module loading_branch

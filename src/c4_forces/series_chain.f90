@@ -1,0 +1,509 @@
+!> A chain of loading elements in series carrying one tension (docs/
+!! loading.md 5): a belt section's webbing and the body under it (C.4.e,
+!! figure 19), a contact's body material, padding and backing (C.4.f,
+!! figures 23-25). Each element is a recurrent-loading law with its memory
+!! (figure 18); an element whose curve has rate terms is rate-dependent.
+!!
+!! The law (D-B2 as revised in issue 14): every element carries the one
+!! tension T with its own force law -
+!! - a rate-independent element u: T on its branch, F_b,u(x_u) = T (its
+!!   graph's vertical pieces - a padding at its cap, the column held by its
+!!   gate, a plastic element held at its maximum - carry any T in their
+!!   range);
+!! - a rate-dependent element d: T = F_b,d(x_d) + F_v,d(x_d'), its branch
+!!   and its rate terms at its own rate (Kelvin-Voigt).
+!! With sum x_i = s this is a differential-algebraic system: the
+!! deformation x_d of each rate-dependent element is a state of the chain,
+!! integrated with the motion (an auxiliary quantity, x_offset + q_d); at a
+!! state the rate-independent elements share what the states leave, r = s -
+!! sum x_d (series_split, the states held), which fixes T as a function of
+!! the state; then x_d' = F_v,d^-1(T - F_b,d(x_d)), and the rate-independent
+!! elements share r' = s' - sum x_d' in proportion to their compliances. So
+!! T is continuous (a function of continuous states) whatever an element's
+!! slope does, and never exceeds what a rate-independent element carries at
+!! its deformation (the column's gate and plateau). Where every element is
+!! rate-dependent, the last one takes what the others leave (the absorber):
+!! T = F_b,a(x_a) + F_v,a(x_a') with x_a' = s' - sum x_d'(T), one equation in
+!! T. A single element is the law of loading_curves: T = max(0, F_b + F_v)
+!! while F_b > 0. The chain never pulls: while it is slack (T = 0) its
+!! states do not move, and at an accepted slack state a rate-dependent
+!! element recovers towards where it carries nothing, as far as it can
+!! without touching the others again (accept; the energy it held is
+!! dissipated). Rate terms of an element that bottoms out, is gated or is
+!! plastic are not used in a chain of several: its rigid pieces have no
+!! rate.
+!!
+!! Energies (docs/loading.md 4): each element's stored energy is a function
+!! of its deformation and memory (recurrent_stored; a gated element's gate
+!! adds gate * (x - x_hold) while it is pushed beyond its hold), its
+!! dissipated energy what its memory booked at accepted changes of the law
+!! plus the work of its rate terms, (T - F_b) x' >= 0, integrated.
+module series_chain
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use kinds, only: wp
+   use strings, only: num, itoa
+   use loading_curves, only: curve_is_defined
+   use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_eval, recurrent_accept, &
+      recurrent_stored, loading_point_t
+   use loading_branch, only: branch_point_t, branch_at, zero_extent, rate_force, rate_slope, rate_inverse, &
+      min_slope, rigid_slope
+   use root_search, only: root_search_t, root_begin, root_update, root_running, root_not_finite, bisections
+   use series_split, only: max_chain, deformation_split_t, split_deformation, split_ok, split_no_convergence, &
+      split_not_finite, path_none, path_pair, path_newton, path_search, region_slack, region_unloaded, &
+      region_loaded, force_tol
+   implicit none
+   private
+
+   public :: max_chain, series_chain_t, chain_split_t, chain_new, chain_split, chain_accept, chain_energies
+   public :: chain_set_initial, chain_relaxing, chain_split_text, chain_gates, chain_n_aux, chain_stateful
+   public :: split_ok, split_no_convergence, split_not_finite
+   public :: path_none, path_pair, path_newton, path_search, region_slack, region_unloaded, region_loaded
+
+   !> A chain: its elements' laws and memories, and how they are held.
+   type :: series_chain_t
+      integer :: n = 0
+      type(recurrent_law_t) :: law(max_chain)
+      type(loading_memory_t) :: mem(max_chain)
+      real(wp) :: cap(max_chain) = 0.0_wp       !< > 0: bottoms out there (figure 25)
+      !> the steering column behind its padding (D-C19): held by a gate, the
+      !! force of the element before it at that one's cap
+      logical :: gated(max_chain) = .false.
+      !> rate-dependent in a chain of several: its deformation is a state,
+      !! x_offset + the chain's auxiliary quantity n + state(i)
+      logical :: stateful(max_chain) = .false.
+      integer :: state(max_chain) = 0
+      integer :: n_states = 0
+      !> every element rate-dependent: this one takes what the others leave
+      integer :: absorber = 0
+      !> its rate terms act (a single element; a stateful one; the absorber)
+      logical :: rated(max_chain) = .false.
+      real(wp) :: x_offset(max_chain) = 0.0_wp
+      integer :: max_iter = 60
+   end type series_chain_t
+
+   !> The chain at one state.
+   type :: chain_split_t
+      integer :: status = split_ok
+      integer :: region = region_slack
+      integer :: iterations = 0              !< evaluations of the elements' branches
+      integer :: path = path_none            !< the solver of the rate-independent split
+      integer :: sweeps = 0
+      real(wp) :: force = 0.0_wp             !< T, the tension every element carries
+      real(wp) :: guess = 0.0_wp             !< the unknown of the split's search (a start for the next)
+      real(wp) :: guess_rate = 0.0_wp        !< its rate
+      !> (the arrays for the chain's n elements only, set by chain_split: no
+      !! default initialization, which would cost as much as a split)
+      real(wp) :: x(max_chain)               !< element deformations
+      real(wp) :: rate(max_chain)            !< their rates
+      real(wp) :: gate(max_chain)            !< the gated elements' gates
+      !> the rates of the chain's auxiliary quantities: per element the power its
+      !! rate terms dissipate, then per state its rate
+      real(wp) :: aux_rate(2*max_chain)
+   end type chain_split_t
+
+contains
+
+   !> A chain of the n laws (the memories fresh), with caps and gates.
+   pure function chain_new(law, cap, gated, max_iter) result(ch)
+      type(recurrent_law_t), intent(in) :: law(:)
+      real(wp), intent(in), optional :: cap(:)
+      logical, intent(in), optional :: gated(:)
+      integer, intent(in), optional :: max_iter
+      type(series_chain_t) :: ch
+      logical :: usable(max_chain)
+      integer :: i
+      ch%n = size(law)
+      ch%law(1:ch%n) = law
+      if (present(cap)) ch%cap(1:ch%n) = cap
+      if (present(gated)) ch%gated(1:ch%n) = gated
+      if (present(max_iter)) ch%max_iter = max_iter
+      if (ch%n == 1) then
+         ch%rated(1) = ch%law(1)%n_rate > 0
+         return
+      end if
+      do i = 1, ch%n
+         usable(i) = ch%law(i)%n_rate > 0 .and. curve_is_defined(ch%law(i)%curve) .and. .not. ch%gated(i) &
+                     .and. .not. ch%law(i)%plastic .and. .not. ch%cap(i) > 0.0_wp
+      end do
+      ch%rated(1:ch%n) = usable(1:ch%n)
+      if (all(usable(1:ch%n))) ch%absorber = ch%n
+      do i = 1, ch%n
+         if (.not. usable(i) .or. i == ch%absorber) cycle
+         ch%stateful(i) = .true.
+         ch%n_states = ch%n_states + 1
+         ch%state(i) = ch%n_states
+      end do
+   end function chain_new
+
+   !> The chain's auxiliary quantities (docs/loading.md 4): per element the
+   !! work of its rate terms, then per state one.
+   pure integer function chain_n_aux(ch)
+      type(series_chain_t), intent(in) :: ch
+      chain_n_aux = ch%n + ch%n_states
+   end function chain_n_aux
+
+   !> Whether element i's deformation is a state of the chain.
+   pure logical function chain_stateful(ch, i)
+      type(series_chain_t), intent(in) :: ch
+      integer, intent(in) :: i
+      chain_stateful = ch%stateful(i)
+   end function chain_stateful
+
+   !> The gates (D-C19): a gated element's, the branch force of the element
+   !! before it at that one's cap, with its memory; 0 for the others.
+   pure function chain_gates(ch) result(g)
+      type(series_chain_t), intent(in) :: ch
+      real(wp) :: g(max_chain)
+      type(branch_point_t) :: bp
+      integer :: i
+      g = 0.0_wp
+      do i = 2, ch%n
+         if (.not. (ch%gated(i) .and. ch%cap(i - 1) > 0.0_wp)) cycle
+         bp = branch_at(ch%law(i - 1), ch%mem(i - 1), ch%cap(i - 1))
+         g(i) = bp%force
+      end do
+   end function chain_gates
+
+   !> The chain at total deformation s (slack taken out) and rate s_dot, its
+   !! states in aux (the chain's auxiliary quantities, chain_n_aux of them).
+   !! guess: a start for the rate-independent split's search (sp%guess of a
+   !! nearby state); search: that split by the search by force alone (the
+   !! tests' reference). Pure: the memories are read, never written.
+   pure subroutine chain_split(ch, s, s_dot, aux, sp, guess, search)
+      type(series_chain_t), intent(in) :: ch
+      real(wp), intent(in) :: s, s_dot
+      real(wp), intent(in) :: aux(:)
+      type(chain_split_t), intent(out) :: sp
+      real(wp), intent(in), optional :: guess
+      logical, intent(in), optional :: search
+      type(deformation_split_t) :: dsp
+      type(loading_point_t) :: pt
+      type(branch_point_t) :: bp
+      real(wp) :: xf(max_chain), fb(max_chain), w(max_chain), g(max_chain), r_dot, t, total
+      integer :: i, j, n, n_flat, a
+
+      n = ch%n
+      sp%x(1:n) = 0.0_wp
+      sp%rate(1:n) = 0.0_wp
+      sp%aux_rate(1:n + ch%n_states) = 0.0_wp
+      g = chain_gates(ch)
+      sp%gate(1:n) = g(1:n)
+      if (.not. (ieee_is_finite(s) .and. ieee_is_finite(s_dot))) then
+         sp%status = split_not_finite
+         return
+      end if
+      if (n == 1) then
+         ! one element: the law of loading_curves, T = max(0, F_b + F_v) while F_b > 0
+         sp%guess = s
+         sp%guess_rate = s_dot
+         if (.not. s > 0.0_wp) return
+         pt = recurrent_eval(ch%law(1), ch%mem(1), s, s_dot)
+         sp%x(1) = s
+         sp%rate(1) = s_dot
+         sp%force = pt%force
+         sp%region = merge(region_loaded, region_unloaded, pt%branch > 0.0_wp)
+         sp%aux_rate(1) = (pt%force - pt%branch)*s_dot
+         sp%iterations = 1
+         return
+      end if
+
+      ! the rate-independent elements share what the states leave (held there)
+      xf(1:n) = 0.0_wp
+      do i = 1, n
+         if (ch%stateful(i)) xf(i) = ch%x_offset(i) + aux(n + ch%state(i))
+      end do
+      call split_deformation(n, ch%law, ch%mem, s, ch%max_iter, dsp, guess=guess, cap=ch%cap, gate=sp%gate, &
+                             fixed=ch%stateful, x_fixed=xf, search=search)
+      sp%status = dsp%status
+      sp%region = dsp%region
+      sp%iterations = dsp%iterations
+      sp%path = dsp%path
+      sp%sweeps = dsp%sweeps
+      sp%guess = dsp%guess
+      if (dsp%status /= split_ok) return
+      sp%x(1:n) = dsp%x(1:n)
+      do i = 1, n
+         fb(i) = 0.0_wp
+         if (.not. ch%rated(i)) cycle
+         bp = branch_at(ch%law(i), ch%mem(i), sp%x(i))
+         fb(i) = bp%force
+      end do
+
+      a = ch%absorber
+      if (a == 0) then
+         t = max(dsp%force, 0.0_wp)
+      else
+         t = absorber_tension()
+         if (t < 0.0_wp) then
+            sp%status = split_not_finite
+            return
+         end if
+      end if
+      sp%force = t
+      ! the states' rates: each rate-dependent element carries T with its own
+      ! rate term; none while the chain is slack
+      r_dot = s_dot
+      do i = 1, n
+         if (.not. ch%stateful(i)) cycle
+         if (t > 0.0_wp) sp%rate(i) = rate_inverse(ch%law(i), t - fb(i))
+         r_dot = r_dot - sp%rate(i)
+         sp%aux_rate(n + ch%state(i)) = sp%rate(i)
+         sp%aux_rate(i) = (t - fb(i))*sp%rate(i)
+      end do
+      ! the rest shared by the rate-independent elements: their compliances
+      ! (loaded), their residual deformations (taken up but unloaded)
+      w(1:n) = 0.0_wp
+      select case (dsp%region)
+      case (region_loaded)
+         n_flat = 0
+         do i = 1, n
+            if (ch%stateful(i)) cycle
+            if (.not. dsp%slope(i) > min_slope) n_flat = n_flat + 1
+         end do
+         total = 0.0_wp
+         do i = 1, n
+            if (ch%stateful(i)) cycle
+            if (n_flat > 0) then
+               if (.not. dsp%slope(i) > min_slope) w(i) = 1.0_wp/real(n_flat, wp)   ! a flat branch takes it all
+            else if (dsp%slope(i) < rigid_slope) then
+               w(i) = 1.0_wp/dsp%slope(i)
+               total = total + w(i)
+            end if
+         end do
+         if (n_flat == 0) then
+            if (total > 0.0_wp) then
+               w(1:n) = w(1:n)/total
+            else
+               w(1:n) = 0.0_wp          ! every one rigid: the rest takes no rate
+            end if
+         end if
+      case (region_unloaded)
+         total = 0.0_wp
+         do i = 1, n
+            if (.not. ch%stateful(i)) total = total + sp%x(i)
+         end do
+         do i = 1, n
+            if (.not. ch%stateful(i) .and. total > 0.0_wp) w(i) = sp%x(i)/total
+         end do
+      end select
+      do i = 1, n
+         if (ch%stateful(i)) cycle
+         sp%rate(i) = w(i)*r_dot
+      end do
+      if (a > 0) sp%aux_rate(a) = (t - fb(a))*sp%rate(a)
+      ! the search's start and its rate: x of the first free element, or the force
+      sp%guess_rate = 0.0_wp
+      select case (dsp%path)
+      case (path_newton, path_search)
+         i = 0
+         do j = 1, n
+            if (ch%stateful(j)) cycle
+            if (dsp%slope(j) > min_slope .and. dsp%slope(j) < rigid_slope) then
+               if (i == 0) then
+                  i = j
+               else if (dsp%slope(j) > dsp%slope(i)) then
+                  i = j
+               end if
+            end if
+         end do
+         if (i > 0) sp%guess_rate = dsp%slope(i)*sp%rate(i)
+      case default
+         i = findloc(ch%stateful(1:n), .false., 1)
+         if (i > 0) sp%guess_rate = sp%rate(i)
+      end select
+   contains
+      !> Every element rate-dependent: T >= 0 with T = F_b,a(x_a) + F_v,a(s' -
+      !! sum_d F_v,d^-1(T - F_b,d)) - the right side falls as T grows, so the
+      !! root is unique; 0 where the absorber carries nothing or would pull;
+      !! -1 where the search met a value that is not finite.
+      pure real(wp) function absorber_tension() result(tt)
+         type(root_search_t) :: q
+         real(wp) :: hi, psi, dpsi
+         integer :: it
+         tt = 0.0_wp
+         if (.not. fb(a) > 0.0_wp) return
+         call psi_at(0.0_wp, psi, dpsi)
+         if (.not. psi < 0.0_wp) return
+         hi = max(fb(a), 1.0_wp)
+         do it = 1, 400
+            call psi_at(hi, psi, dpsi)
+            if (psi >= 0.0_wp) exit
+            hi = 2.0_wp*hi
+         end do
+         call root_begin(q, 0.0_wp, hi, fb(a), 1.0e-14_wp*hi, force_tol, ch%max_iter)
+         do
+            call psi_at(q%x, psi, dpsi)
+            call root_update(q, psi, dpsi, max(q%x, fb(a)))
+            if (q%state /= root_running) exit
+         end do
+         tt = q%x
+         if (q%state == root_not_finite) tt = -1.0_wp
+      end function absorber_tension
+
+      !> psi(T) = T - F_b,a - F_v,a(x_a'(T)), increasing, and its slope.
+      pure subroutine psi_at(tt, psi, dpsi)
+         real(wp), intent(in) :: tt
+         real(wp), intent(out) :: psi, dpsi
+         real(wp) :: va, vd, comp, c
+         integer :: k
+         va = s_dot
+         comp = 0.0_wp
+         do k = 1, n
+            if (.not. ch%stateful(k)) cycle
+            vd = rate_inverse(ch%law(k), tt - fb(k))
+            va = va - vd
+            c = rate_slope(ch%law(k), vd)
+            if (c > 0.0_wp) comp = comp + 1.0_wp/c
+         end do
+         psi = tt - fb(a) - rate_force(ch%law(a), va)
+         dpsi = 1.0_wp + rate_slope(ch%law(a), va)*comp
+      end subroutine psi_at
+   end subroutine chain_split
+
+   !> The stored and dissipated energy of each element at the state of sp
+   !! (chain_split's; aux the chain's auxiliary quantities): its stored
+   !! energy a function of its deformation and memory, its dissipated energy
+   !! what its memory booked plus the work of its rate terms.
+   pure subroutine chain_energies(ch, sp, aux, stored, dissipated)
+      type(series_chain_t), intent(in) :: ch
+      type(chain_split_t), intent(in) :: sp
+      real(wp), intent(in) :: aux(:)
+      real(wp), intent(out) :: stored(:), dissipated(:)
+      integer :: i
+      do i = 1, ch%n
+         stored(i) = element_stored(ch, i, sp%x(i), sp%gate(i))
+         dissipated(i) = ch%mem(i)%e_dissipated + aux(i)
+      end do
+   end subroutine chain_energies
+
+   !> Element i's stored energy at deformation x: its law's
+   !! (recurrent_stored) and, gated, its gate's work beyond its hold, which
+   !! a state past it gives back along the same path until the turning point
+   !! is accepted (then it is dissipated: the column does not spring back
+   !! through its gate).
+   pure real(wp) function element_stored(ch, i, x, gate) result(e)
+      type(series_chain_t), intent(in) :: ch
+      integer, intent(in) :: i
+      real(wp), intent(in) :: x, gate
+      e = recurrent_stored(ch%law(i), ch%mem(i), x)
+      if (gate > 0.0_wp) e = e + gate*max(0.0_wp, x - max(ch%mem(i)%x_hold, zero_extent(ch%law(i), ch%mem(i))))
+   end function element_stored
+
+   !> After an ACCEPTED step: every element's memory from its deformation
+   !! and rate at the accepted state (figure 18; recurrent_accept books the
+   !! energy its law's change dissipates), the gates' work past a hold that
+   !! moved dissipated, and where the chain is slack the rate-dependent
+   !! elements recovered (chain_split's note). changed: the right-hand side
+   !! is a different function from here on (the stepper restarts).
+   pure subroutine chain_accept(ch, s, s_dot, aux, changed, guess)
+      type(series_chain_t), intent(inout) :: ch
+      real(wp), intent(in) :: s, s_dot
+      real(wp), intent(in) :: aux(:)
+      logical, intent(out) :: changed
+      real(wp), intent(in), optional :: guess
+      type(chain_split_t) :: sp
+      real(wp) :: gate_work(max_chain), g_new(max_chain), gap, target, e0, zd, r, zsum
+      logical :: c
+      integer :: i, n
+      changed = .false.
+      n = ch%n
+      call chain_split(ch, s, s_dot, aux, sp, guess)
+      ! a split that fails here fails again at the next step's first
+      ! evaluation of this state, which ends the run with the failure text
+      if (sp%status /= split_ok) return
+      do i = 1, n
+         gate_work(i) = element_stored(ch, i, sp%x(i), sp%gate(i)) - recurrent_stored(ch%law(i), ch%mem(i), sp%x(i))
+         call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), sp%rate(i), c)
+         changed = changed .or. c
+      end do
+      g_new = chain_gates(ch)
+      do i = 1, n
+         if (.not. (sp%gate(i) > 0.0_wp .or. g_new(i) > 0.0_wp)) cycle
+         e0 = gate_work(i) - (element_stored(ch, i, sp%x(i), g_new(i)) - recurrent_stored(ch%law(i), ch%mem(i), sp%x(i)))
+         ch%mem(i)%e_dissipated = ch%mem(i)%e_dissipated + e0
+      end do
+      if (ch%n_states == 0 .or. sp%force > 0.0_wp) return
+      ! slack: the rate-dependent elements recover, as far as they can without
+      ! loading the others (the gap before the rest is taken up again)
+      if (ch%absorber > 0) then
+         gap = zero_extent(ch%law(ch%absorber), ch%mem(ch%absorber)) - sp%x(ch%absorber)
+      else
+         r = s
+         zsum = 0.0_wp
+         do i = 1, n
+            if (ch%stateful(i)) then
+               r = r - sp%x(i)
+            else
+               zsum = zsum + zero_extent(ch%law(i), ch%mem(i))
+            end if
+         end do
+         gap = zsum - r
+      end if
+      do i = 1, n
+         if (.not. (ch%stateful(i) .and. gap > 0.0_wp)) cycle
+         ! (a turning point first, where it was loading)
+         call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), -1.0_wp, c)
+         changed = changed .or. c
+         zd = zero_extent(ch%law(i), ch%mem(i))
+         target = max(zd, sp%x(i) - gap)
+         if (.not. target < sp%x(i)) cycle
+         e0 = recurrent_stored(ch%law(i), ch%mem(i), sp%x(i)) - recurrent_stored(ch%law(i), ch%mem(i), target)
+         ch%mem(i)%e_dissipated = ch%mem(i)%e_dissipated + e0
+         ch%x_offset(i) = ch%x_offset(i) - (sp%x(i) - target)
+         gap = gap - (sp%x(i) - target)
+         changed = .true.
+      end do
+   end subroutine chain_accept
+
+   !> Whether a rate-dependent element of the chain still carries load on its
+   !! branch (a slack chain's accept then recovers it: chain_accept).
+   pure logical function chain_relaxing(ch, aux) result(relaxing)
+      type(series_chain_t), intent(in) :: ch
+      real(wp), intent(in) :: aux(:)
+      type(branch_point_t) :: bp
+      integer :: i
+      relaxing = .false.
+      do i = 1, ch%n
+         if (.not. ch%stateful(i)) cycle
+         bp = branch_at(ch%law(i), ch%mem(i), ch%x_offset(i) + aux(ch%n + ch%state(i)))
+         relaxing = relaxing .or. bp%force > 0.0_wp
+      end do
+   end function chain_relaxing
+
+   !> At the initial state (C.2, D-C21: the initial force with the rate 0):
+   !! every element at the split of s0 with all of them free, fresh memories;
+   !! the states start there.
+   pure subroutine chain_set_initial(ch, s0)
+      type(series_chain_t), intent(inout) :: ch
+      real(wp), intent(in) :: s0
+      type(deformation_split_t) :: dsp
+      integer :: i
+      ch%x_offset = 0.0_wp
+      if (ch%n_states == 0 .or. .not. s0 > 0.0_wp) return
+      call split_deformation(ch%n, ch%law, ch%mem, s0, ch%max_iter, dsp, cap=ch%cap, gate=chain_gates(ch))
+      if (dsp%status /= split_ok) return
+      do i = 1, ch%n
+         if (ch%stateful(i)) ch%x_offset(i) = dsp%x(i)
+      end do
+   end subroutine chain_set_initial
+
+   !> Why a split failed, for the failure message.
+   pure function chain_split_text(sp, s, s_dot, max_iter, setting) result(text)
+      type(chain_split_t), intent(in) :: sp
+      real(wp), intent(in) :: s, s_dot
+      integer, intent(in) :: max_iter
+      character(len=*), intent(in), optional :: setting   !< where the deck sets max_iter, e.g. ' (*BELTOPTIONS ITER)'
+      character(len=:), allocatable :: text
+      select case (sp%status)
+      case (split_no_convergence)
+         text = 'the shared deflection did not converge within '//itoa(max_iter)//' iterations'
+         if (present(setting)) text = text//setting
+         text = text//' and '//itoa(bisections)//' bisections at the deformation '//num(s)//' in, rate '//num(s_dot)//' in/s'
+      case (split_not_finite)
+         text = 'the shared deflection met a value that is not finite (deformation '//num(s)//' in, rate ' &
+                //num(s_dot)//' in/s)'
+      case default
+         text = ''
+      end select
+   end function chain_split_text
+end module series_chain
