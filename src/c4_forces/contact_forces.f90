@@ -74,15 +74,14 @@ module contact_forces
       logical :: undesired = .false.
       logical :: accepted_once = .false., was_loaded = .false.
       !> the windshield (D-C24, D-C25): glass shatters at an accepted state
-      !! whose P reaches fsw, and from then on carries nothing; its stored
-      !! energy moves to the switch account (dissipated); a head through the
-      !! broken glass is cut, once per episode of contact
+      !! whose P reaches fsw, and from then on carries nothing (its stored
+      !! energy, released, is dissipated); a head through the broken glass is
+      !! cut, once per episode of contact
       real(wp) :: fsw = 0.0_wp                  !< 0: never shatters
       logical :: shattered = .false., cutting = .false.
       !> P at the last accepted state (the glass: where its break is located
       !! from, D-C24b)
       real(wp) :: p_accepted = 0.0_wp
-      real(wp) :: e_switch = 0.0_wp
       !> the largest P over the accepted steps, when, and where (T and delta
       !! then): the summary's contact peaks (peaks)
       real(wp) :: peak_p = 0.0_wp, peak_t = 0.0_wp, peak_pos = 0.0_wp, peak_delta = 0.0_wp
@@ -660,7 +659,6 @@ contains
          this%shattered = .true.
          this%locates = .false.                                             ! nothing left to locate (D-C24b)
          if (this%guard%kind /= guard_none) this%guard%kind = guard_always   ! broken glass carries nothing
-         this%e_switch = stored_energy(this, ps%split, aux)   ! the glass's stored energy, released
          result%restart = .true.
          call add_event(event_t(t=st%t, kind=event_shatter, index=this%i, value=ps%split%force, limit=this%fsw, &
                                 surface=this%k))
@@ -713,7 +711,7 @@ contains
       call pair_eval(this, st, aux, ps)
       call chain_energies(this%chain, ps%split, aux, ce, de)
       e(energy_stored) = sum(ce(1:this%n_elem))
-      e(energy_dissipated) = sum(de(1:this%n_elem)) + aux(this%aux_friction) + this%e_switch
+      e(energy_dissipated) = sum(de(1:this%n_elem)) + aux(this%aux_friction)
       e(energy_supplied) = aux(this%aux_supplied)
    end subroutine pair_energy
 
@@ -739,16 +737,6 @@ contains
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
       call chain_set_initial(this%chain, ps%cs%delta)
    end subroutine pair_set_initial
-
-   !> The elements' stored energy at the split sp, before any switch.
-   pure real(wp) function stored_energy(this, sp, aux) result(total)
-      class(contact_pair_effect_t), intent(in) :: this
-      type(chain_split_t), intent(in) :: sp
-      real(wp), intent(in) :: aux(:)
-      real(wp) :: ce(max_chain), de(max_chain)
-      call chain_energies(this%chain, sp, aux, ce, de)
-      total = sum(ce(1:this%n_elem))
-   end function stored_energy
 
    pure subroutine pair_point_forces(this, st, extra, aux, list)
       class(contact_pair_effect_t), intent(in) :: this

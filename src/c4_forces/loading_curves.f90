@@ -34,7 +34,7 @@ module loading_curves
    public :: loading_curve_t, curve_none, curve_polynomial, curve_table, max_order
    public :: curve_is_defined, curve_elastic_force, curve_rate_force, curve_force
    public :: curve_energy, curve_moment, curve_deflection_at, curve_check, curve_flat_extent
-   public :: polynomial_minimum, table_interval
+   public :: polynomial_minimum, table_interval, curve_max_slope
 
    !> Forms of a curve: NLOAD = 1 and 2 of *OPTIONS (C.1).
    integer, parameter :: curve_none = 0, curve_polynomial = 1, curve_table = 2
@@ -75,6 +75,27 @@ contains
          z = c%defl(k)
       end do
    end function curve_flat_extent
+
+   !> The curve's stiffest slope (lb/in): a table's steepest interval, a
+   !! polynomial's F_e' at 1 in (it has no largest). The shared deflection
+   !! gives a padding crushed solid this slope in a chain with a
+   !! rate-dependent element (series_chain). 0 for a curve not defined.
+   pure real(wp) function curve_max_slope(c) result(k)
+      type(loading_curve_t), intent(in) :: c
+      integer :: i
+      k = 0.0_wp
+      select case (c%form)
+      case (curve_polynomial)
+         do i = 1, c%order
+            k = k + real(i, wp)*c%sigma(i)
+         end do
+      case (curve_table)
+         do i = 1, size(c%defl) - 1
+            k = max(k, slope(c, i))
+         end do
+      end select
+      k = max(k, 0.0_wp)
+   end function curve_max_slope
 
    !> The elastic (rate-independent) part F_e(d); 0 for d <= 0.
    pure real(wp) function curve_elastic_force(c, d) result(f)

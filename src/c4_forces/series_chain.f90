@@ -36,13 +36,16 @@
 !! Energies (docs/loading.md 4): each element's stored energy is a function
 !! of its deformation and memory (recurrent_stored; a gated element's gate
 !! adds gate * (x - x_hold) while it is pushed beyond its hold), its
-!! dissipated energy what its memory booked at accepted changes of the law
-!! plus the work of its rate terms, (T - F_b) x' >= 0, integrated.
+!! dissipated energy the work done on it, T x' integrated, less that. Its
+!! rate is (T - F_b) x' >= 0 for a rate-dependent element, 0 for a
+!! rate-independent one; it jumps up where the memory changes at a turning
+!! point, and where the chain's deformation jumps (a contact's geometry
+!! switching), the energy released without work is dissipated too.
 module series_chain
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
    use strings, only: num, itoa
-   use loading_curves, only: curve_is_defined
+   use loading_curves, only: curve_is_defined, curve_max_slope
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_eval, recurrent_accept, &
       recurrent_stored, loading_point_t
    use loading_branch, only: branch_point_t, branch_at, zero_extent, rate_force, rate_slope, rate_inverse, &
@@ -65,6 +68,9 @@ module series_chain
       type(recurrent_law_t) :: law(max_chain)
       type(loading_memory_t) :: mem(max_chain)
       real(wp) :: cap(max_chain) = 0.0_wp       !< > 0: bottoms out there (figure 25)
+      !> > 0: the cap is soft, the element crushed solid stiffening at this
+      !! slope (a chain with a rate-dependent element: the chain's stiffest)
+      real(wp) :: cap_slope(max_chain) = 0.0_wp
       !> the steering column behind its padding (D-C19): held by a gate, the
       !! force of the element before it at that one's cap
       logical :: gated(max_chain) = .false.
@@ -78,6 +84,9 @@ module series_chain
       !> its rate terms act (a single element; a stateful one; the absorber)
       logical :: rated(max_chain) = .false.
       real(wp) :: x_offset(max_chain) = 0.0_wp
+      !> the work done on each element before t = 0 (D-C26: an initial
+      !! deformation counts as a loading before the run; its stored energy)
+      real(wp) :: w_initial(max_chain) = 0.0_wp
       integer :: max_iter = 60
    end type series_chain_t
 
@@ -96,8 +105,8 @@ module series_chain
       real(wp) :: x(max_chain)               !< element deformations
       real(wp) :: rate(max_chain)            !< their rates
       real(wp) :: gate(max_chain)            !< the gated elements' gates
-      !> the rates of the chain's auxiliary quantities: per element the power its
-      !! rate terms dissipate, then per state its rate
+      !> the rates of the chain's auxiliary quantities: per element the work
+      !! done on it, T x', then per state its rate
       real(wp) :: aux_rate(2*max_chain)
    end type chain_split_t
 
@@ -111,7 +120,7 @@ contains
       integer, intent(in), optional :: max_iter
       type(series_chain_t) :: ch
       logical :: usable(max_chain)
-      integer :: i
+      integer :: i, j
       ch%n = size(law)
       ch%law(1:ch%n) = law
       if (present(cap)) ch%cap(1:ch%n) = cap
@@ -127,6 +136,15 @@ contains
       end do
       ch%rated(1:ch%n) = usable(1:ch%n)
       if (all(usable(1:ch%n))) ch%absorber = ch%n
+      ! a rate-dependent element's state cannot follow a chain that is rigid -
+      ! a padding at its cap with the column held by its gate: the states
+      ! would chatter about it - so there the padding, crushed solid,
+      ! stiffens at the chain's stiffest slope instead (docs/loading.md 5)
+      if (any(usable(1:ch%n))) then
+         do i = 1, ch%n
+            if (ch%cap(i) > 0.0_wp) ch%cap_slope(i) = maxval([(curve_max_slope(ch%law(j)%curve), j=1, ch%n)])
+         end do
+      end if
       do i = 1, ch%n
          if (.not. usable(i) .or. i == ch%absorber) cycle
          ch%stateful(i) = .true.
@@ -136,7 +154,7 @@ contains
    end function chain_new
 
    !> The chain's auxiliary quantities (docs/loading.md 4): per element the
-   !! work of its rate terms, then per state one.
+   !! work done on it, then per state one.
    pure integer function chain_n_aux(ch)
       type(series_chain_t), intent(in) :: ch
       chain_n_aux = ch%n + ch%n_states
@@ -202,7 +220,7 @@ contains
          sp%rate(1) = s_dot
          sp%force = pt%force
          sp%region = merge(region_loaded, region_unloaded, pt%branch > 0.0_wp)
-         sp%aux_rate(1) = (pt%force - pt%branch)*s_dot
+         sp%aux_rate(1) = pt%force*s_dot
          sp%iterations = 1
          return
       end if
@@ -213,7 +231,7 @@ contains
          if (ch%stateful(i)) xf(i) = ch%x_offset(i) + aux(n + ch%state(i))
       end do
       call split_deformation(n, ch%law, ch%mem, s, ch%max_iter, dsp, guess=guess, cap=ch%cap, gate=sp%gate, &
-                             fixed=ch%stateful, x_fixed=xf, search=search)
+                             fixed=ch%stateful, x_fixed=xf, search=search, cap_slope=ch%cap_slope)
       sp%status = dsp%status
       sp%region = dsp%region
       sp%iterations = dsp%iterations
@@ -248,7 +266,6 @@ contains
          if (t > 0.0_wp) sp%rate(i) = rate_inverse(ch%law(i), t - fb(i))
          r_dot = r_dot - sp%rate(i)
          sp%aux_rate(n + ch%state(i)) = sp%rate(i)
-         sp%aux_rate(i) = (t - fb(i))*sp%rate(i)
       end do
       ! the rest shared by the rate-independent elements: their compliances
       ! (loaded), their residual deformations (taken up but unloaded)
@@ -287,10 +304,9 @@ contains
          end do
       end select
       do i = 1, n
-         if (ch%stateful(i)) cycle
-         sp%rate(i) = w(i)*r_dot
+         if (.not. ch%stateful(i)) sp%rate(i) = w(i)*r_dot
+         sp%aux_rate(i) = t*sp%rate(i)
       end do
-      if (a > 0) sp%aux_rate(a) = (t - fb(a))*sp%rate(a)
       ! the search's start and its rate: x of the first free element, or the force
       sp%guess_rate = 0.0_wp
       select case (dsp%path)
@@ -363,7 +379,7 @@ contains
    !> The stored and dissipated energy of each element at the state of sp
    !! (chain_split's; aux the chain's auxiliary quantities): its stored
    !! energy a function of its deformation and memory, its dissipated energy
-   !! what its memory booked plus the work of its rate terms.
+   !! the work done on it less that.
    pure subroutine chain_energies(ch, sp, aux, stored, dissipated)
       type(series_chain_t), intent(in) :: ch
       type(chain_split_t), intent(in) :: sp
@@ -372,29 +388,36 @@ contains
       integer :: i
       do i = 1, ch%n
          stored(i) = element_stored(ch, i, sp%x(i), sp%gate(i))
-         dissipated(i) = ch%mem(i)%e_dissipated + aux(i)
+         dissipated(i) = ch%w_initial(i) + aux(i) - stored(i)
       end do
    end subroutine chain_energies
 
    !> Element i's stored energy at deformation x: its law's
-   !! (recurrent_stored) and, gated, its gate's work beyond its hold, which
-   !! a state past it gives back along the same path until the turning point
-   !! is accepted (then it is dissipated: the column does not spring back
-   !! through its gate).
+   !! (recurrent_stored); beyond a soft cap the elastic crush of the solid;
+   !! gated, its gate's work beyond its hold, which a state past it gives
+   !! back along the same path until the turning point is accepted (then it
+   !! is dissipated: the column does not spring back through its gate).
    pure real(wp) function element_stored(ch, i, x, gate) result(e)
       type(series_chain_t), intent(in) :: ch
       integer, intent(in) :: i
       real(wp), intent(in) :: x, gate
-      e = recurrent_stored(ch%law(i), ch%mem(i), x)
+      type(branch_point_t) :: bp
+      real(wp) :: over
+      over = 0.0_wp
+      if (ch%cap_slope(i) > 0.0_wp) over = max(0.0_wp, x - ch%cap(i))
+      e = recurrent_stored(ch%law(i), ch%mem(i), x - over)
+      if (over > 0.0_wp) then
+         bp = branch_at(ch%law(i), ch%mem(i), ch%cap(i))
+         e = e + (bp%force + 0.5_wp*ch%cap_slope(i)*over)*over
+      end if
       if (gate > 0.0_wp) e = e + gate*max(0.0_wp, x - max(ch%mem(i)%x_hold, zero_extent(ch%law(i), ch%mem(i))))
    end function element_stored
 
    !> After an ACCEPTED step: every element's memory from its deformation
-   !! and rate at the accepted state (figure 18; recurrent_accept books the
-   !! energy its law's change dissipates), the gates' work past a hold that
-   !! moved dissipated, and where the chain is slack the rate-dependent
-   !! elements recovered (chain_split's note). changed: the right-hand side
-   !! is a different function from here on (the stepper restarts).
+   !! and rate at the accepted state (figure 18), and where the chain is
+   !! slack the rate-dependent elements recovered (chain_split's note; the
+   !! energy they held dissipated). changed: the right-hand side is a
+   !! different function from here on (the stepper restarts).
    pure subroutine chain_accept(ch, s, s_dot, aux, changed, guess)
       type(series_chain_t), intent(inout) :: ch
       real(wp), intent(in) :: s, s_dot
@@ -402,7 +425,7 @@ contains
       logical, intent(out) :: changed
       real(wp), intent(in), optional :: guess
       type(chain_split_t) :: sp
-      real(wp) :: gate_work(max_chain), g_new(max_chain), gap, target, e0, zd, r, zsum
+      real(wp) :: gap, target, zd, r, zsum
       logical :: c
       integer :: i, n
       changed = .false.
@@ -412,15 +435,13 @@ contains
       ! evaluation of this state, which ends the run with the failure text
       if (sp%status /= split_ok) return
       do i = 1, n
-         gate_work(i) = element_stored(ch, i, sp%x(i), sp%gate(i)) - recurrent_stored(ch%law(i), ch%mem(i), sp%x(i))
-         call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), sp%rate(i), c)
+         if (ch%cap_slope(i) > 0.0_wp .and. sp%x(i) > ch%cap(i)) then
+            ! crushed solid: its own deformation the cap's, not moving
+            call recurrent_accept(ch%law(i), ch%mem(i), ch%cap(i), 0.0_wp, c)
+         else
+            call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), sp%rate(i), c)
+         end if
          changed = changed .or. c
-      end do
-      g_new = chain_gates(ch)
-      do i = 1, n
-         if (.not. (sp%gate(i) > 0.0_wp .or. g_new(i) > 0.0_wp)) cycle
-         e0 = gate_work(i) - (element_stored(ch, i, sp%x(i), g_new(i)) - recurrent_stored(ch%law(i), ch%mem(i), sp%x(i)))
-         ch%mem(i)%e_dissipated = ch%mem(i)%e_dissipated + e0
       end do
       if (ch%n_states == 0 .or. sp%force > 0.0_wp) return
       ! slack: the rate-dependent elements recover, as far as they can without
@@ -447,8 +468,6 @@ contains
          zd = zero_extent(ch%law(i), ch%mem(i))
          target = max(zd, sp%x(i) - gap)
          if (.not. target < sp%x(i)) cycle
-         e0 = recurrent_stored(ch%law(i), ch%mem(i), sp%x(i)) - recurrent_stored(ch%law(i), ch%mem(i), target)
-         ch%mem(i)%e_dissipated = ch%mem(i)%e_dissipated + e0
          ch%x_offset(i) = ch%x_offset(i) - (sp%x(i) - target)
          gap = gap - (sp%x(i) - target)
          changed = .true.
@@ -472,18 +491,24 @@ contains
 
    !> At the initial state (C.2, D-C21: the initial force with the rate 0):
    !! every element at the split of s0 with all of them free, fresh memories;
-   !! the states start there.
+   !! the states start there, and the work done on each before t = 0 is its
+   !! stored energy there (D-C26: the initial deformation counts as a
+   !! loading before the run, so nothing is dissipated at t = 0).
    pure subroutine chain_set_initial(ch, s0)
       type(series_chain_t), intent(inout) :: ch
       real(wp), intent(in) :: s0
       type(deformation_split_t) :: dsp
+      real(wp) :: g(max_chain)
       integer :: i
       ch%x_offset = 0.0_wp
-      if (ch%n_states == 0 .or. .not. s0 > 0.0_wp) return
-      call split_deformation(ch%n, ch%law, ch%mem, s0, ch%max_iter, dsp, cap=ch%cap, gate=chain_gates(ch))
+      ch%w_initial = 0.0_wp
+      if (.not. s0 > 0.0_wp) return
+      g = chain_gates(ch)
+      call split_deformation(ch%n, ch%law, ch%mem, s0, ch%max_iter, dsp, cap=ch%cap, gate=g, cap_slope=ch%cap_slope)
       if (dsp%status /= split_ok) return
       do i = 1, ch%n
          if (ch%stateful(i)) ch%x_offset(i) = dsp%x(i)
+         ch%w_initial(i) = element_stored(ch, i, dsp%x(i), g(i))
       end do
    end subroutine chain_set_initial
 

@@ -27,7 +27,7 @@ module series_split
    public :: split_ok, split_no_convergence, split_not_finite
    public :: path_none, path_pair, path_newton, path_search, max_sweeps
    public :: region_slack, region_unloaded, region_loaded
-   public :: force_tol, defl_tol
+   public :: force_tol, defl_tol, element_eval
 
    !> Elements of one chain at most: three webbing sections and three body surfaces.
    integer, parameter :: max_chain = 6
@@ -80,10 +80,14 @@ contains
    !! the steering column's gate (D-C19): held at its memory's x_hold while
    !! its force lies from its branch's force there F_h to F_h + gate,
    !! carrying gate plus its branch beyond, its branch alone below (where it
-   !! springs back, the gate free). fixed, x_fixed: elements held at x_fixed
+   !! springs back, the gate free). cap_slope (> 0 where given, with a cap):
+   !! the cap is not rigid but the element, crushed solid, stiffens to that
+   !! slope beyond it (element_eval; series_chain's chains with a
+   !! rate-dependent element). fixed, x_fixed: elements held at x_fixed
    !! whatever the force. search: the search by force alone, without
    !! Newton's method first (the tests' reference).
-   pure subroutine split_deformation(n, law, mem, s, max_iter, sp, guess, cap, gate, fixed, x_fixed, search)
+   pure subroutine split_deformation(n, law, mem, s, max_iter, sp, guess, cap, gate, fixed, x_fixed, search, &
+                                     cap_slope)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
@@ -93,7 +97,8 @@ contains
       real(wp), intent(in), optional :: guess
       real(wp), intent(in), optional :: cap(:), gate(:), x_fixed(:)
       logical, intent(in), optional :: fixed(:), search
-      real(wp) :: z(max_chain), c(max_chain), g(max_chain), xf(max_chain), zfree, sfree
+      real(wp), intent(in), optional :: cap_slope(:)
+      real(wp) :: z(max_chain), c(max_chain), g(max_chain), xf(max_chain), ks(max_chain), zfree, sfree
       logical :: fx(max_chain), plain, by_force
       integer :: i, nfree, i1, i2
       type(branch_point_t) :: bp
@@ -103,7 +108,9 @@ contains
       g(1:n) = 0.0_wp
       fx(1:n) = .false.
       xf(1:n) = 0.0_wp
+      ks(1:n) = 0.0_wp
       if (present(cap)) c(1:n) = cap(1:n)
+      if (present(cap_slope)) ks(1:n) = cap_slope(1:n)
       if (present(gate)) g(1:n) = max(gate(1:n), 0.0_wp)
       if (present(fixed)) fx(1:n) = fixed(1:n)
       if (present(x_fixed)) xf(1:n) = x_fixed(1:n)
@@ -162,13 +169,13 @@ contains
          i = findloc(fx(1:n), .false., 1)
          sp%x(i) = sfree
          seg = 0
-         if (c(i) > 0.0_wp) sp%x(i) = min(sfree, c(i))
-         call branch_eval(law(i), mem(i), sp%x(i), seg, bp)
+         if (c(i) > 0.0_wp .and. .not. ks(i) > 0.0_wp) sp%x(i) = min(sfree, c(i))
+         call element_eval(law(i), mem(i), sp%x(i), c(i), ks(i), seg, bp)
          sp%force = bp%force
          sp%slope(i) = bp%slope
          sp%loading(i) = bp%loading
          if (g(i) > 0.0_wp .and. sp%x(i) > max(mem(i)%x_hold, z(i))) sp%force = sp%force + g(i)
-         if (c(i) > 0.0_wp .and. sfree >= c(i)) sp%slope(i) = rigid_slope
+         if (c(i) > 0.0_wp .and. .not. ks(i) > 0.0_wp .and. sfree >= c(i)) sp%slope(i) = rigid_slope
          sp%iterations = 1
          sp%guess = sp%x(i)
       else if (nfree == 2 .and. plain .and. .not. by_force) then
@@ -176,7 +183,7 @@ contains
          i2 = findloc(fx(1:n), .false., 1, back=.true.)
          call pair_split(law, mem, i1, i2, sfree, z, max_iter, sp, guess)
       else
-         call split_by_force(n, law, mem, s, z, c, g, fx, max_iter, by_force, sp, guess)
+         call split_by_force(n, law, mem, s, z, c, g, ks, fx, max_iter, by_force, sp, guess)
       end if
       if (sp%status /= split_ok) then
          sp%x(1:n) = merge(xf(1:n), 0.0_wp, fx(1:n))
@@ -288,11 +295,11 @@ contains
    !! bracket closes on a flat branch or a jump, the deformations are
    !! interpolated between its ends so that they add up. search: the search
    !! alone (the tests' reference).
-   pure subroutine split_by_force(n, law, mem, s, z, cap, gate, fixed, max_iter, search, sp, guess)
+   pure subroutine split_by_force(n, law, mem, s, z, cap, gate, cap_slope, fixed, max_iter, search, sp, guess)
       integer, intent(in) :: n
       type(recurrent_law_t), intent(in) :: law(:)
       type(loading_memory_t), intent(in) :: mem(:)
-      real(wp), intent(in) :: s, z(:), cap(:), gate(:)
+      real(wp), intent(in) :: s, z(:), cap(:), gate(:), cap_slope(:)
       logical, intent(in) :: fixed(:)
       integer, intent(in) :: max_iter
       logical, intent(in) :: search      !< the search by force alone, no Newton's method first
@@ -324,7 +331,7 @@ contains
             secant(i) = huge(1.0_wp)
             cycle
          end if
-         if (cap(i) > 0.0_wp .and. cap(i) < x_max(i)) then
+         if (cap(i) > 0.0_wp .and. cap(i) < x_max(i) .and. .not. cap_slope(i) > 0.0_wp) then
             x_max(i) = cap(i)               ! it cannot deform beyond its cap (figure 25)
             call branch_eval(law(i), mem(i), cap(i), seg(i), bp)
             f_cap(i) = bp%force
@@ -334,7 +341,7 @@ contains
             call branch_eval(law(i), mem(i), x_h(i), seg(i), bp)
             f_h(i) = bp%force
          end if
-         call branch_eval(law(i), mem(i), x_max(i), seg(i), bp)
+         call element_eval(law(i), mem(i), x_max(i), cap(i), cap_slope(i), seg(i), bp)
          f_max(i) = bp%force + gate_above(i, x_max(i))
          if (x_max(i) > z(i)) then
             secant(i) = f_max(i)/(x_max(i) - z(i))
@@ -425,7 +432,7 @@ contains
             sp%slope(i) = rigid_slope        ! fixed, held (D-B10), bottomed out, or held by its gate
             sp%loading(i) = .false.
          else
-            call branch_eval(law(i), mem(i), x(i), seg(i), bp)
+            call element_eval(law(i), mem(i), x(i), cap(i), cap_slope(i), seg(i), bp)
             sp%slope(i) = bp%slope
             sp%loading(i) = bp%loading
          end if
@@ -520,7 +527,7 @@ contains
                   cycle
                end if
                if (.not. (xs(k) >= z(k) .and. xs(k) <= x_max(k))) return    ! out of its range
-               call branch_eval(law(k), mem(k), xs(k), hint(k), b)
+               call element_eval(law(k), mem(k), xs(k), cap(k), cap_slope(k), hint(k), b)
                evaluations = evaluations + 1
                fb(k) = b%force + gate_above(k, xs(k))
                kb(k) = b%slope
@@ -670,7 +677,7 @@ contains
             end if
             if (.not. f > 0.0_wp) then
                xs(k) = z(k)
-               call branch_eval(law(k), mem(k), z(k), hint(k), b)
+               call element_eval(law(k), mem(k), z(k), cap(k), cap_slope(k), hint(k), b)
             else
                ! the start: on the tangent at the element's last point (an outer step
                ! or Newton's method before), else on its secant
@@ -679,7 +686,7 @@ contains
                   x0 = x_last(k) + (f - f_last(k))/k_last(k)
                call root_begin(q, lo, hi, x0, defl_tol*s, force_tol, max_iter)
                do
-                  call branch_eval(law(k), mem(k), q%x, hint(k), b)
+                  call element_eval(law(k), mem(k), q%x, cap(k), cap_slope(k), hint(k), b)
                   call root_update(q, b%force + add - f, b%slope, f)
                   if (q%state /= root_running) exit
                end do
@@ -703,4 +710,23 @@ contains
          hf = sum(xs(1:n)) - s
       end subroutine deformations_at
    end subroutine split_by_force
+
+   !> An element's branch at x (branch_eval), and beyond a soft cap - cap > 0
+   !! with a slope k_cap > 0 - the force there rising at k_cap: the element
+   !! crushed solid (its own deformation the cap's, the rest elastic).
+   pure subroutine element_eval(law, mem, x, cap, k_cap, seg, bp)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x, cap, k_cap
+      integer, intent(inout) :: seg
+      type(branch_point_t), intent(out) :: bp
+      if (k_cap > 0.0_wp .and. cap > 0.0_wp .and. x > cap) then
+         call branch_eval(law, mem, cap, seg, bp)
+         bp%force = bp%force + k_cap*(x - cap)
+         bp%slope = k_cap
+         bp%loading = .false.
+      else
+         call branch_eval(law, mem, x, seg, bp)
+      end if
+   end subroutine element_eval
 end module series_split
