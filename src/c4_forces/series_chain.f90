@@ -303,9 +303,11 @@ contains
             if (.not. ch%stateful(i) .and. total > 0.0_wp) w(i) = sp%x(i)/total
          end do
       end select
+      ! (only where they are not 0: a slack chain's rates are +0, bit for bit
+      ! those of a pair's early exit, D-C29)
       do i = 1, n
-         if (.not. ch%stateful(i)) sp%rate(i) = w(i)*r_dot
-         sp%aux_rate(i) = t*sp%rate(i)
+         if (.not. ch%stateful(i) .and. w(i) > 0.0_wp) sp%rate(i) = w(i)*r_dot
+         if (t > 0.0_wp) sp%aux_rate(i) = t*sp%rate(i)
       end do
       ! the search's start and its rate: x of the first free element, or the force
       sp%guess_rate = 0.0_wp
