@@ -39,9 +39,9 @@
 !! itself, which a trial state past the peak retraces (the memory changes
 !! only on accepted steps). The energy between the two curves is
 !! dissipated where the law changes, at the accepted turning point, where
-!! the stored energy drops; recurrent_accept keeps it continuous where a
-!! new loading branch begins. The effect integrates the work done on the
-!! element; its dissipated energy is that work less the stored energy.
+!! the stored energy drops: recurrent_accept adds the drop to the memory's
+!! e_dissipated, and keeps the stored energy continuous where a new loading
+!! branch begins. The work of the rate terms the effect integrates.
 module recurrent_loading
    use kinds, only: wp
    use strings, only: num
@@ -95,6 +95,9 @@ module recurrent_loading
       !! e_spent (a cycle begun under load, case 2, or a loading taken up again
       !! beyond the turning point: what makes the stored energy continuous there)
       real(wp) :: e_spent = 0.0_wp
+      !> the energy dissipated at the accepted changes of the law so far: the
+      !! drops of the stored energy at turning points (docs/loading.md 4)
+      real(wp) :: e_dissipated = 0.0_wp
       !> where the element last stopped: 0 at first, delta_max at a turning
       !! point, where a new cycle began. A gated element (the steering column,
       !! D-C19) is held there by its gate (series_split)
@@ -253,9 +256,9 @@ contains
    !! must restart. The force is continuous at every change except the
    !! turning point of a plastic law (R = 0), where it drops to zero.
    !! Energy (docs/loading.md 4): the stored energy recurrent_stored is kept
-   !! continuous where a new loading branch begins (e_spent); it drops at a
-   !! turning point by the energy between the loading and the unloading
-   !! curve, which is then dissipated.
+   !! continuous where a new loading branch begins (e_spent); its drop at a
+   !! turning point - the energy between the loading and the unloading curve
+   !! - is added to e_dissipated.
    pure subroutine recurrent_accept(law, mem, delta, delta_dot, changed)
       type(recurrent_law_t), intent(in) :: law
       type(loading_memory_t), intent(inout) :: mem
@@ -267,11 +270,11 @@ contains
       e_before = recurrent_stored(law, mem, delta)
       if (.not. mem%unloading) then
          ! loading: the turning point, where d-dot becomes negative under load
-         if (delta_dot < 0.0_wp) call turn(law, mem, delta, changed)
+         if (delta_dot < 0.0_wp) call turn(law, mem, delta, e_before, changed)
       else if (delta >= mem%delta_max) then
          ! back beyond the turning point within one step: on the loading curve again
          if (delta_dot < 0.0_wp) then
-            call turn(law, mem, delta, changed)
+            call turn(law, mem, delta, e_before, changed)
          else if (delta_dot > 0.0_wp) then
             ! (its stored energy as before: the unloading curve's area to
             ! delta_max and the loading curve's beyond)
@@ -304,11 +307,12 @@ contains
       end if
    end subroutine recurrent_accept
 
-   !> The turning point of the cycle at delta, if the element is loaded there.
-   pure subroutine turn(law, mem, delta, changed)
+   !> The turning point of the cycle at delta, if the element is loaded
+   !! there; e_before, its stored energy before: the drop is dissipated.
+   pure subroutine turn(law, mem, delta, e_before, changed)
       type(recurrent_law_t), intent(in) :: law
       type(loading_memory_t), intent(inout) :: mem
-      real(wp), intent(in) :: delta
+      real(wp), intent(in) :: delta, e_before
       logical, intent(inout) :: changed
       real(wp) :: d, fm
       d = delta - mem%eps
@@ -321,6 +325,7 @@ contains
       mem%p = unloading_exponent(law, d)
       mem%x_hold = delta
       mem%e_spent = 0.0_wp
+      mem%e_dissipated = mem%e_dissipated + (e_before - recurrent_stored(law, mem, delta))
       changed = .true.
    end subroutine turn
 

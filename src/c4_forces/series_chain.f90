@@ -35,12 +35,17 @@
 !!
 !! Energies (docs/loading.md 4): each element's stored energy is a function
 !! of its deformation and memory (recurrent_stored; a gated element's gate
-!! adds gate * (x - x_hold) while it is pushed beyond its hold), its
-!! dissipated energy the work done on it, T x' integrated, less that. Its
-!! rate is (T - F_b) x' >= 0 for a rate-dependent element, 0 for a
-!! rate-independent one; it jumps up where the memory changes at a turning
-!! point, and where the chain's deformation jumps (a contact's geometry
-!! switching), the energy released without work is dissipated too.
+!! adds gate * (x - x_hold) while it is pushed beyond its hold). A
+!! rate-independent element dissipates only where its law changes at an
+!! accepted step (its stored energy's drops, booked in its memory: a
+!! turning point, the gate's work once the column stops, a recovery); a
+!! rate-dependent one dissipates the work done on it, T x' integrated,
+!! less its stored energy, at the rate (T - F_b) x' >= 0. The chain
+!! integrates its whole work T s' too: what that holds beyond its elements'
+!! energies - where the chain's deformation jumps (a contact's geometry
+!! switching), the energy released without work, and the integration's
+!! error - is dissipated, with the first rate-independent element's. So the
+!! elements' energies add up to the chain's work exactly.
 module series_chain
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
@@ -85,8 +90,9 @@ module series_chain
       logical :: rated(max_chain) = .false.
       real(wp) :: x_offset(max_chain) = 0.0_wp
       !> the work done on each element before t = 0 (D-C26: an initial
-      !! deformation counts as a loading before the run; its stored energy)
-      real(wp) :: w_initial(max_chain) = 0.0_wp
+      !! deformation counts as a loading before the run; its stored energy),
+      !! and on the whole chain
+      real(wp) :: w_initial(max_chain) = 0.0_wp, w_initial_chain = 0.0_wp
       integer :: max_iter = 60
    end type series_chain_t
 
@@ -106,8 +112,9 @@ module series_chain
       real(wp) :: rate(max_chain)            !< their rates
       real(wp) :: gate(max_chain)            !< the gated elements' gates
       !> the rates of the chain's auxiliary quantities: per element the work
-      !! done on it, T x', then per state its rate
-      real(wp) :: aux_rate(2*max_chain)
+      !! done on it, T x' (a rate-dependent one's; 0 for the others), the
+      !! chain's, T s', then per state its rate
+      real(wp) :: aux_rate(2*max_chain + 1)
    end type chain_split_t
 
 contains
@@ -154,10 +161,11 @@ contains
    end function chain_new
 
    !> The chain's auxiliary quantities (docs/loading.md 4): per element the
-   !! work done on it, then per state one.
+   !! work done on it (used for the rate-dependent ones), the chain's, then
+   !! per state one.
    pure integer function chain_n_aux(ch)
       type(series_chain_t), intent(in) :: ch
-      chain_n_aux = ch%n + ch%n_states
+      chain_n_aux = ch%n + 1 + ch%n_states
    end function chain_n_aux
 
    !> Whether element i's deformation is a state of the chain.
@@ -203,7 +211,7 @@ contains
       n = ch%n
       sp%x(1:n) = 0.0_wp
       sp%rate(1:n) = 0.0_wp
-      sp%aux_rate(1:n + ch%n_states) = 0.0_wp
+      sp%aux_rate(1:n + 1 + ch%n_states) = 0.0_wp
       g = chain_gates(ch)
       sp%gate(1:n) = g(1:n)
       if (.not. (ieee_is_finite(s) .and. ieee_is_finite(s_dot))) then
@@ -220,7 +228,8 @@ contains
          sp%rate(1) = s_dot
          sp%force = pt%force
          sp%region = merge(region_loaded, region_unloaded, pt%branch > 0.0_wp)
-         sp%aux_rate(1) = pt%force*s_dot
+         if (ch%rated(1)) sp%aux_rate(1) = pt%force*s_dot
+         sp%aux_rate(2) = pt%force*s_dot
          sp%iterations = 1
          return
       end if
@@ -228,7 +237,7 @@ contains
       ! the rate-independent elements share what the states leave (held there)
       xf(1:n) = 0.0_wp
       do i = 1, n
-         if (ch%stateful(i)) xf(i) = ch%x_offset(i) + aux(n + ch%state(i))
+         if (ch%stateful(i)) xf(i) = ch%x_offset(i) + aux(n + 1 + ch%state(i))
       end do
       call split_deformation(n, ch%law, ch%mem, s, ch%max_iter, dsp, guess=guess, cap=ch%cap, gate=sp%gate, &
                              fixed=ch%stateful, x_fixed=xf, search=search, cap_slope=ch%cap_slope)
@@ -265,7 +274,7 @@ contains
          if (.not. ch%stateful(i)) cycle
          if (t > 0.0_wp) sp%rate(i) = rate_inverse(ch%law(i), t - fb(i))
          r_dot = r_dot - sp%rate(i)
-         sp%aux_rate(n + ch%state(i)) = sp%rate(i)
+         sp%aux_rate(n + 1 + ch%state(i)) = sp%rate(i)
       end do
       ! the rest shared by the rate-independent elements: their compliances
       ! (loaded), their residual deformations (taken up but unloaded)
@@ -307,8 +316,9 @@ contains
       ! those of a pair's early exit, D-C29)
       do i = 1, n
          if (.not. ch%stateful(i) .and. w(i) > 0.0_wp) sp%rate(i) = w(i)*r_dot
-         if (t > 0.0_wp) sp%aux_rate(i) = t*sp%rate(i)
+         if (t > 0.0_wp .and. ch%rated(i)) sp%aux_rate(i) = t*sp%rate(i)
       end do
+      if (t > 0.0_wp) sp%aux_rate(n + 1) = t*s_dot
       ! the search's start and its rate: x of the first free element, or the force
       sp%guess_rate = 0.0_wp
       select case (dsp%path)
@@ -380,18 +390,29 @@ contains
 
    !> The stored and dissipated energy of each element at the state of sp
    !! (chain_split's; aux the chain's auxiliary quantities): its stored
-   !! energy a function of its deformation and memory, its dissipated energy
-   !! the work done on it less that.
+   !! energy a function of its deformation and memory; its dissipated energy,
+   !! a rate-independent element's what its memory booked, a rate-dependent
+   !! one's the work done on it less its stored energy; what the chain's work
+   !! holds beyond them with the first rate-independent element's (the
+   !! module's note). They add up to the chain's work.
    pure subroutine chain_energies(ch, sp, aux, stored, dissipated)
       type(series_chain_t), intent(in) :: ch
       type(chain_split_t), intent(in) :: sp
       real(wp), intent(in) :: aux(:)
       real(wp), intent(out) :: stored(:), dissipated(:)
-      integer :: i
+      integer :: i, first
       do i = 1, ch%n
          stored(i) = element_stored(ch, i, sp%x(i), sp%gate(i))
-         dissipated(i) = ch%w_initial(i) + aux(i) - stored(i)
+         if (ch%rated(i)) then
+            dissipated(i) = ch%w_initial(i) + aux(i) - stored(i)
+         else
+            dissipated(i) = ch%mem(i)%e_dissipated
+         end if
       end do
+      first = findloc(ch%rated(1:ch%n), .false., 1)
+      if (first == 0) first = 1
+      dissipated(first) = dissipated(first) + (ch%w_initial_chain + aux(ch%n + 1) &
+                                               - sum(stored(1:ch%n)) - sum(dissipated(1:ch%n)))
    end subroutine chain_energies
 
    !> Element i's stored energy at deformation x: its law's
@@ -416,10 +437,12 @@ contains
    end function element_stored
 
    !> After an ACCEPTED step: every element's memory from its deformation
-   !! and rate at the accepted state (figure 18), and where the chain is
-   !! slack the rate-dependent elements recovered (chain_split's note; the
-   !! energy they held dissipated). changed: the right-hand side is a
-   !! different function from here on (the stepper restarts).
+   !! and rate at the accepted state (figure 18; recurrent_accept books the
+   !! energy its law's change dissipates), the gates' work past a hold that
+   !! moved dissipated, and where the chain is slack the rate-dependent
+   !! elements recovered (chain_split's note; the energy they held
+   !! dissipated). changed: the right-hand side is a different function from
+   !! here on (the stepper restarts).
    pure subroutine chain_accept(ch, s, s_dot, aux, changed, guess)
       type(series_chain_t), intent(inout) :: ch
       real(wp), intent(in) :: s, s_dot
@@ -427,7 +450,7 @@ contains
       logical, intent(out) :: changed
       real(wp), intent(in), optional :: guess
       type(chain_split_t) :: sp
-      real(wp) :: gap, target, zd, r, zsum
+      real(wp) :: gate_work(max_chain), g_new(max_chain), gap, target, e0, zd, r, zsum
       logical :: c
       integer :: i, n
       changed = .false.
@@ -437,6 +460,7 @@ contains
       ! evaluation of this state, which ends the run with the failure text
       if (sp%status /= split_ok) return
       do i = 1, n
+         gate_work(i) = element_stored(ch, i, sp%x(i), sp%gate(i)) - recurrent_stored(ch%law(i), ch%mem(i), sp%x(i))
          if (ch%cap_slope(i) > 0.0_wp .and. sp%x(i) > ch%cap(i)) then
             ! crushed solid: its own deformation the cap's, not moving
             call recurrent_accept(ch%law(i), ch%mem(i), ch%cap(i), 0.0_wp, c)
@@ -444,6 +468,13 @@ contains
             call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), sp%rate(i), c)
          end if
          changed = changed .or. c
+      end do
+      ! a gate's work past a hold that moved (the column stopped) is dissipated
+      g_new = chain_gates(ch)
+      do i = 1, n
+         if (.not. (sp%gate(i) > 0.0_wp .or. g_new(i) > 0.0_wp)) cycle
+         e0 = gate_work(i) - (element_stored(ch, i, sp%x(i), g_new(i)) - recurrent_stored(ch%law(i), ch%mem(i), sp%x(i)))
+         ch%mem(i)%e_dissipated = ch%mem(i)%e_dissipated + e0
       end do
       if (ch%n_states == 0 .or. sp%force > 0.0_wp) return
       ! slack: the rate-dependent elements recover, as far as they can without
@@ -470,6 +501,7 @@ contains
          zd = zero_extent(ch%law(i), ch%mem(i))
          target = max(zd, sp%x(i) - gap)
          if (.not. target < sp%x(i)) cycle
+         ! (a rate-dependent element: its dissipated energy follows from its work)
          ch%x_offset(i) = ch%x_offset(i) - (sp%x(i) - target)
          gap = gap - (sp%x(i) - target)
          changed = .true.
@@ -486,7 +518,7 @@ contains
       relaxing = .false.
       do i = 1, ch%n
          if (.not. ch%stateful(i)) cycle
-         bp = branch_at(ch%law(i), ch%mem(i), ch%x_offset(i) + aux(ch%n + ch%state(i)))
+         bp = branch_at(ch%law(i), ch%mem(i), ch%x_offset(i) + aux(ch%n + 1 + ch%state(i)))
          relaxing = relaxing .or. bp%force > 0.0_wp
       end do
    end function chain_relaxing
@@ -504,6 +536,7 @@ contains
       integer :: i
       ch%x_offset = 0.0_wp
       ch%w_initial = 0.0_wp
+      ch%w_initial_chain = 0.0_wp
       if (.not. s0 > 0.0_wp) return
       g = chain_gates(ch)
       call split_deformation(ch%n, ch%law, ch%mem, s0, ch%max_iter, dsp, cap=ch%cap, gate=g, cap_slope=ch%cap_slope)
@@ -512,6 +545,7 @@ contains
          if (ch%stateful(i)) ch%x_offset(i) = dsp%x(i)
          ch%w_initial(i) = element_stored(ch, i, dsp%x(i), g(i))
       end do
+      ch%w_initial_chain = sum(ch%w_initial(1:ch%n))
    end subroutine chain_set_initial
 
    !> Why a split failed, for the failure message.
