@@ -688,7 +688,7 @@ contains
       if (ps%split%status /= split_ok) return
       if (.not. ps%cs%delta > 0.0_wp .and. .not. chain_relaxing(this%chain, aux)) return
       if (this%shattered) return
-      call chain_accept(this%chain, ps%cs%delta, ps%cs%delta_dot, aux, changed)
+      call chain_accept(this%chain, ps%cs%delta, ps%cs%delta_dot, aux, changed, split=ps%split)
       result%restart = result%restart .or. changed
    contains
       subroutine add_event(ev)

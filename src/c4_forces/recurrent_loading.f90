@@ -267,15 +267,17 @@ contains
       real(wp) :: fx, e_before
       changed = .false.
       if (law%elastic) return
-      e_before = recurrent_stored(law, mem, delta)
+      ! (the stored energy before a change: only where one may happen, it
+      ! integrates the curve)
       if (.not. mem%unloading) then
          ! loading: the turning point, where d-dot becomes negative under load
-         if (delta_dot < 0.0_wp) call turn(law, mem, delta, e_before, changed)
+         if (delta_dot < 0.0_wp) call turn(law, mem, delta, recurrent_stored(law, mem, delta), changed)
       else if (delta >= mem%delta_max) then
          ! back beyond the turning point within one step: on the loading curve again
          if (delta_dot < 0.0_wp) then
-            call turn(law, mem, delta, e_before, changed)
+            call turn(law, mem, delta, recurrent_stored(law, mem, delta), changed)
          else if (delta_dot > 0.0_wp) then
+            e_before = recurrent_stored(law, mem, delta)
             ! (its stored energy as before: the unloading curve's area to
             ! delta_max and the loading curve's beyond)
             mem%e_spent = curve_energy(law%curve, delta - mem%eps) - e_before
@@ -284,6 +286,7 @@ contains
          end if
       else if (delta_dot > 0.0_wp) then
          ! point x: d-dot from negative to positive, a new cycle (C.4.e)
+         e_before = recurrent_stored(law, mem, delta)
          if (delta <= mem%delta_zero) then
             ! case 1: the load was completely removed; the new cycle starts at
             ! the end of the unloading curve

@@ -433,7 +433,12 @@ contains
          bp = branch_at(ch%law(i), ch%mem(i), ch%cap(i))
          e = e + (bp%force + 0.5_wp*ch%cap_slope(i)*over)*over
       end if
-      if (gate > 0.0_wp) e = e + gate*max(0.0_wp, x - max(ch%mem(i)%x_hold, zero_extent(ch%law(i), ch%mem(i))))
+      if (gate > 0.0_wp) e = e + gate*max(0.0_wp, x - hold(i))
+   contains
+      pure real(wp) function hold(k)
+         integer, intent(in) :: k
+         hold = max(ch%mem(k)%x_hold, zero_extent(ch%law(k), ch%mem(k)))
+      end function hold
    end function element_stored
 
    !> After an ACCEPTED step: every element's memory from its deformation
@@ -443,24 +448,31 @@ contains
    !! elements recovered (chain_split's note; the energy they held
    !! dissipated). changed: the right-hand side is a different function from
    !! here on (the stepper restarts).
-   pure subroutine chain_accept(ch, s, s_dot, aux, changed, guess)
+   pure subroutine chain_accept(ch, s, s_dot, aux, changed, guess, split)
       type(series_chain_t), intent(inout) :: ch
       real(wp), intent(in) :: s, s_dot
       real(wp), intent(in) :: aux(:)
       logical, intent(out) :: changed
       real(wp), intent(in), optional :: guess
+      !> the chain's split at this state, when the caller has it (chain_split's)
+      type(chain_split_t), intent(in), optional :: split
       type(chain_split_t) :: sp
       real(wp) :: gate_work(max_chain), g_new(max_chain), gap, target, e0, zd, r, zsum
       logical :: c
       integer :: i, n
       changed = .false.
       n = ch%n
-      call chain_split(ch, s, s_dot, aux, sp, guess)
+      if (present(split)) then
+         sp = split
+      else
+         call chain_split(ch, s, s_dot, aux, sp, guess)
+      end if
       ! a split that fails here fails again at the next step's first
       ! evaluation of this state, which ends the run with the failure text
       if (sp%status /= split_ok) return
       do i = 1, n
-         gate_work(i) = element_stored(ch, i, sp%x(i), sp%gate(i)) - recurrent_stored(ch%law(i), ch%mem(i), sp%x(i))
+         gate_work(i) = 0.0_wp
+         if (sp%gate(i) > 0.0_wp) gate_work(i) = sp%gate(i)*max(0.0_wp, sp%x(i) - hold(i))
          if (ch%cap_slope(i) > 0.0_wp .and. sp%x(i) > ch%cap(i)) then
             ! crushed solid: its own deformation the cap's, not moving
             call recurrent_accept(ch%law(i), ch%mem(i), ch%cap(i), 0.0_wp, c)
@@ -473,7 +485,7 @@ contains
       g_new = chain_gates(ch)
       do i = 1, n
          if (.not. (sp%gate(i) > 0.0_wp .or. g_new(i) > 0.0_wp)) cycle
-         e0 = gate_work(i) - (element_stored(ch, i, sp%x(i), g_new(i)) - recurrent_stored(ch%law(i), ch%mem(i), sp%x(i)))
+         e0 = gate_work(i) - g_new(i)*max(0.0_wp, sp%x(i) - hold(i))
          ch%mem(i)%e_dissipated = ch%mem(i)%e_dissipated + e0
       end do
       if (ch%n_states == 0 .or. sp%force > 0.0_wp) return
@@ -506,6 +518,12 @@ contains
          gap = gap - (sp%x(i) - target)
          changed = .true.
       end do
+   contains
+      !> Where the gate of element k holds it (series_split's x_h).
+      pure real(wp) function hold(k)
+         integer, intent(in) :: k
+         hold = max(ch%mem(k)%x_hold, zero_extent(ch%law(k), ch%mem(k)))
+      end function hold
    end subroutine chain_accept
 
    !> Whether a rate-dependent element of the chain still carries load on its
