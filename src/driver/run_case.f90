@@ -106,14 +106,14 @@ contains
             allocate (warnings(0))
          end if
       end if
-      if (err%failed() .or. req%check_only) return
-      allocate (notes(0), sink)
+      if (err%failed()) return
 
       ! outputs are written under temporary names and put in place of their
       ! targets at the end (output_files); nothing is created before the
-      ! paths are known not to be inputs
+      ! paths are known not to be inputs (--check checks them too)
       call check_output_paths(deck_files(req), pulse_file(deck, m), req%listing_file, req%h5_file, err)
-      if (err%failed()) return
+      if (err%failed() .or. req%check_only) return
+      allocate (notes(0), sink)
       call sink%listing%lst%create_text(req%listing_file, 'listing', err)
       if (err%failed()) return
       sink%with_h5 = len(req%h5_file) > 0
@@ -134,7 +134,13 @@ contains
       ! An input/output error outweighs a numerical failure: the outputs
       ! that would show the run up to the failure are incomplete.
       if (run_err%code == exit_io .and. io_err%failed()) then
-         io_err%message = run_err%message//new_line('a')//io_err%message
+         ! the run ended on an output's failure, which closing that output
+         ! may report again: said once
+         if (index(run_err%message, io_err%message) == 0) then
+            io_err%message = run_err%message//new_line('a')//io_err%message
+         else
+            io_err = run_err
+         end if
       else if (run_err%code == exit_io) then
          io_err = run_err
       else if (run_err%failed() .and. io_err%failed()) then
@@ -169,6 +175,9 @@ contains
       type(output_frame_t), intent(in) :: first
       type(error_t), intent(inout) :: err
       call this%listing%begin(sys, reg, first, err)
+      ! what is known before the run (its first pages) on the disk before
+      ! the run starts: a run killed early leaves it (docs/usage.md)
+      call this%listing%lst%flush(err)
       if (this%with_h5) call this%h5%begin(sys, reg, first, err)
    end subroutine case_begin
 
@@ -177,6 +186,10 @@ contains
       type(output_frame_t), intent(in) :: frame
       type(error_t), intent(inout) :: err
       call this%listing%record(frame, err)
+      ! each page of tables on the disk as soon as it is complete (every
+      ! 50 records; nothing to write otherwise), and a listing nobody can
+      ! read any more (a closed pipe) ends the run at once
+      call this%listing%lst%flush(err)
       if (this%with_h5) call this%h5%record(frame, err)
    end subroutine case_record
 
@@ -211,6 +224,9 @@ contains
       type(output_registry_t) :: reg
       allocate (lines(0))
       call read_case_deck(req, deck, m, err)
+      if (err%failed()) return
+      ! the table goes where the listing would (-o or standard output)
+      call check_output_paths(deck_files(req), pulse_file(deck, m), req%listing_file, '', err)
       if (err%failed()) return
       call system_build(m, sys)
       call registry_build(sys, reg)
