@@ -174,11 +174,12 @@ contains
       type(output_registry_t), intent(in) :: reg
       type(output_frame_t), intent(in) :: first
       type(error_t), intent(inout) :: err
-      call this%listing%begin(sys, reg, first, err)
-      ! what is known before the run (its first pages) on the disk before
-      ! the run starts: a run killed early leaves it (docs/usage.md)
-      call this%listing%lst%flush(err)
+      ! the HDF5 file's structure first (it is flushed at once), then the
+      ! listing's first pages, what is known before the run, on the disk
+      ! before the run starts: a run killed early leaves both (docs/usage.md)
       if (this%with_h5) call this%h5%begin(sys, reg, first, err)
+      call this%listing%begin(sys, reg, first, err)
+      call this%listing%lst%flush(err)
    end subroutine case_begin
 
    subroutine case_record(this, frame, err)
