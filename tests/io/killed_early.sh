@@ -5,16 +5,19 @@
 # preliminary calculations (issue 14, item 13: it used to leave an empty
 # file, the text waiting in a buffer); and the HDF5 file's structure and
 # deck under its own; the files at the targets untouched. Killed by
-# SIGKILL, SIGTERM and SIGINT (Ctrl-C) alike.
+# SIGKILL, SIGTERM and SIGINT (Ctrl-C) alike. The events are in the HDF5
+# file as they happen, before any flush of the records.
 #
-# Usage: killed_early.sh HSRI2D DECK WORK_DIRECTORY
+# Usage: killed_early.sh HSRI2D DECK EVENT_DECK WORK_DIRECTORY
 #   DECK: a deck with an interior that gives a warning (tools/bench/interior_driver.deck)
+#   EVENT_DECK: a deck with an event at 0.0473 s (decks/unbelted_driver.deck)
 # Exit status: 0 pass, 1 fail, 77 skipped (h5dump not installed).
 test_name=io_killed_early
 . "$(dirname "$0")/lib.sh"
 exe=$1
 deck=$2
-start_work "$3"
+event_deck=$3
+start_work "$4"
 command -v h5dump >/dev/null 2>&1 || skip "h5dump not found (package hdf5-tools)"
 # job control: a background job then takes SIGINT (a non-interactive shell
 # would start it with SIGINT ignored)
@@ -63,5 +66,24 @@ for signal in KILL TERM INT; do
     h5dump -H -d /time "$h5part" >/dev/null 2>&1 || fail "SIG$signal: /time missing from $h5part"
     echo "$test_name: SIG$signal left $part ($(wc -c <"$part") bytes) and $h5part"
 done
+rm -f ./*.part
+
+# The events as they happen: the unbelted driver's first undesired contact
+# (t = 0.0473 s) is in the file of a run killed long before its first flush
+# of records (the 50th record, t = 500 s).
+"$exe" "$event_deck" long.deck -o out.lst --h5 out.h5 >out 2>err &
+pid=$!
+sleep 3
+kill -0 $pid 2>/dev/null || fail "the event run ended before it could be killed: $(cat err)"
+kill -KILL $pid
+wait $pid 2>/dev/null
+h5part=$(find . -maxdepth 1 -name 'out.h5.??????.part' | head -n 1)
+[ -n "$h5part" ] || fail "the event run left no out.h5.XXXXXX.part"
+h5dump -y -w 0 -m %.17g -d /events/time -o events.txt "$h5part" >/dev/null 2>&1 || fail "no /events/time in $h5part"
+first=$(tr ', ' '\n\n' <events.txt | awk 'NF { print; exit }')
+awk -v t="$first" 'BEGIN { exit !(t > 0.04 && t < 0.06) }' || fail "the first event in $h5part is at t = '$first', expected 0.0473 s"
+echo "$test_name: the killed event run left $(tr ', ' '\n\n' <events.txt | grep -c .) events in $h5part, the first at t = $first s"
+same_content out.lst earlier.lst "the event run"
+same_content out.h5 earlier.h5 "the event run"
 rm -f ./*.part
 pass
