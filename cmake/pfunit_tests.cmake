@@ -14,10 +14,18 @@
 # the stand-in tools/pfunit_lite/pfproc.py and link funit_lite, built from
 # tests/funit_lite/funit.F90 (see tests/funit_lite/README.md).
 #
+# -DHSRI2D_REQUIRE_PFUNIT=ON makes a missing pFUnit an error instead (CI's
+# third build tree: it must never fall back to the stand-in unnoticed).
+#
 # The project's flags (hsri2d_set_flags, compilers.cmake) apply when defined.
 include_guard(DIRECTORY)
 
-find_package(PFUNIT QUIET)
+option(HSRI2D_REQUIRE_PFUNIT "Fail when pFUnit is not found instead of using the pfunit_lite stand-in" OFF)
+if(HSRI2D_REQUIRE_PFUNIT)
+  find_package(PFUNIT REQUIRED)
+else()
+  find_package(PFUNIT QUIET)
+endif()
 if(PFUNIT_FOUND)
   message(STATUS "Tests: pFUnit ${PFUNIT_VERSION} found, the .pf tests use it")
 else()
