@@ -6,10 +6,11 @@
 !! replaces the earlier group of its kind (how a sweep swaps a pulse).
 module deck_reader
    use kinds, only: wp
-   use strings, only: itoa, num, upper, read_real, read_int
+   use strings, only: itoa, num, upper, read_real, read_int, escaped
    use error_handling, only: error_t, error_append, exit_deck
    use text_io, only: string_t, read_text_file, read_standard_input, append_string, &
       standard_input_path, standard_input_name
+   use posix_files, only: file_info_t, posix_file_info, kind_regular
    use field_values, only: field_expectation, word_position
    use deck_cards, only: group_spec_t, field_spec_t, card_table, max_fields, card_width, &
       index_first_col, index_last_col, data_last_col, field_first_col, field_last_col, &
@@ -29,6 +30,8 @@ module deck_reader
    !> One data card, its fields converted to internal units.
    type :: card_t
       integer :: source = 0, line = 0
+      integer :: group = 0                       !< its group in the card table (0: none, a header)
+      integer :: number = 0                      !< its number in the group, as written (bad cards counted)
       integer :: index = 0                       !< row index (indexed groups)
       real(wp) :: value(max_fields) = 0.0_wp     !< reals, integers, word numbers
       logical :: given(max_fields) = .false.     !< the field was not blank
@@ -70,6 +73,11 @@ module deck_reader
       type(group_t) :: group(n_groups)
       integer :: n_errors = 0
       type(string_t), allocatable :: warnings(:)   !< located, for the model's warnings
+      !> a header card of the group was refused for its characters (a tab,
+      !! ...): the group is not reported missing as well
+      logical :: header_rejected(n_groups) = .false.
+      !> such a header whose group could not be told: no group is reported missing
+      logical :: unknown_header_rejected = .false.
    end type deck_t
 
 contains
@@ -82,18 +90,23 @@ contains
    end subroutine deck_init
 
    !> Read and parse one deck file; the path standard_input_path ('-') reads
-   !! standard input, named standard_input_name in messages, whose files named
-   !! on cards are relative to the current directory. An unreadable file is
-   !! an I/O error; problems in its cards are deck errors (all of them are
-   !! appended).
+   !! standard input, named standard_input_name in messages. Files named on
+   !! cards (*PULSEFILE) are relative to the deck's directory when the deck
+   !! is a regular file (or a link to one), else - standard input, a pipe, a
+   !! FIFO, a process substitution's /dev/fd/N - to the current directory
+   !! (/dev/fd/ holds no pulse file). An unreadable file is an I/O error;
+   !! problems in its cards are deck errors (all of them are appended).
    subroutine deck_add_file(deck, path, err)
       type(deck_t), intent(inout) :: deck
       character(len=*), intent(in) :: path
       type(error_t), intent(inout) :: err
       type(string_t), allocatable :: lines(:)
       type(error_t) :: io_err
-      logical :: from_stdin
+      type(file_info_t) :: info
+      logical :: from_stdin, regular
       from_stdin = path == standard_input_path .and. len(path) == len(standard_input_path)
+      regular = .false.
+      if (.not. from_stdin) regular = posix_file_info(path, info) == 0 .and. info%kind == kind_regular
       if (from_stdin) then
          call read_standard_input(lines, io_err)
       else
@@ -105,8 +118,10 @@ contains
       end if
       if (from_stdin) then
          call deck_add_lines(deck, standard_input_name, '', lines, err)
-      else
+      else if (regular) then
          call deck_add_lines(deck, path, directory_of(path), lines, err)
+      else
+         call deck_add_lines(deck, path, '', lines, err)
       end if
    end subroutine deck_add_file
 
@@ -119,7 +134,7 @@ contains
       integer :: src, i, gid, current, first_line(n_groups)
       character(len=:), allocatable :: text, word
 
-      call append_string(deck%source_name, name)
+      call append_string(deck%source_name, escaped(name))   ! (one line in messages and the echo)
       call append_string(deck%source_dir, directory)
       src = size(deck%source_name)
       current = 0
@@ -128,8 +143,23 @@ contains
 
       do i = 1, size(lines)
          text = lines(i)%s
-         if (.not. card_is_clean(deck, err, src, i, text)) then
+         if (.not. card_is_clean(deck, err, src, i, text, bad_card_place(deck, current, text))) then
             call add_echo(deck, src, i, echo_bad, current, printable(text))
+            if (text(1:1) == '*') then
+               ! a header refused for its characters: its group is not read,
+               ! and not reported missing as well
+               gid = group_by_name(deck, upper(leading_name(text(2:))))
+               if (gid > 0) then
+                  deck%header_rejected(gid) = .true.
+               else
+                  deck%unknown_header_rejected = .true.
+               end if
+               current = -1
+            else if (text(1:1) /= '$' .and. current > 0) then
+               ! a data card refused for its characters is a bad card of its
+               ! group: counted, and not reported missing as well
+               call count_bad_card(deck%group(current), deck%spec(current), i, text)
+            end if
             cycle
          end if
          if (len_trim(text) == 0) then
@@ -180,7 +210,8 @@ contains
          associate (g => deck%group(gid), s => deck%spec(gid))
             if (.not. g%present) then
                ! (when no source held a line, "the deck is empty" says it all)
-               if (s%required .and. .not. kind_present(deck, gid) .and. deck%n_echo > 0) &
+               if (s%required .and. .not. kind_present(deck, gid) .and. deck%n_echo > 0 .and. .not. &
+                   (deck%header_rejected(gid) .or. deck%unknown_header_rejected)) &
                   call report(deck, err, 0, 0, 'the deck has no *'//trim(s%name)//' card group (' &
                   //trim(s%title)//'); it is required')
                cycle
@@ -291,12 +322,13 @@ contains
 
    !> A card holds printable ASCII without tabs in at most 80 columns. A
    !! comment card ($ in column 1) may also hold UTF-8 text; its columns are
-   !! counted in characters.
-   logical function card_is_clean(deck, err, src, line, text) result(ok)
+   !! counted in characters. A problem is reported after `place` (the
+   !! group and card number of a data card, '' for other lines).
+   logical function card_is_clean(deck, err, src, line, text, place) result(ok)
       type(deck_t), intent(inout) :: deck
       type(error_t), intent(inout) :: err
       integer, intent(in) :: src, line
-      character(len=*), intent(in) :: text
+      character(len=*), intent(in) :: text, place
       integer :: i, c, column, n_bytes, code_point, width
       logical :: comment
 
@@ -310,26 +342,26 @@ contains
          c = iachar(text(i:i))
          n_bytes = 1
          if (c == 9) then
-            call report(deck, err, src, line, 'tab character in column '//itoa(column) &
+            call report(deck, err, src, line, place//'tab character in column '//itoa(column) &
                //'; cards have fixed columns, use spaces')
             return
          else if (c < 32 .or. c == 127) then
-            call report(deck, err, src, line, 'control character (code '//itoa(c)//') in column ' &
+            call report(deck, err, src, line, place//'control character (code '//itoa(c)//') in column ' &
                //itoa(column)//'; is this a text deck?')
             return
          else if (c > 127) then
             call utf8_character(text(i:), n_bytes, code_point)
             if (n_bytes == 0) then
-               call report(deck, err, src, line, 'byte '//itoa(c)//' in column '//itoa(column) &
+               call report(deck, err, src, line, place//'byte '//itoa(c)//' in column '//itoa(column) &
                   //' is not part of a UTF-8 character (nor printable ASCII); is this a text deck?')
                return
             else if (.not. comment) then
-               call report(deck, err, src, line, 'non-ASCII character "'//text(i:i + n_bytes - 1) &
+               call report(deck, err, src, line, place//'non-ASCII character "'//text(i:i + n_bytes - 1) &
                   //'" in column '//itoa(column)//'; only comment cards ($ in column 1) may hold ' &
                   //'non-ASCII text, data and header cards are ASCII')
                return
             else if (code_point < 160) then
-               call report(deck, err, src, line, 'control character (U+00'//hex_byte(code_point) &
+               call report(deck, err, src, line, place//'control character (U+00'//hex_byte(code_point) &
                   //') in column '//itoa(column)//'; is this a text deck?')
                return
             end if
@@ -343,12 +375,49 @@ contains
          if (c < 128 .or. c >= 192) width = width + 1
       end do
       if (width > card_width) then
-         call report(deck, err, src, line, 'card image of '//itoa(width) &
+         call report(deck, err, src, line, place//'card image of '//itoa(width) &
             //' columns; a card has at most '//itoa(card_width))
          return
       end if
       ok = .true.
    end function card_is_clean
+
+   !> Where a line refused for its characters is, for its message: the
+   !! group and number it would have as a data card of the group being read
+   !! ("*TIME card 2: "), or nothing for a header, a comment, a blank line
+   !! or a line outside any group.
+   function bad_card_place(deck, current, text) result(place)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: current
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: place
+      place = ''
+      if (current <= 0 .or. len(text) == 0) return
+      if (text(1:1) == '*' .or. text(1:1) == '$') return
+      place = '*'//trim(deck%spec(current)%name)//' card '//itoa(deck%group(current)%n_written + 1)//': '
+   end function bad_card_place
+
+   !> A data card refused for its characters: counted as written and as
+   !! rejected, with its row index when columns 1-2 hold a valid one, so
+   !! that its group's checks do not also report it missing.
+   subroutine count_bad_card(g, s, line, text)
+      type(group_t), intent(inout) :: g
+      type(group_spec_t), intent(in) :: s
+      integer, intent(in) :: line
+      character(len=*), intent(in) :: text
+      character(len=index_last_col) :: columns
+      integer :: row
+      logical :: good
+      g%n_written = g%n_written + 1
+      if (g%n_written > s%max_cards) return
+      row = 0
+      if (s%layout == layout_indexed .or. s%layout == layout_multi) then
+         columns = text
+         call read_int(trim(adjustl(printable(columns))), row, good)
+         if (.not. good .or. row < 1 .or. row > s%max_index) row = 0
+      end if
+      call note_rejected(g, line, row)
+   end subroutine count_bad_card
 
    !> The UTF-8 character starting s (whose first byte is not ASCII): its
    !! length in bytes and its code point; n_bytes = 0 when s does not start
@@ -422,13 +491,17 @@ contains
       c = text
       card%source = src
       card%line = line
+      card%group = gid
       associate (s => deck%spec(gid), g => deck%group(gid))
          ! cards are numbered as written, bad ones included
          g%n_written = g%n_written + 1
+         card%number = g%n_written
          where = '*'//trim(s%name)//' card '//itoa(g%n_written)
          if (g%n_written > s%max_cards) then
-            call report(deck, err, src, line, where//': too many cards; *'//trim(s%name) &
-               //' takes at most '//itoa(s%max_cards))
+            ! reported once, at the first card too many (docs/deck-format.md)
+            if (g%n_written == s%max_cards + 1) call report(deck, err, src, line, where//': too many cards; *' &
+               //trim(s%name)//' takes at most '//itoa(s%max_cards)//' (docs/deck-format.md): this card ' &
+               //'and every later card of the group are left out')
             return
          end if
          ok = .true.
@@ -696,6 +769,21 @@ contains
 
    ! --- lexical helpers ---------------------------------------------------
 
+
+   !> The letters and digits that start s after any blanks (a group name
+   !! followed by a character that is refused).
+   pure function leading_name(s) result(w)
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: w
+      integer :: i
+      w = adjustl(s)
+      do i = 1, len(w)
+         if (index('ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789', w(i:i)) == 0) then
+            w = w(1:i - 1)
+            return
+         end if
+      end do
+   end function leading_name
 
    pure function first_word(s) result(w)
       character(len=*), intent(in) :: s
