@@ -134,7 +134,12 @@ contains
       integer :: src, i, gid, current, first_line(n_groups)
       character(len=:), allocatable :: text, word
 
-      call append_string(deck%source_name, escaped(name))   ! (one line in messages and the echo)
+      ! one line in messages and the echo, and never empty
+      if (len(name) == 0) then
+         call append_string(deck%source_name, '(unnamed deck)')
+      else
+         call append_string(deck%source_name, escaped(name))
+      end if
       call append_string(deck%source_dir, directory)
       src = size(deck%source_name)
       current = 0
@@ -180,7 +185,8 @@ contains
             else if (same_kind_in_file(deck, first_line, gid) > 0) then
                call report(deck, err, src, i, 'card group *'//trim(deck%spec(gid)%name) &
                   //' and *'//trim(deck%spec(same_kind_in_file(deck, first_line, gid))%name) &
-                  //' give the same table; use one of them')
+                  //' (line '//itoa(first_line(same_kind_in_file(deck, first_line, gid)))//') give the same ' &
+                  //'table; use one of them')
             else
                first_line(gid) = i
                call start_group(deck, gid, src, i)
@@ -257,9 +263,10 @@ contains
       type(group_t), intent(in) :: g
       type(group_spec_t), intent(in) :: s
       logical :: seen(s%max_index), take_good
-      integer :: good, bad, idx, line, n_unreadable
+      integer :: good, bad, idx, line, n_unreadable, first_line(s%max_index)
 
       seen = .false.
+      first_line = 0
       good = 1
       bad = 1
       ! good and rejected cards merged in the order of their lines
@@ -281,17 +288,22 @@ contains
             bad = bad + 1
          end if
          if (idx < 1 .or. idx > s%max_index) cycle
-         if (seen(idx)) call report(deck, err, g%source, line, '*'//trim(s%name) &
-            //': a second card for '//trim(s%index_name)//' = '//itoa(idx))
+         if (seen(idx)) then
+            call report(deck, err, g%source, line, '*'//trim(s%name)//', '//trim(s%index_name) &
+               //' (columns 1-2): a second card for '//trim(s%index_name)//' = '//itoa(idx)//'; the first is at line ' &
+               //itoa(first_line(idx)))
+         else
+            first_line(idx) = line
+         end if
          seen(idx) = .true.
       end do
       if (.not. s%all_rows) return
       n_unreadable = count(g%rejected_index(1:g%n_rejected) < 1)
       if (count(.not. seen) <= n_unreadable) return
       do idx = 1, s%max_index
-         if (.not. seen(idx)) call report(deck, err, g%source, g%line, '*'//trim(s%name) &
-            //': no card for '//trim(s%index_name)//' = '//itoa(idx)//' (one card for each of ' &
-            //'1 to '//itoa(s%max_index)//' is required)')
+         if (.not. seen(idx)) call report(deck, err, g%source, g%line, '*'//trim(s%name)//', ' &
+            //trim(s%index_name)//' (columns 1-2): no card for '//trim(s%index_name)//' = '//itoa(idx) &
+            //' (one card for each of 1 to '//itoa(s%max_index)//' is required)')
       end do
    end subroutine check_rows
 
