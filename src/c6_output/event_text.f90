@@ -38,7 +38,7 @@ contains
                 //'): undesired contact (Table 9), force'//fixed(e%value, 10, 1)//' lb'
       case (event_ramp_widened)
          text = 'point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
-                //'): friction ramp widened for DT: xi '//num(e%value, 4)//' in/s (XI '//num(e%limit)//' in/s)'
+                //'): friction ramp widened for DT: xi '//num(e%value, 4)//' in/s (XI '//num(e%limit)//')'
       case (event_compression, event_shear)
          text = 'bone '//merge(fc_name(e%index), fs_name(e%index), e%kind == event_compression) &
                 //'  '//trim(event_kind_name(e%kind))//': force'//fixed(e%value, 10, 1)//' lb, limit' &
