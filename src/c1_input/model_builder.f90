@@ -1042,7 +1042,7 @@ contains
       character(len=:), allocatable :: where
       logical :: used(n_belt_card)
       type(card_t) :: c, options, loading
-      character(len=:), allocatable :: asker
+      character(len=:), allocatable :: asker, no_belts, no_loading
       integer :: k, j
 
       bt%coupling = group_int(deck, g_beltoptions, 'COUPLING')
@@ -1101,6 +1101,8 @@ contains
          return
       end if
       c = first_card(deck, g_beltoptions)
+      no_belts = ''
+      no_loading = ''
       ! the sections NBELT calls for need their cards and their loading
       do j = 1, n_belt_card
          if (.not. used(j)) then
@@ -1116,8 +1118,7 @@ contains
                call problem_at(deck, err, g_belts, 'no card for section '//itoa(j)//', which '//asker//' (' &
                   //card_ref(deck, options)//') needs: give its card')
             else
-               call problem(deck, err, options, asker//' needs *BELTS section '//itoa(j)//', and the deck ' &
-                  //'has no *BELTS card group: give its card', 'NBELT')
+               call add_to_list(no_belts, itoa(j))   ! (one message for the group: below)
             end if
          end if
          ! card 4, the lap belt's second side, takes the lap belt's loading
@@ -1130,11 +1131,15 @@ contains
                call problem_at(deck, err, g_beltloading, 'no card for section '//itoa(j)//', which NBELT = ' &
                   //itoa(nbelt)//' ('//card_ref(deck, options)//') uses: give its loading (CURVE, G, R)')
             else
-               call problem(deck, err, options, 'NBELT = '//itoa(nbelt)//' uses belt section '//itoa(j) &
-                  //', and the deck has no *BELTLOADING card group: give its loading (CURVE, G, R)', 'NBELT')
+               call add_to_list(no_loading, itoa(j))
             end if
          end if
       end do
+      if (len(no_belts) > 0) call problem(deck, err, options, 'NBELT = '//itoa(nbelt)//' needs *BELTS ' &
+         //sections(no_belts)//', and the deck has no *BELTS card group: give their cards', 'NBELT')
+      if (len(no_loading) > 0) call problem(deck, err, options, 'NBELT = '//itoa(nbelt)//' uses belt ' &
+         //sections(no_loading)//', and the deck has no *BELTLOADING card group: give their loading (CURVE, ' &
+         //'G, R)', 'NBELT')
       if (bt%coupling == coupling_torso .and. .not. nbelt_torso(nbelt)) call problem(deck, err, c, &
          'COUPLING = TORSO: the torso sections share a tension, but NBELT = '//itoa(nbelt)//' (' &
          //card_ref(deck, options)//') uses no torso belt', 'COUPLING')
@@ -1146,6 +1151,35 @@ contains
       if (bt%lap_sides == 2 .and. .not. nbelt_lap(nbelt)) call problem(deck, err, c, 'LAPSIDES = 2: NBELT = ' &
          //itoa(nbelt)//' ('//card_ref(deck, options)//') uses no lap belt', 'LAPSIDES')
    contains
+      !> Add a section's number to a list "1 2".
+      pure subroutine add_to_list(list, item)
+         character(len=:), allocatable, intent(inout) :: list
+         character(len=*), intent(in) :: item
+         if (len(list) > 0) list = list//' '
+         list = list//item
+      end subroutine add_to_list
+      !> "section 1", "sections 1 and 2", "sections 1, 2 and 3" from "1 2 3".
+      pure function sections(list) result(text)
+         character(len=*), intent(in) :: list
+         character(len=:), allocatable :: text, rest
+         integer :: blank, n
+         text = ''
+         rest = list
+         n = 0
+         do while (len(rest) > 0)
+            blank = index(rest, ' ')
+            if (blank == 0) blank = len(rest) + 1
+            n = n + 1
+            if (n > 1 .and. blank > len(rest)) then
+               text = text//' and '
+            else if (n > 1) then
+               text = text//', '
+            end if
+            text = text//rest(1:blank - 1)
+            rest = rest(min(blank + 1, len(rest) + 1):)
+         end do
+         text = trim(merge('sections', 'section ', n > 1))//' '//text
+      end function sections
       !> A field this kind of section does not take.
       subroutine forbid(name, why)
          character(len=*), intent(in) :: name, why
