@@ -22,7 +22,7 @@ module deck_reader
    public :: card_t, group_t, echo_line_t, deck_t
    public :: deck_init, deck_add_file, deck_add_lines, deck_finish
    public :: echo_comment, echo_header, echo_data, echo_blank, echo_bad
-   public :: max_reported_errors
+   public :: max_reported_errors, deck_names
 
    !> Stop listing problems after this many (the count is still given).
    integer, parameter :: max_reported_errors = 200
@@ -226,8 +226,9 @@ contains
                ! blank cards are skipped, so a header alone is the blank card
                ! ("blank means empty" for *TITLE)
                call append_card(g, blank_card(s, g%source, g%line))
-            else if (g%n_written < s%min_cards) then
+            else if (g%n_written < s%min_cards .and. .not. (s%layout == layout_indexed .and. s%all_rows)) then
                ! bad cards count as written: their own errors say what is wrong
+               ! (a group that needs every row says which are missing, below)
                call report(deck, err, g%source, g%line, '*'//trim(s%name)//' needs at least ' &
                   //itoa(s%min_cards)//' data card(s); found '//itoa(g%n_written))
             end if
@@ -263,7 +264,8 @@ contains
       type(group_t), intent(in) :: g
       type(group_spec_t), intent(in) :: s
       logical :: seen(s%max_index), take_good
-      integer :: good, bad, idx, line, n_unreadable, first_line(s%max_index)
+      integer :: good, bad, idx, line, n_unreadable, first_line(s%max_index), n_missing
+      character(len=:), allocatable :: missing
 
       seen = .false.
       first_line = 0
@@ -300,11 +302,15 @@ contains
       if (.not. s%all_rows) return
       n_unreadable = count(g%rejected_index(1:g%n_rejected) < 1)
       if (count(.not. seen) <= n_unreadable) return
+      ! the rows missing, in one message
+      missing = ''
+      n_missing = 0
       do idx = 1, s%max_index
-         if (.not. seen(idx)) call report(deck, err, g%source, g%line, '*'//trim(s%name)//', ' &
-            //trim(s%index_name)//' (columns 1-2): no card for '//trim(s%index_name)//' = '//itoa(idx) &
-            //' (one card for each of 1 to '//itoa(s%max_index)//' is required)')
+         if (.not. seen(idx)) call add_to_list(missing, n_missing, itoa(idx))
       end do
+      call report(deck, err, g%source, g%line, '*'//trim(s%name)//', '//trim(s%index_name) &
+         //' (columns 1-2): '//trim(merge('no card  ', 'no cards ', n_missing == 1))//' for '//trim(s%index_name) &
+         //' = '//missing//' (one card for each of 1 to '//itoa(s%max_index)//' is required)')
    end subroutine check_rows
 
    !> A single card holding only a text field that may be blank (*TITLE):
@@ -396,17 +402,25 @@ contains
 
    !> Where a line refused for its characters is, for its message: the
    !! group and number it would have as a data card of the group being read
-   !! ("*TIME card 2: "), or nothing for a header, a comment, a blank line
-   !! or a line outside any group.
+   !! ("*TIME card 2: "), a header card (of its group when its name can be
+   !! read) or a comment card; nothing for a line outside any group.
    function bad_card_place(deck, current, text) result(place)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: current
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: place
+      integer :: gid
       place = ''
-      if (current <= 0 .or. len(text) == 0) return
-      if (text(1:1) == '*' .or. text(1:1) == '$') return
-      place = '*'//trim(deck%spec(current)%name)//' card '//itoa(deck%group(current)%n_written + 1)//': '
+      if (len(text) == 0) return
+      if (text(1:1) == '$') then
+         place = 'comment card: '
+      else if (text(1:1) == '*') then
+         gid = group_by_name(deck, upper(leading_name(text(2:))))
+         place = 'header card: '
+         if (gid > 0) place = 'header card of *'//trim(deck%spec(gid)%name)//': '
+      else if (current > 0) then
+         place = '*'//trim(deck%spec(current)%name)//' card '//itoa(deck%group(current)%n_written + 1)//': '
+      end if
    end function bad_card_place
 
    !> A data card refused for its characters: counted as written and as
@@ -859,6 +873,20 @@ contains
 
    ! --- bookkeeping -------------------------------------------------------
 
+   !> The names of the deck's sources, for a problem of the whole deck:
+   !! "@default, mine.deck" ("deck" before any source).
+   function deck_names(deck) result(names)
+      type(deck_t), intent(in) :: deck
+      character(len=:), allocatable :: names
+      integer :: k
+      names = ''
+      do k = 1, size(deck%source_name)
+         if (k > 1) names = names//', '
+         names = names//deck%source_name(k)%s
+      end do
+      if (len(names) == 0) names = 'deck'
+   end function deck_names
+
    integer function group_by_name(deck, name)
       type(deck_t), intent(in) :: deck
       character(len=*), intent(in) :: name
@@ -987,7 +1015,7 @@ contains
       else if (src > 0) then
          loc = deck%source_name(src)%s//': '
       else
-         loc = 'deck: '
+         loc = deck_names(deck)//': '   ! (a problem of the whole deck: every file of it)
       end if
       call error_append(err, exit_deck, loc//message)
    end subroutine report

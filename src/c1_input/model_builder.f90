@@ -14,7 +14,7 @@ module model_builder
       g_pulsepos, g_pulsefile, g_endtests, g_numerics, g_materials, &
       g_loadpoly, g_loadrate, g_loadtable, g_beltloading, g_seat, g_seatsprings, g_seatbeam, &
       g_seatbeaminit, g_seatbeams, g_belts, g_beltoptions, g_surfaces, g_interior, g_contactoff
-   use deck_reader, only: deck_t, group_t, card_t
+   use deck_reader, only: deck_t, group_t, card_t, deck_names
    use deck_fields, only: card_value, card_int, card_given, group_value, group_int, single_card, default_value, &
       group_given
    use seat_beam_statics, only: beam_statics_t, beam_statics_solve, n_beam_quantities, beam_quantity_name, &
@@ -1431,8 +1431,8 @@ contains
    !! (columns a-b): message" for a data card; "file:line: *GROUP: message"
    !! for a group's header (header_of); fields is a blank-separated list of
    !! the fields concerned ('' for none). A card of a group the deck does
-   !! not hold (source 0) is "deck: *GROUP: ..." - callers that have a card
-   !! asking for that group locate the problem there instead (ask_for).
+   !! not hold (source 0) is "a.deck, b.deck: *GROUP: ..." - callers that
+   !! have a card asking for that group locate the problem there instead.
    function located(deck, c, message, fields) result(text)
       type(deck_t), intent(in) :: deck
       type(card_t), intent(in) :: c
@@ -1442,7 +1442,7 @@ contains
       if (c%source > 0) then
          text = deck%source_name(c%source)%s//':'//itoa(c%line)//': '
       else
-         text = 'deck: '
+         text = deck_names(deck)//': '
       end if
       if (c%group > 0) then
          text = text//'*'//trim(deck%spec(c%group)%name)
