@@ -843,7 +843,7 @@ contains
    function pair_describe(this) result(text)
       class(contact_pair_effect_t), intent(in) :: this
       character(len=:), allocatable :: text
-      text = trim(this%title)//': surface at ('//num(this%surface%s(1))//', '//num(this%surface%s(2))//') in'
+      text = trim(this%title)//': surface at ('//num(this%surface%s(1), 7)//', '//num(this%surface%s(2), 7)//') in'
    end function pair_describe
 
    !> Why the last evaluation at this state failed ('' when it did not):

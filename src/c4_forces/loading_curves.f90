@@ -253,8 +253,8 @@ contains
                       //'(the highest coefficient is negative)'
          else if (q_min < -1.0e-12_wp*maxval(abs(dq))*max(1.0_wp, at)**(c%order - 1)) then
             ! (the tolerance: rounding in F_e' at d = at)
-            message = 'the force decreases with the deformation near d = '//num(at) &
-                      //' in (slope '//num(q_min)//' lb/in); a loading curve must not decrease, ' &
+            message = 'the force decreases with the deformation near d = '//num(at, 6) &
+                      //' in (slope '//num(q_min, 6)//' lb/in); a loading curve must not decrease, ' &
                       //'so that it never pulls'
          end if
       case (curve_table)

@@ -3,7 +3,7 @@
 !! same thing.
 module event_text
    use kinds, only: deg
-   use strings, only: itoa
+   use strings, only: itoa, num
    use model, only: joint_name, arc_name
    use number_format, only: fixed
    use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired, &
@@ -27,8 +27,9 @@ contains
          text = 'joint '//joint_name(e%index)//'  '//trim(event_kind_name(e%kind))//': force' &
                 //fixed(e%value, 10, 1)//' lb, limit'//fixed(e%limit, 10, 1)//' lb'
       case (event_shatter)
-         text = 'windshield shattered by point '//arc_name(e%index)//': force'//fixed(e%value, 10, 1) &
-                //' lb, FSW'//fixed(e%limit, 10, 1)//' lb'
+         ! (FSW as the deck gives it, the force to 5 digits: a tiny FSW is not "0.0", issue 14)
+         text = 'windshield shattered by point '//arc_name(e%index)//': force '//num(e%value, 5) &
+                //' lb, FSW '//num(e%limit)//' lb'
       case (event_cut)
          text = 'point '//arc_name(e%index)//' cut on the broken windshield: penetration' &
                 //fixed(e%value, 9, 3)//' in'
@@ -37,7 +38,7 @@ contains
                 //'): undesired contact (Table 9), force'//fixed(e%value, 10, 1)//' lb'
       case (event_ramp_widened)
          text = 'point '//arc_name(e%index)//' on surface '//itoa(e%surface)//' ('//surface_name(e%surface) &
-                //'): friction ramp widened for DT: xi'//fixed(e%value, 7, 3)//' in/s (XI'//fixed(e%limit, 7, 3)//')'
+                //'): friction ramp widened for DT: xi '//num(e%value, 4)//' in/s (XI '//num(e%limit)//')'
       case (event_compression, event_shear)
          text = 'bone '//merge(fc_name(e%index), fs_name(e%index), e%kind == event_compression) &
                 //'  '//trim(event_kind_name(e%kind))//': force'//fixed(e%value, 10, 1)//' lb, limit' &

@@ -233,7 +233,8 @@ contains
             if (e%group < 0) mark = 'R'          ! replaced by a later deck
             if (e%kind == echo_bad) mark = '?'
             where = source_line(deck, e%source, e%line)
-            write (line, '(i5,2x,a1,2x,a28,1x,a)') k, mark, where, e%text
+            ! the card number right-aligned in 5 columns, and wider from 100,000 (never asterisks)
+            write (line, '(a,2x,a1,2x,a28,1x,a)') repeat(' ', max(0, 5 - len(itoa(k))))//itoa(k), mark, where, e%text
             call lst%put(line)
             ! under each group header, the group's fields at their columns (card table)
             if (e%kind == echo_header .and. e%group /= 0) then

@@ -492,9 +492,9 @@ contains
             os%t_flagged = t_now
             if (.not. m%numerics%energy_continue .and. summary%end_reason == end_none) then
                summary%end_reason = end_energy
-               summary%failure = occupant_prefix()//'the energy balance error '//num(eb%error)//' in*lb at t = '//num(t_now) &
+               summary%failure = occupant_prefix()//'the energy balance error '//num(eb%error, 6)//' in*lb at t = '//num(t_now) &
                   //' s exceeds EBTOL = '//num(m%numerics%energy_tol)//' of the largest body kinetic energy (' &
-                  //num(os%ke_max)//' in*lb): the results are not trustworthy. A smaller DT (or NINT = 3 ' &
+                  //num(os%ke_max, 6)//' in*lb): the results are not trustworthy. A smaller DT (or NINT = 3 ' &
                   //'with tighter RTOL) should help; *NUMERICS EBFAIL = CONTINUE runs on regardless'
                if (allocated(m%vehicle%pulse_vel%t) .or. allocated(m%vehicle%pulse_pos%t)) &
                   summary%failure = summary%failure//'. Tabulated vehicle rates or positions that are not ' &
