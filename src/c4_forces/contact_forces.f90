@@ -27,7 +27,7 @@ module contact_forces
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
-      arc_segment, front_side, surface_flat, surface_line, surface_circle, surface_point
+      arc_segment, front_side, shin_side_now, surface_flat, surface_line, surface_circle, surface_point
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_accept, recurrent_energies, &
       n_loading_aux, aux_work, aux_absorbed
    use loading_curves, only: curve_energy
@@ -56,7 +56,8 @@ module contact_forces
       !> the backing is the steering column: it does not move until its
       !! padding has bottomed out (C.4.f; its gate the padding's force at the cap)
       logical :: gated = .false.
-      !> D-C16a: the point came at a flat surface from behind its line (memory)
+      !> D-C16a: the point came at a flat surface from behind its line; D-C16b:
+      !! the panel's edge came at the shin from behind the shank's axis (memory)
       logical :: behind = .false.
       !> aux: each element's W, E_abs, D_v, then the friction's work and the supplied work
       integer :: aux_friction = 0, aux_supplied = 0
@@ -378,23 +379,25 @@ contains
    end function pair_far
 
    !> pair_far's bound (far), and where it is far what front_side would
-   !! answer at st (D-C16a; accept's short path needs it): 0 for a surface
-   !! that is not flat, +1 where the flat surface is far because the point
-   !! is clearly in front of its line, -1 where it is clearly behind it
-   !! (and beyond its extent, or it came from behind), side_unknown where
-   !! the bound does not decide it (the shin's capsule against a flat piece,
-   !! broken glass). The bound's margins decide the side: for a flat
+   !! answer at st (D-C16a, D-C16b; accept's short path needs it): 0 for a
+   !! surface that is neither flat nor the shin's edge, +1 where the flat
+   !! surface is far because the point is clearly in front of its line, -1
+   !! where it is clearly behind it (and at least r beyond its extent, or it
+   !! came from behind), side_unknown where the bound does not decide it
+   !! (broken glass). The bound's margins decide the side: for a flat
    !! surface far with h > reach = r + rho' + m (rho' for the arcs 2, 3
    !! whose centre is within rho' of the joint, else 0) and h > rho' + m
-   !! (which follows for r >= 0), the centre's own h is above r and above
-   !! 0, so front_side's first test holds and gives +1; with h < -reach
-   !! and h < -(rho' + m) the centre is behind the line
-   !! (h < 0: whichever of its tests front_side takes gives -1), beyond the
-   !! extent (T below -(rho' + m) or above D + rho' + m, so the centre's T
-   !! outside [0, D], and front_side's first test holds: -1) or come from
+   !! (which follows for r >= 0), the centre's own h is above r, so
+   !! front_side's first test holds and gives +1; with h < -reach and h <
+   !! -(rho' + m) the centre is behind the line (h < 0) and either beyond the
+   !! extent by more than reach (T below -reach or above D + reach, so the
+   !! centre's T at least r beyond it: front_side gives -1) or come from
    !! behind (front_side gives -1 or 0, and 0 keeps the side that is
-   !! behind): the memory becomes, or stays, behind. The margin m, 1e-9 of
-   !! the coordinates' size, covers the roundings, as for far.
+   !! behind): the memory becomes, or stays, behind. For the shin, far means
+   !! off the capsule, where front_side gives the side of the shank's axis
+   !! the edge is on: decided where the edge is more than the margin from
+   !! the axis. The margin m, 1e-9 of the coordinates' size, covers the
+   !! roundings, as for far.
    pure subroutine far_check(this, st, far, side)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
@@ -433,8 +436,13 @@ contains
          d = d - lam*v
          reach = max(this%body%r_arc(7), this%body%r_arc(11)) + m
          far = dot_product(d, d) > reach*reach
-         ! (front_side reads the knee's circle, which this bound does not place)
-         if (this%surface%kind /= surface_flat) side = 0
+         ! off the capsule: front_side's side of the shank's axis the edge is
+         ! on (D-C16b), where the margin decides it
+         if (far) then
+            h = dot_product(this%surface%s - jt, [-et(2), et(1)])
+            if (h > m) side = 1
+            if (h < -m) side = -1
+         end if
          return
       case default                    ! hip, shoulder: the joint itself
          p = jt
@@ -458,7 +466,9 @@ contains
          end if
          if (.not. abs(h) > reach) return
          tt = dot_product(this%surface%s - p, this%tk)
-         far = this%behind .or. tt < -(ext + m) .or. tt > this%surface%d + ext + m
+         ! come from behind: the ends, on the line; else the solid met from
+         ! inside (D-C16b), whose ends' walls reach r beyond them
+         far = this%behind .or. tt < -reach .or. tt > this%surface%d + reach
          if (far .and. h < -(ext + m)) side = -1   ! clearly behind (D-C16a)
       end select
    end subroutine far_check
@@ -753,7 +763,10 @@ contains
       integer :: q
       this%e_initial = 0.0_wp
       call pair_eval(this, st, ps)
-      if (this%surface%kind == surface_flat) then
+      if (this%i == 9) then
+         ! the shin: the side of the shank's axis the panel's edge starts on (D-C16b)
+         call set_behind(this, shin_side_now(ps%f, this%surface%s) < 0)
+      else if (this%surface%kind == surface_flat) then
          call set_behind(this, dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp)
          if (this%behind) call pair_eval(this, st, ps)      ! (its penetration with that side)
       end if
