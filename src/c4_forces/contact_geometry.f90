@@ -9,7 +9,7 @@
 !! F2-1, f.3 with F3-1, F3-2, F24-1). All in the interior frame of C.4.
 !! Pure functions, no memory: the contact effects are built on them.
 module contact_geometry
-   use kinds, only: wp
+   use kinds, only: wp, pi
    use model, only: body_section_t, n_seg, n_dof
    use body_kinematics, only: point_state_t, joint_state, to_interior, joint_position_velocity
    implicit none
@@ -173,7 +173,7 @@ contains
       select case (sf%kind)
       case (surface_circle)        ! the head rest (F24-1, F4-1)
          call round(f%p - sf%s, 0.5_wp*sf%d, region_circle, cs)
-         cs%pos = 0.0_wp
+         cs%pos = head_rest_position(sf, cs%n)
       case (surface_point)
          call round(f%p - sf%s, 0.0_wp, region_corner, cs)
          cs%pos = 0.0_wp
@@ -276,6 +276,19 @@ contains
          end if
       end subroutine piece
    end function contact_check
+
+   !> D-C3: where on the head rest (k = 1) the head acts, T = 1/2 D_1 times
+   !! the angle from the direction the rest faces, e(psi_1 + 90 deg), to the
+   !! contact's normal n, counter-clockwise positive: a signed arc length
+   !! along the rest's face, increasing the way a flat surface's T does
+   !! (towards -e(psi_1) from the facing point).
+   pure real(wp) function head_rest_position(sf, n) result(pos)
+      type(contact_surface_t), intent(in) :: sf
+      real(wp), intent(in) :: n(2)
+      real(wp) :: facing(2)
+      facing = e(sf%psi + 0.5_wp*pi)
+      pos = 0.5_wp*sf%d*atan2(facing(1)*n(2) - facing(2)*n(1), dot_product(facing, n))
+   end function head_rest_position
 
    !> D-C16a, D-C16b: which side of a flat surface's line a body point is
    !! on, for the pair's memory, or 0 where it is not decided: decided only
