@@ -537,21 +537,33 @@ contains
    !! when it went from below FSW at the last accepted state to beyond it at
    !! st by more than locate_tol: the fraction of the step, by the secant of
    !! P through the two states, aimed at FSW (1 + locate_tol/2) so that the
-   !! glass breaks at the state the driver steps to. 0 otherwise.
+   !! glass breaks at the state the driver steps to. short_of_jump (>= 1)
+   !! when st falls short of FSW (the driver, searching for the break, keeps
+   !! it below; issue 14: without it a tiny FSW, whose secant lands before
+   !! the head even touches, was located a 5e-14 s step at a time, for
+   !! ever). 0 otherwise: nothing to locate, or st within locate_tol above
+   !! FSW, where the glass breaks.
    pure real(wp) function pair_locate(this, st, extra, aux) result(theta)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), parameter :: short_of_jump = 2.0_wp
       type(pair_state_t) :: ps
       associate (u1 => size(extra) + size(aux))
       end associate
       theta = 0.0_wp
       if (.not. this%fsw > 0.0_wp .or. this%shattered .or. .not. this%p_accepted < this%fsw) return
+      theta = short_of_jump
       if (this%exit_far) then
          if (pair_far(this, st)) return
       end if
       call pair_eval(this, st, ps)
-      if (ps%split%status /= split_ok) return
+      if (ps%split%status /= split_ok) then
+         theta = 0.0_wp
+         return
+      end if
+      if (ps%split%force < this%fsw) return
+      theta = 0.0_wp
       if (.not. ps%split%force > this%fsw*(1.0_wp + locate_tol)) return
       theta = (this%fsw*(1.0_wp + 0.5_wp*locate_tol) - this%p_accepted)/(ps%split%force - this%p_accepted)
       theta = min(max(theta, 0.0_wp), 1.0_wp)
