@@ -15,7 +15,7 @@
 !! v_T), the power of the force at the surface's material point.
 module contact_forces
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-   use kinds, only: wp, g_std
+   use kinds, only: wp, g_std, deg
    use strings, only: itoa, num
    use text_io, only: string_t, append_string
    use model, only: body_section_t, n_dof, arc_name
@@ -571,19 +571,44 @@ contains
 
    !> D-C14 (7): a pair that starts deep in its surface - more than half its
    !! arc's radius, or loaded beyond the body's weight - is most likely a
-   !! misplaced surface (a sign of PSI, a point given at the wrong end).
+   !! misplaced surface (a sign of PSI, a point given at the wrong end). So
+   !! is one whose body point starts on a flat surface's far side, its
+   !! centre behind the line within the surface's extent (issue 14: the seat
+   !! back 2-8 in ahead of the hip, through the pelvis, started the hip
+   !! "behind" it, D-C16a, with no force and no warning): every surface
+   !! faces its occupant, and what lies behind its line over its extent is
+   !! the interior's structure (seat, dashboard, floor, the glass and the
+   !! outside), so nothing of the occupant starts there. Beyond the extent
+   !! or in the rim's opening a point behind the line is legitimately
+   !! behind (the passenger's hand in his lap, below the upper panel's line
+   !! far behind its rear end), as is one that goes there during the run
+   !! (docs/contacts.md D-C14 (7)).
    function pair_initial_notes(this, st, extra, aux) result(notes)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(string_t), allocatable :: notes(:)
       type(pair_state_t) :: ps
-      real(wp) :: weight
+      real(wp) :: weight, h, tt
       associate (u1 => size(extra) + size(aux))
       end associate
       allocate (notes(0))
       call pair_eval(this, st, ps)
       if (ps%split%status /= split_ok) return
+      if (this%i /= 9 .and. this%surface%kind == surface_flat) then
+         h = dot_product(ps%f%p - this%surface%s, this%nk)
+         tt = dot_product(this%surface%s - ps%f%p, this%tk)
+         if (h < 0.0_wp .and. tt >= 0.0_wp .and. tt <= this%surface%d .and. .not. (this%surface%t_open(2) > &
+             this%surface%t_open(1) .and. tt > this%surface%t_open(1) .and. tt < this%surface%t_open(2))) then
+            call append_string(notes, '*SURFACES surface '//itoa(this%k)//' ('//trim(surface_name(this%k))//')' &
+               //placed_by(this%k)//': body point '//itoa(this%i)//' ('//trim(arc_name(this%i))//') starts on its ' &
+               //'far side, its centre '//cents(-h)//' in behind the line (the surface faces the occupant, PSI = ' &
+               //cents(this%surface%psi/deg)//' deg), within its extent (T = '//cents(tt)//' of D = ' &
+               //cents(this%surface%d)//' in): the surface passes through the body; is it where it should be? ' &
+               //'(docs/contacts.md D-C14)')
+            return
+         end if
+      end if
       weight = g_std*sum(this%body%mass)
       ! (an arc of radius 0, a point, is judged by its force alone)
       if ((ps%f%r > 0.0_wp .and. ps%cs%delta > 0.5_wp*ps%f%r) .or. ps%split%force > weight) &
