@@ -326,7 +326,9 @@ contains
    !> Where inside the step just taken the effect's right-hand side should
    !! have jumped, as a fraction theta of the step (0 < theta < 1) from the
    !! last accepted state to st, a state not yet accepted (memory
-   !! read-only); 0 when it need not be located. The driver then takes the
+   !! read-only); 0 when it need not be located; 1 or more when st falls
+   !! short of a jump the effect watches for (read while the driver
+   !! searches for one). The driver then takes the
    !! step again to that fraction (simulation: the windshield's break,
    !! D-C24b). The default effect never asks.
    pure real(wp) function effect_locate(this, st, extra, aux) result(theta)

@@ -96,7 +96,7 @@ contains
       type(end_state_t) :: end_state
       type(output_registry_t) :: reg
       type(output_frame_t) :: frame
-      real(wp), allocatable :: y(:), total0(:), f_accepted(:), y_prev(:), y_end(:)
+      real(wp), allocatable :: y(:), total0(:), f_accepted(:), y_prev(:), y_end(:), y_hi(:)
       real(wp) :: t, t_limit, t_frame, t_prev, t_resume, t_prev_end
       logical :: fixed_step, print_now, at_end, locating, located
       type(step_stats_t) :: stats_prev
@@ -158,7 +158,7 @@ contains
       ! D-C24b: a jump an effect can locate (the windshield's break) is stepped
       ! to, under RK4 and Dormand-Prince (Adams-Moulton keeps its fixed step)
       locating = m%options%nint /= nint_adams .and. any_locating()
-      if (locating) allocate (y_prev(size(y)), y_end(size(y)))
+      if (locating) allocate (y_prev(size(y)), y_end(size(y)), y_hi(size(y)))
       t_resume = -1.0_wp
       located = .false.
       do while (reason == end_none .and. .not. out_err%failed())
@@ -229,29 +229,44 @@ contains
       end function any_locating
 
       !> D-C24b: after a step from (t_prev, y_prev) to (t, y), ask the effects
-      !! that can (effect_t%locate) where inside it their right-hand side
-      !! should have jumped; while one answers, take the step again from
-      !! t_prev to that fraction of it (at most max_locate times, each answer
-      !! a secant from the accepted state). done: (t, y) is now inside the
-      !! step, t_prev_end its end. A step taken again that fails gives the
-      !! step as first taken back (the jump then at its end, as without
-      !! location), and only if that fails too does the run fail (stat).
+      !! that can (effect_t%locate) whether their right-hand side should have
+      !! jumped inside it; while one says so, take the step again from t_prev
+      !! to the fraction it asks (a secant from the accepted state), keeping
+      !! the jump bracketed between the latest state found short of it (an
+      !! answer of 1 or more; at first t_prev) and the earliest found past it
+      !! (at first t). A fraction outside the bracket, or the try after a
+      !! state found short, takes the bracket's middle instead, so the bracket
+      !! at least halves every second try: a tiny FSW, whose secant lands
+      !! before the head even touches, was stepped to 5e-14 s at a time, for
+      !! ever (issue 14). It ends at a state where none asks (the jump there,
+      !! within its tolerance) or, after max_locate tries, at the earliest
+      !! state past the jump (the jump there, late by less than the bracket):
+      !! at most max_locate steps taken again, whatever the threshold. done:
+      !! (t, y) is now inside the step, t_prev_end its end. A step taken again
+      !! that fails gives the step as first taken back (the jump then at its
+      !! end, as without location), and only if that fails too does the run
+      !! fail (stat).
       subroutine locate_jump(done, stat)
          logical, intent(out) :: done
          integer, intent(out) :: stat
          integer, parameter :: max_locate = 8
-         real(wp) :: theta, t_to
+         real(wp) :: theta, t_to, t_lo, t_hi
+         logical :: short
          integer :: k
          done = .false.
          stat = step_ok
          t_prev_end = t
          y_end = y
+         call fraction_asked(theta, short)
+         if (.not. theta < 1.0_wp) return
+         t_lo = t_prev
+         t_hi = t
+         y_hi = y
          do k = 1, max_locate
-            theta = fraction_asked()
-            if (.not. theta < 1.0_wp) return
-            ! the step again, to the fraction theta of what it was
+            ! the step again: to the secant's fraction inside the bracket, else its middle
             t_to = t_prev + theta*(t - t_prev)
-            if (.not. (t_to > t_prev .and. t_to < t)) return
+            if (.not. (t_to > t_lo .and. t_to < t_hi)) t_to = 0.5_wp*(t_lo + t_hi)
+            if (.not. (t_to > t_lo .and. t_to < t_hi)) exit     ! (the bracket below the time's resolution)
             y = y_prev
             t = t_prev
             ! the step taken is not kept: a rejected step in the statistics (its
@@ -267,29 +282,59 @@ contains
             if (stat /= step_ok) then
                ! back to the step as first taken (memory untouched since: the
                ! same derivative), kept with the jump at its end
-               y = y_end
-               t = t_prev_end
                stepper%stats%steps = stepper%stats%steps + 1
-               stepper%stats%h_min = min(stats_prev%h_min, t_prev_end - t_prev)
-               stepper%stats%h_max = max(stats_prev%h_max, t_prev_end - t_prev)
-               call stepper%restart(sys, t, y, stat)
-               stepper%stats%restarts = stepper%stats%restarts - 1
+               call keep_try(t_prev_end, y_end, stat)
                done = .false.
                return
             end if
             done = .true.
+            call fraction_asked(theta, short)
+            if (theta < 1.0_wp) then          ! past the jump again: the bracket's end
+               t_hi = t
+               y_hi = y
+            else if (short) then              ! short of it: the bracket's start, then its middle
+               t_lo = t
+               theta = 1.0_wp
+            else                              ! here, within the jump's tolerance
+               return
+            end if
          end do
+         ! the tries spent: the earliest state past the jump, where it happens
+         if (.not. t_hi < t_prev_end) then
+            call keep_try(t_prev_end, y_end, stat)      ! (none before the step's end)
+            done = .false.
+         else if (t < t_hi) then
+            call keep_try(t_hi, y_hi, stat)
+         end if
       end subroutine locate_jump
 
+      !> Keep the step from t_prev to t_keep taken earlier (y_keep) rather
+      !! than the last one taken: its size among the accepted ones, the
+      !! stepper restarted there (not counted as a restart after a jump).
+      subroutine keep_try(t_keep, y_keep, stat)
+         real(wp), intent(in) :: t_keep, y_keep(:)
+         integer, intent(out) :: stat
+         y = y_keep
+         t = t_keep
+         stepper%stats%h_min = min(stats_prev%h_min, t_keep - t_prev)
+         stepper%stats%h_max = max(stats_prev%h_max, t_keep - t_prev)
+         call stepper%restart(sys, t, y, stat)
+         stepper%stats%restarts = stepper%stats%restarts - 1
+      end subroutine keep_try
+
       !> The smallest fraction of the last step at which an effect asks for
-      !! its jump (effect_t%locate), 1 when none asks; the body state is
-      !! made only for an occupant with an effect that may ask.
-      real(wp) function fraction_asked() result(theta)
+      !! its jump (effect_t%locate), 1 when none asks; short: an effect
+      !! answered that the state falls short of its jump (1 or more). The
+      !! body state is made only for an occupant with an effect that may ask.
+      subroutine fraction_asked(theta, short)
+         real(wp), intent(out) :: theta
+         logical, intent(out) :: short
          real(wp) :: theta_k
          integer :: oo, kk, xo2, ao2
          type(body_state_t) :: st2
          logical :: made
          theta = 1.0_wp
+         short = .false.
          do oo = 1, n_occ
             associate (occ => sys%occupants(oo))
                made = .false.
@@ -302,11 +347,12 @@ contains
                      ao2 = occ%aux_offset(kk)
                      theta_k = e%locate(st2, y(xo2 + 1:xo2 + 2*e%n_extra), y(ao2 + 1:ao2 + e%n_aux))
                      if (theta_k > 0.0_wp) theta = min(theta, theta_k)
+                     short = short .or. .not. theta_k < 1.0_wp
                   end associate
                end do
             end associate
          end do
-      end function fraction_asked
+      end subroutine fraction_asked
 
       !> An output error outweighs a numerical failure (docs/usage.md): the
       !! outputs that would show the run up to the failure are incomplete.
