@@ -394,7 +394,7 @@ contains
          integer, intent(out) :: reason_out
          type(accept_result_t) :: ar
          real(wp) :: a_head, a_chest, delta
-         integer :: k, q, j, occ_i, xo, ao, restart_status
+         integer :: k, q, j, occ_i, xo, ao, restart_status, rhs_code
          logical :: at_rest, injured, restart, undesired
 
          restart = .false.
@@ -444,11 +444,22 @@ contains
          if (summary%n_events > 0) injured = injured .or. any(summary%events(1:summary%n_events)%injury)
          call end_test_update(m%options%nend, m%end_tests, end_state, t_now, injured, &
                               m%options%nend == nend_rest .and. at_rest, reason_out, undesired)
-         if (restart .and. reason_out == end_none .and. .not. last) then
+         if (restart) then
             ! the derivative at the accepted point is kept, for the frame of a
             ! restart that fails
             f_accepted = stepper%f
-            call stepper%restart(sys, t_now, y, restart_status)
+            if (reason_out == end_none .and. .not. last) then
+               call stepper%restart(sys, t_now, y, restart_status)
+            else
+               ! the run ends here: no restart, but the last record holds one
+               ! state's values, so its z'' is the new memory's (issue 14, 6)
+               call sys%rhs(t_now, y, stepper%f, rhs_code)
+               restart_status = step_ok
+               if (rhs_code /= 0) then
+                  stepper%rhs_status = rhs_code
+                  restart_status = step_rhs_failed
+               end if
+            end if
             if (restart_status /= step_ok) then
                stepper%f = f_accepted
                call fail(restart_status)
