@@ -42,7 +42,7 @@ module effect_base
    public :: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    public :: event_dislocation_low, event_dislocation_high, event_kind_name, max_events_per_step
    public :: event_tension, event_compression, event_shear, event_undesired, event_shatter, event_cut
-   public :: event_ramp_widened
+   public :: event_ramp_widened, n_event_kinds
    public :: point_force_t, point_force_list_t, point_force_add
    public :: proximity_guard_t, guard_none, guard_ball, guard_half_plane, guard_slab, guard_capsule, guard_always
    public :: guard_rel_margin, guard_big, guard_holds
@@ -64,7 +64,10 @@ module effect_base
    integer, parameter :: event_shatter = 7, event_cut = 8
    !> A contact's friction ramp widened for the fixed step (D-C18b; a note, not an injury)
    integer, parameter :: event_ramp_widened = 9
-   character(len=28), parameter :: event_kind_name(9) = [character(len=28) :: &
+   !> The number of event kinds: every kind from 1 to it has a name here and
+   !! a description in c6_output/event_text (test_every_event_kind_described)
+   integer, parameter :: n_event_kinds = 9
+   character(len=28), parameter :: event_kind_name(n_event_kinds) = [character(len=28) :: &
       'dislocation (below limit)', 'dislocation (above limit)', 'tension dislocation', 'compression fracture', &
       'shear fracture', 'undesired contact', 'windshield shattered', 'cut on broken glass', 'friction ramp widened']
    !> Events one effect may report at one accepted step.
