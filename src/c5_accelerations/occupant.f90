@@ -205,8 +205,9 @@ contains
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: y(:)
-      type(point_force_list_t), intent(out) :: list
+      type(point_force_list_t), intent(inout) :: list
       integer :: k, xo, ao
+      list%n = 0      ! (its storage kept: nothing allocated once it is large enough)
       do k = 1, size(occ%effects)
          associate (e => occ%effects(k)%e)
             if (.not. e%external) cycle

@@ -10,7 +10,7 @@ module simulation
    use error_handling, only: error_t, error_set, exit_numerical
    use strings, only: num
    use text_io, only: string_t
-   use model, only: model_t, n_dof, n_joint, n_injury, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
+   use model, only: model_t, n_dof, n_seg, n_joint, n_injury, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state, &
       rhs_status_text, rhs_diverged, rhs_not_finite
    use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
@@ -19,7 +19,7 @@ module simulation
    use adams_moulton, only: am_stepper_t, am_start_euler, am_start_rk4
    use dormand_prince, only: dopri_stepper_t
    use effect_base, only: body_state_t, accept_result_t, event_t, event_tension, event_compression, event_shear, &
-      point_force_list_t, event_undesired
+      point_force_list_t, point_force_reserve, event_undesired
    use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined
    use joint_coupling, only: relative_angle
    use output_calc, only: head_chest_acceleration
@@ -107,6 +107,8 @@ contains
       integer :: status, reason, o, i, n_occ
       integer(i8) :: n, n_steps, print_every, next_print
       type(body_state_t) :: st
+      !> the point forces for Table 5's criteria, reused from step to step
+      type(point_force_list_t) :: forces
 
       n_occ = size(sys%occupants)
       allocate (summary%occ(n_occ), total0(n_occ), end_state(n_occ), occ_injured(n_occ))
@@ -140,6 +142,12 @@ contains
       end do
       call registry_build(sys, reg)
       allocate (f_accepted(size(y)))
+      ! Nothing allocated in the step loop (docs/architecture.md): room for
+      ! the point forces, one per segment of each effect from outside (the
+      ! most any reports: gravity's)
+      if (any([(summary%occ(o)%force_checked, o=1, n_occ)])) &
+         call point_force_reserve(forces, n_seg*maxval([(count([(sys%occupants(o)%effects(i)%e%external, &
+                                                                  i=1, size(sys%occupants(o)%effects))]), o=1, n_occ)]))
       call stepper%init(sys, t, y, status)
       if (status /= step_ok) then
          ! no derivative at t = 0: the outputs say so and hold no time history
@@ -355,11 +363,10 @@ contains
          integer, intent(in) :: occ_i
          real(wp), intent(in) :: t_now
          logical, intent(inout) :: injured
-         type(point_force_list_t) :: list
          type(bone_loads_t) :: bl
          integer :: i
-         call occupant_point_forces(occ, st, y, list)
-         bl = bone_loads(occ%body, st%z, st%zdot, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), list)
+         call occupant_point_forces(occ, st, y, forces)
+         bl = bone_loads(occ%body, st%z, st%zdot, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), forces)
          do i = 1, n_joint
             call raise(os%ft_max(i), bl%ft(i), t_now)
             call passed(os, occ_i, t_now, 1, event_tension, i, bl%ft(i), occ%injury%f_tension(i), injured)
