@@ -16,7 +16,8 @@ Usage: run_checks.py HSRI2D DECK_DIRECTORY WORK_DIRECTORY
   pulse file at paths of some 300 characters with many warnings naming them,
   the belts' COUPLING = ALL; and every archived listing (tests/listings).
 - Extreme but legal values print no asterisks (issue 14, 22): a pulse table
-  of 100,000 rows, the table's limit (its index widens).
+  of 100,000 rows, the table's limit (its index widens); joints, vehicle and
+  pulse at the ends of their ranges.
 """
 import os
 import re
@@ -206,6 +207,23 @@ else:
         fail("100,000 pulse rows: " + problem)
     if not re.search(r"^100000 +0\.1", open("pulse100k.lst").read(), re.M):
         fail("100,000 pulse rows: the last row's index is not printed as 100000")
+
+# ... and parameters at the ends of their ranges (the listing's tables before
+# the run; the run itself may well fail, status 3, its listing delivered)
+body_lines = open(body_only).read().splitlines()
+first = next(i for i, l in enumerate(body_lines) if l.upper().startswith("*JOINTS"))
+joint_cards = [l.ljust(72) for l in body_lines[first + 1:] if l.strip() and not l.startswith("$")][:7]
+# the stiffnesses, friction and its velocity limit at their largest, the stop angles as they were
+joints = "".join(c[:2] + "%10s" % "1.0E+12" * 3 + c[32:52] + "%10s" % "1.0E+12" * 2 + "\n" for c in joint_cards)
+write("extreme.deck", "*JOINTS\n" + joints + "*VEHICLE\n" + card("1.0E+12", "1.0E+12", -100000, 100000, -90, -100000)
+      + "*PULSE\n" + card(0, -10000, 10000, "-1.0E+08") + card(1000, 10000, -10000, "1.0E+08")
+      + "*TIME\n" + card("0.001", "", "0.001"))
+p = run(body_only, "extreme.deck", "-o", "extreme.lst")
+if p.returncode not in (0, 3):
+    fail(f"extreme values: status {p.returncode}: {p.stderr[:300]}")
+else:
+    for problem in listing_problems("extreme.lst"):
+        fail("extreme values: " + problem)
 
 if failures:
     sys.exit(1)
