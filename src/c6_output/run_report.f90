@@ -976,8 +976,8 @@ contains
             associate (e => res%events(j))
                if (event_is_note(e%kind) .neqv. notes) cycle
                n = n + 1
-               head = '  t ='//fixed(e%t, 10, 5)//' s  '//trim(merge('occupant '//itoa(e%occupant), &
-                                                                    '          ', size(res%occ) > 1))
+               head = '  t ='//fixed(e%t, 10, 5)//' s  '
+               if (size(res%occ) > 1) head = head//'occupant '//itoa(e%occupant)
                ev = head//' '//event_description(e)
                call lst%put(ev, indent=len(head) + 1)
             end associate
