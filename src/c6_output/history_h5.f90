@@ -236,12 +236,13 @@ contains
       if (.not. local%failed()) &
          call create_growing(this%file, this%path, 'events/time', h5t_ieee_f64le, 0, event_chunk, this%ev_time, local)
       if (.not. local%failed()) &
-         call describe(this%ev_time, this%path, 'events/time', ['t'], ['s'], 'time of each injury event', local)
+         call describe(this%ev_time, this%path, 'events/time', ['t'], ['s'], 'time of each event or note', local)
       if (.not. local%failed()) &
          call create_growing(this%file, this%path, 'events/kind', h5t_std_i32le, 0, event_chunk, this%ev_kind, local)
       if (.not. local%failed()) &
          call describe(this%ev_kind, this%path, 'events/kind', ['kind'], ['-'], &
-                       'kind of each event, a code (events/text says it in words)', local)
+                       'kind of each event, a code (docs/usage.md; events/text says it in words, a note''s ' &
+                       //'beginning "note:")', local)
       if (.not. local%failed()) &
          call create_growing(this%file, this%path, 'events/index', h5t_std_i32le, 0, event_chunk, this%ev_index, local)
       if (.not. local%failed()) &

@@ -10,7 +10,7 @@ module simulation
    use error_handling, only: error_t, error_set, exit_numerical
    use strings, only: num
    use text_io, only: string_t
-   use model, only: model_t, n_dof, n_joint, n_injury, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
+   use model, only: model_t, n_dof, n_seg, n_joint, n_injury, joint_partner, nint_adams, nint_rk4, nint_dopri, nend_rest, astart_rk4
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state, &
       rhs_status_text, rhs_diverged, rhs_not_finite
    use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
@@ -19,7 +19,7 @@ module simulation
    use adams_moulton, only: am_stepper_t, am_start_euler, am_start_rk4
    use dormand_prince, only: dopri_stepper_t
    use effect_base, only: body_state_t, accept_result_t, event_t, event_tension, event_compression, event_shear, &
-      point_force_list_t, event_undesired
+      point_force_list_t, point_force_reserve, event_undesired
    use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined
    use joint_coupling, only: relative_angle
    use output_calc, only: head_chest_acceleration
@@ -27,7 +27,8 @@ module simulation
    use output_producers, only: registry_build, frame_fill, frame_energy, energy_balance_t
    use output_sink, only: output_sink_t
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t, raise, summary_add_event
-   use end_tests, only: end_state_t, end_none, end_time, end_failure, end_energy, end_test_update, body_at_rest
+   use end_tests, only: end_state_t, end_none, end_time, end_failure, end_energy, end_injury, end_contact, end_rest, &
+      end_test_update, body_at_rest
    implicit none
    private
 
@@ -84,7 +85,9 @@ contains
    end function initial_warnings
 
    !> Run an assembled system (its occupants may come from several models;
-   !! m gives the time controls, options and the vehicle).
+   !! m gives the time controls, the integrator, the numerics and the
+   !! vehicle; each occupant carries its own NEND, rest limits and Table 5
+   !! limits).
    subroutine run_system(m, sys, summary, err, sink)
       type(model_t), intent(in) :: m
       type(crash_system_t), intent(inout) :: sys
@@ -93,7 +96,8 @@ contains
       class(output_sink_t), intent(inout), optional :: sink
       type(error_t) :: out_err       ! what the sinks report: ends the run too
       class(stepper_t), allocatable :: stepper
-      type(end_state_t) :: end_state
+      type(end_state_t), allocatable :: end_state(:)   !< each occupant's rest timer (C.7)
+      logical, allocatable :: occ_injured(:)            !< each occupant injured so far (C.7, NEND = 3)
       type(output_registry_t) :: reg
       type(output_frame_t) :: frame
       real(wp), allocatable :: y(:), total0(:), f_accepted(:), y_prev(:), y_end(:), y_hi(:)
@@ -103,9 +107,12 @@ contains
       integer :: status, reason, o, i, n_occ
       integer(i8) :: n, n_steps, print_every, next_print
       type(body_state_t) :: st
+      !> the point forces for Table 5's criteria, reused from step to step
+      type(point_force_list_t) :: forces
 
       n_occ = size(sys%occupants)
-      allocate (summary%occ(n_occ), total0(n_occ))
+      allocate (summary%occ(n_occ), total0(n_occ), end_state(n_occ), occ_injured(n_occ))
+      occ_injured = .false.
       call system_initial_y(sys, y)
       call choose_stepper(m, stepper)
       fixed_step = m%options%nint == nint_adams .or. m%options%nint == nint_rk4
@@ -121,10 +128,13 @@ contains
          summary%occ(o)%e_total0 = total0(o)
          summary%occ(o)%head_criteria = criteria_new()
          summary%occ(o)%chest_criteria = criteria_new(with_hic=.false.)   ! GSI and the 3 ms clip
-         ! Table 5's force criteria only when the deck gives a limit (they cost
-         ! the point forces and the joint reactions at every accepted step)
-         summary%occ(o)%force_checked = any(m%injury%f_tension > 0.0_wp) .or. &
-                                        any(m%injury%f_compression > 0.0_wp) .or. any(m%injury%f_shear > 0.0_wp)
+         ! Table 5's force criteria only when the occupant's deck gives a limit
+         ! (they cost the point forces and the joint reactions at every
+         ! accepted step)
+         associate (lim => sys%occupants(o)%injury)
+            summary%occ(o)%force_checked = any(lim%f_tension > 0.0_wp) .or. any(lim%f_compression > 0.0_wp) &
+                                           .or. any(lim%f_shear > 0.0_wp)
+         end associate
          do i = 1, n_joint
             summary%occ(o)%joint_min(i) = extreme_t(relative_angle(st%z, i), 0.0_wp)
             summary%occ(o)%joint_max(i) = summary%occ(o)%joint_min(i)
@@ -132,6 +142,12 @@ contains
       end do
       call registry_build(sys, reg)
       allocate (f_accepted(size(y)))
+      ! Nothing allocated in the step loop (docs/architecture.md): room for
+      ! the point forces, one per segment of each effect from outside (the
+      ! most any reports: gravity's)
+      if (any([(summary%occ(o)%force_checked, o=1, n_occ)])) &
+         call point_force_reserve(forces, n_seg*maxval([(count([(sys%occupants(o)%effects(i)%e%external, &
+                                                                  i=1, size(sys%occupants(o)%effects))]), o=1, n_occ)]))
       call stepper%init(sys, t, y, status)
       if (status /= step_ok) then
          ! no derivative at t = 0: the outputs say so and hold no time history
@@ -393,23 +409,22 @@ contains
          integer, intent(in) :: occ_i
          real(wp), intent(in) :: t_now
          logical, intent(inout) :: injured
-         type(point_force_list_t) :: list
          type(bone_loads_t) :: bl
          integer :: i
-         call occupant_point_forces(occ, st, y, list)
-         bl = bone_loads(occ%body, st%z, st%zdot, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), list)
+         call occupant_point_forces(occ, st, y, forces)
+         bl = bone_loads(occ%body, st%z, st%zdot, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), forces)
          do i = 1, n_joint
             call raise(os%ft_max(i), bl%ft(i), t_now)
-            call passed(os, occ_i, t_now, 1, event_tension, i, bl%ft(i), m%injury%f_tension(i), injured)
+            call passed(os, occ_i, t_now, 1, event_tension, i, bl%ft(i), occ%injury%f_tension(i), injured)
          end do
          do i = 1, n_injury
             if (fc_defined(i)) then
                call raise(os%fc_max(i), bl%fc(i), t_now)
-               call passed(os, occ_i, t_now, 2, event_compression, i, bl%fc(i), m%injury%f_compression(i), injured)
+               call passed(os, occ_i, t_now, 2, event_compression, i, bl%fc(i), occ%injury%f_compression(i), injured)
             end if
             if (fs_defined(i)) then
                call raise(os%fs_max(i), bl%fs(i), t_now)
-               call passed(os, occ_i, t_now, 3, event_shear, i, bl%fs(i), m%injury%f_shear(i), injured)
+               call passed(os, occ_i, t_now, 3, event_shear, i, bl%fs(i), occ%injury%f_shear(i), injured)
             end if
          end do
       end subroutine check_force_injuries
@@ -434,26 +449,31 @@ contains
       !> Memory updates after an accepted step (docs/architecture.md, rule 1):
       !! the effects' accept, maxima, the end tests; a restart of the
       !! stepper when an effect's memory made the right-hand side jump.
+      !! Each occupant's end test is its own (its NEND, rest limits, Table 5
+      !! limits): the run ends at the first injury or undesired contact of an
+      !! occupant whose NEND asks for it, or when every occupant whose NEND
+      !! asks for rest has rested for its THOLD.
       subroutine on_accepted(t_now, last, reason_out)
          real(wp), intent(in) :: t_now
          logical, intent(in) :: last      !< the run ends at this step: no restart
          integer, intent(out) :: reason_out
          type(accept_result_t) :: ar
          real(wp) :: a_head, a_chest, delta
-         integer :: k, q, j, occ_i, xo, ao, restart_status
-         logical :: at_rest, injured, restart, undesired
+         integer :: k, q, j, occ_i, xo, ao, restart_status, rhs_code, reason_o
+         logical :: restart, undesired, at_rest, any_rest, all_rested
 
          restart = .false.
-         injured = .false.
-         undesired = .false.
-         at_rest = .true.
+         any_rest = .false.
+         all_rested = .true.
+         reason_out = end_none
          do occ_i = 1, n_occ
+            undesired = .false.
             associate (occ => sys%occupants(occ_i), os => summary%occ(occ_i))
                ! the vehicle's state only when something reads it
                call occupant_state(occ, t_now, y, st)
-               if (sys%needs_vehicle .or. m%options%nend == nend_rest) call occupant_vehicle(occ, sys%vm, t_now, st)
+               if (sys%needs_vehicle .or. occ%nend == nend_rest) call occupant_vehicle(occ, sys%vm, t_now, st)
                ! Table 5's force criteria, with the memory the step was taken with
-               if (os%force_checked) call check_force_injuries(occ, os, occ_i, t_now, injured)
+               if (os%force_checked) call check_force_injuries(occ, os, occ_i, t_now, occ_injured(occ_i))
                do q = 1, size(occ%remembering)
                   k = occ%remembering(q)
                   ar%restart = .false.
@@ -466,7 +486,7 @@ contains
                   restart = restart .or. ar%restart
                   do j = 1, ar%n_events
                      ar%events(j)%occupant = occ_i
-                     injured = injured .or. ar%events(j)%injury
+                     occ_injured(occ_i) = occ_injured(occ_i) .or. ar%events(j)%injury
                      undesired = undesired .or. ar%events(j)%kind == event_undesired
                      call summary_add_event(summary, ar%events(j))
                      if (present(sink) .and. .not. out_err%failed()) call sink%event(ar%events(j), out_err)
@@ -483,18 +503,36 @@ contains
                   if (delta < os%joint_min(k)%value) os%joint_min(k) = extreme_t(delta, t_now)
                   if (delta > os%joint_max(k)%value) os%joint_max(k) = extreme_t(delta, t_now)
                end do
-               if (m%options%nend == nend_rest) at_rest = at_rest .and. body_at_rest(occ%body, m%end_tests, st%z, &
-                                                                                   st%zdot, st%vehicle)
+               ! C.7 with the occupant's own NEND and limits
+               at_rest = .false.
+               if (occ%nend == nend_rest) at_rest = body_at_rest(occ%body, occ%end_tests, st%z, st%zdot, st%vehicle)
+               call end_test_update(occ%nend, occ%end_tests, end_state(occ_i), t_now, occ_injured(occ_i), at_rest, &
+                                    reason_o, undesired)
+               if (occ%nend == nend_rest) then
+                  any_rest = .true.
+                  all_rested = all_rested .and. reason_o == end_rest
+               else if (reason_o == end_injury .or. reason_o == end_contact) then
+                  if (reason_out == end_none) reason_out = reason_o
+               end if
             end associate
          end do
-         if (summary%n_events > 0) injured = injured .or. any(summary%events(1:summary%n_events)%injury)
-         call end_test_update(m%options%nend, m%end_tests, end_state, t_now, injured, &
-                              m%options%nend == nend_rest .and. at_rest, reason_out, undesired)
-         if (restart .and. reason_out == end_none .and. .not. last) then
+         if (reason_out == end_none .and. any_rest .and. all_rested) reason_out = end_rest
+         if (restart) then
             ! the derivative at the accepted point is kept, for the frame of a
             ! restart that fails
             f_accepted = stepper%f
-            call stepper%restart(sys, t_now, y, restart_status)
+            if (reason_out == end_none .and. .not. last) then
+               call stepper%restart(sys, t_now, y, restart_status)
+            else
+               ! the run ends here: no restart, but the last record holds one
+               ! state's values, so its z'' is the new memory's (issue 14, 6)
+               call sys%rhs(t_now, y, stepper%f, rhs_code)
+               restart_status = step_ok
+               if (rhs_code /= 0) then
+                  stepper%rhs_status = rhs_code
+                  restart_status = step_rhs_failed
+               end if
+            end if
             if (restart_status /= step_ok) then
                stepper%f = f_accepted
                call fail(restart_status)
