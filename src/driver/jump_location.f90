@@ -123,7 +123,7 @@ contains
             ! back to the step as first taken (memory untouched since: the
             ! same derivative), kept with the jump at its end
             stepper%stats%steps = stepper%stats%steps + 1
-            call keep_try(this%t_step_end, this%y_end)
+            call keep_try(this, sys, stepper, this%t_step_end, this%y_end, t, y, stat)
             done = .false.
             return
          end if
@@ -141,25 +141,32 @@ contains
       end do
       ! the tries spent: the earliest state past the jump, where it happens
       if (.not. t_hi < this%t_step_end) then
-         call keep_try(this%t_step_end, this%y_end)      ! (none before the step's end)
+         call keep_try(this, sys, stepper, this%t_step_end, this%y_end, t, y, stat)      ! (none before the step's end)
          done = .false.
       else if (t < t_hi) then
-         call keep_try(t_hi, this%y_hi)
+         call keep_try(this, sys, stepper, t_hi, this%y_hi, t, y, stat)
       end if
-   contains
-      !> Keep the step from t_prev to t_keep taken earlier (y_keep) rather
-      !! than the last one taken: its size among the accepted ones, the
-      !! stepper restarted there (not counted as a restart after a jump).
-      subroutine keep_try(t_keep, y_keep)
-         real(wp), intent(in) :: t_keep, y_keep(:)
-         y = y_keep
-         t = t_keep
-         stepper%stats%h_min = min(this%stats_prev%h_min, t_keep - this%t_prev)
-         stepper%stats%h_max = max(this%stats_prev%h_max, t_keep - this%t_prev)
-         call stepper%restart(sys, t, y, stat)
-         stepper%stats%restarts = stepper%stats%restarts - 1
-      end subroutine keep_try
    end subroutine locator_locate
+
+   !> Keep the step from t_prev to t_keep taken earlier (y_keep) rather
+   !! than the last one taken: (t, y) set to it, its size among the
+   !! accepted ones, the stepper restarted there (not counted as a restart
+   !! after a jump).
+   subroutine keep_try(this, sys, stepper, t_keep, y_keep, t, y, stat)
+      type(jump_locator_t), intent(in) :: this
+      type(crash_system_t), intent(inout) :: sys
+      class(stepper_t), intent(inout) :: stepper
+      real(wp), intent(in) :: t_keep, y_keep(:)
+      real(wp), intent(out) :: t
+      real(wp), intent(out), contiguous :: y(:)
+      integer, intent(out) :: stat
+      y = y_keep
+      t = t_keep
+      stepper%stats%h_min = min(this%stats_prev%h_min, t_keep - this%t_prev)
+      stepper%stats%h_max = max(this%stats_prev%h_max, t_keep - this%t_prev)
+      call stepper%restart(sys, t, y, stat)
+      stepper%stats%restarts = stepper%stats%restarts - 1
+   end subroutine keep_try
 
    !> The smallest fraction of the last step at which an effect asks for
    !! its jump (effect_t%locate), 1 when none asks; short: an effect

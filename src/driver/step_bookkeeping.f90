@@ -134,7 +134,8 @@ contains
             call occupant_state(occ, t, y, st)
             if (sys%needs_vehicle .or. occ%nend == nend_rest) call occupant_vehicle(occ, sys%vm, t, st)
             ! Table 5's force criteria, with the memory the step was taken with
-            if (os%force_checked) call check_force_injuries(occ, os, o)
+            if (os%force_checked) &
+               call force_criteria(this, occ, o, t, y, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
             do q = 1, size(occ%remembering)
                k = occ%remembering(q)
                ar%restart = .false.
@@ -201,51 +202,56 @@ contains
          end if
       end if
 
-   contains
-
-      !> The bone loads at the accepted point against Table 5's limits: an
-      !! event the first time each criterion is passed; the maxima kept.
-      subroutine check_force_injuries(occ, os, occ_i)
-         type(occupant_t), intent(in) :: occ
-         type(occupant_summary_t), intent(inout) :: os
-         integer, intent(in) :: occ_i
-         type(bone_loads_t) :: bl
-         integer :: i
-         call occupant_point_forces(occ, this%st, y, this%forces)
-         bl = bone_loads(occ%body, this%st%z, this%st%zdot, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), &
-                         this%forces)
-         do i = 1, n_joint
-            call raise(os%ft_max(i), bl%ft(i), t)
-            call passed(os, occ_i, 1, event_tension, i, bl%ft(i), occ%injury%f_tension(i))
-         end do
-         do i = 1, n_injury
-            if (fc_defined(i)) then
-               call raise(os%fc_max(i), bl%fc(i), t)
-               call passed(os, occ_i, 2, event_compression, i, bl%fc(i), occ%injury%f_compression(i))
-            end if
-            if (fs_defined(i)) then
-               call raise(os%fs_max(i), bl%fs(i), t)
-               call passed(os, occ_i, 3, event_shear, i, bl%fs(i), occ%injury%f_shear(i))
-            end if
-         end do
-      end subroutine check_force_injuries
-
-      !> Criterion c (1 tension, 2 compression, 3 shear) of joint or bone
-      !! index: an event the first time value passes a limit that is given.
-      subroutine passed(os, occ_i, c, kind, index, value, limit)
-         type(occupant_summary_t), intent(inout) :: os
-         integer, intent(in) :: occ_i, c, kind, index
-         real(wp), intent(in) :: value, limit
-         type(event_t) :: e
-         if (.not. limit > 0.0_wp .or. os%force_reported(c, index)) return
-         if (.not. value > limit) return
-         os%force_reported(c, index) = .true.
-         e = event_t(t=t, kind=kind, index=index, value=value, limit=limit, injury=.true., occupant=occ_i)
-         this%injured(occ_i) = .true.
-         call summary_add_event(summary, e)
-         call sinks%event(e)
-      end subroutine passed
    end subroutine books_accept
+
+   !> Table 5's criteria of occupant o at the step accepted at (t, y),
+   !! where its z'' is zdd: the bone loads against its limits, an event the
+   !! first time each is passed, the maxima kept.
+   subroutine force_criteria(this, occ, o, t, y, zdd, summary, sinks)
+      class(step_books_t), intent(inout) :: this
+      type(occupant_t), intent(in) :: occ
+      integer, intent(in) :: o
+      real(wp), intent(in) :: t, y(:), zdd(n_dof)
+      type(run_summary_t), intent(inout) :: summary
+      type(sink_list_t), intent(inout) :: sinks
+      type(bone_loads_t) :: bl
+      integer :: i
+      call occupant_point_forces(occ, this%st, y, this%forces)
+      bl = bone_loads(occ%body, this%st%z, this%st%zdot, zdd, this%forces)
+      do i = 1, n_joint
+         call raise(summary%occ(o)%ft_max(i), bl%ft(i), t)
+         call force_passed(this, o, t, 1, event_tension, i, bl%ft(i), occ%injury%f_tension(i), summary, sinks)
+      end do
+      do i = 1, n_injury
+         if (fc_defined(i)) then
+            call raise(summary%occ(o)%fc_max(i), bl%fc(i), t)
+            call force_passed(this, o, t, 2, event_compression, i, bl%fc(i), occ%injury%f_compression(i), summary, sinks)
+         end if
+         if (fs_defined(i)) then
+            call raise(summary%occ(o)%fs_max(i), bl%fs(i), t)
+            call force_passed(this, o, t, 3, event_shear, i, bl%fs(i), occ%injury%f_shear(i), summary, sinks)
+         end if
+      end do
+   end subroutine force_criteria
+
+   !> Criterion c (1 tension, 2 compression, 3 shear) of occupant o's joint
+   !! or bone index at time t: an event the first time value passes a
+   !! limit that is given (an injury: C.7's NEND = 3).
+   subroutine force_passed(this, o, t, c, kind, index, value, limit, summary, sinks)
+      class(step_books_t), intent(inout) :: this
+      integer, intent(in) :: o, c, kind, index
+      real(wp), intent(in) :: t, value, limit
+      type(run_summary_t), intent(inout) :: summary
+      type(sink_list_t), intent(inout) :: sinks
+      type(event_t) :: e
+      if (.not. limit > 0.0_wp .or. summary%occ(o)%force_reported(c, index)) return
+      if (.not. value > limit) return
+      summary%occ(o)%force_reported(c, index) = .true.
+      e = event_t(t=t, kind=kind, index=index, value=value, limit=limit, injury=.true., occupant=o)
+      this%injured(o) = .true.
+      call summary_add_event(summary, e)
+      call sinks%event(e)
+   end subroutine force_passed
 
    !> The energy balance of C.6 at a print time t (each occupant's, from
    !! its frame) against its tolerance (*NUMERICS EBTOL): a run whose
