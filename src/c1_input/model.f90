@@ -5,7 +5,7 @@
 module model
    use kinds, only: wp
    use text_io, only: string_t
-   use loading_curves, only: loading_curve_t
+   use loading_parameters, only: loading_curve_t
    implicit none
    private
 

@@ -21,8 +21,9 @@ module model_builder
       statics_ok, bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    use pulse_csv, only: read_pulse_csv
    use vehicle_motion, only: vehicle_motion_t, vehicle_state_t, vehicle_motion_init, vehicle_state_at
-   use contact_tables, only: contact_pair_t, position_pairs, surface_code_valid, surface_name, is_undesired
-   use contact_scene, only: scene_pairs, surface_layers
+   use contact_tables, only: contact_pair_t, position_pairs, surface_code_valid, surface_name, is_undesired, &
+      surface_codes
+   use interior_pairs, only: scene_pairs, surface_layers, surface_sources
    use model, only: interior_section_t
    use model, only: model_t, pulse_table_t, stop_curve_t, options_section_t, time_section_t, &
       numerics_section_t, body_section_t, joints_section_t, injury_section_t, vehicle_section_t, &
@@ -33,9 +34,8 @@ module model_builder
       belts_section_t, n_belt_card, n_belt_section, belt_card_lap2, coupling_torso, coupling_all, &
       nbelt_lap, nbelt_torso
    use text_io, only: string_t
-   use loading_curves, only: loading_curve_t, curve_polynomial, curve_table, curve_is_defined, &
-      curve_check, max_order
-   use recurrent_loading, only: recurrent_check
+   use loading_parameters, only: loading_curve_t, curve_polynomial, curve_table, curve_is_defined, &
+      curve_check, max_order, recurrent_check
    implicit none
    private
 
@@ -89,13 +89,16 @@ contains
       type(contact_pair_t), allocatable :: pairs(:)
       type(card_t) :: rim, interior
       integer :: q, l, k, lb
-      integer, parameter :: derived(4) = [4, 10, 11, 12], source(4) = [2, 8, 2, 6]
+      integer, allocatable :: source(:)
       logical :: reported(32)
-      do q = 1, 4
-         if (m%interior%given(derived(q)) .and. .not. m%interior%given(source(q))) call problem(deck, err, &
-            indexed_card(deck, g_surfaces, derived(q)), 'surface '//itoa(derived(q))//' ('//surface_name(derived(q)) &
-            //') follows from surface '//itoa(source(q))//' ('//surface_name(source(q))//') by f.2''s relations: ' &
-            //'give surface '//itoa(source(q))//' a *SURFACES card too')
+      do q = 1, size(surface_codes)
+         k = surface_codes(q)
+         source = surface_sources(k)
+         if (size(source) < 2) cycle
+         if (m%interior%given(k) .and. .not. m%interior%given(source(2))) call problem(deck, err, &
+            indexed_card(deck, g_surfaces, k), 'surface '//itoa(k)//' ('//surface_name(k) &
+            //') follows from surface '//itoa(source(2))//' ('//surface_name(source(2))//') by f.2''s relations: ' &
+            //'give surface '//itoa(source(2))//' a *SURFACES card too')
       end do
       allocate (pairs(0))      ! (realloc on assignment: a descriptor set first)
       pairs = scene_pairs(m)
@@ -232,19 +235,7 @@ contains
       pairs = scene_pairs(m)
       used = .false.
       do q = 1, size(pairs)
-         k = pairs(q)%k
-         select case (k)
-         case (4, 11)                  ! from the windshield's ends (D-C6)
-            used([k, 2]) = .true.
-         case (10, 30)                 ! the rim and the side rim: at the column's angle (D-C11, D-C12)
-            used([10, 8]) = .true.
-         case (12)                     ! at the toeboard's lower end
-            used([12, 6]) = .true.
-         case (25)                     ! the lower panel's edge
-            used(5) = .true.
-         case default
-            used(k) = .true.
-         end select
+         used(surface_sources(pairs(q)%k)) = .true.
       end do
       associate (g => deck%group(g_surfaces))
          do q = 1, g%n

@@ -9,7 +9,6 @@
 !! the program.
 module seat_beam_statics
    use kinds, only: wp, pi
-   use seat_geometry, only: poly_force
    implicit none
    private
 
@@ -17,6 +16,7 @@ module seat_beam_statics
    public :: n_beam_quantities, n_beam_relations, beam_quantity_name, beam_relation_text
    public :: bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    public :: statics_ok, statics_not_four, statics_undetermined, statics_no_solution
+   public :: poly_force
 
    integer, parameter :: n_beam_quantities = 10, n_beam_relations = 6
    !> The ten quantities, in the report's order (C.4.d, with the F'_so the OCR lost).
@@ -57,6 +57,12 @@ module seat_beam_statics
    end type beam_statics_t
 
 contains
+
+   !> C.4.d (A-S3): the seat cushion's polynomial sum beta_m u^m.
+   pure real(wp) function poly_force(beta, u)
+      real(wp), intent(in) :: beta(3), u
+      poly_force = u*(beta(1) + u*(beta(2) + u*beta(3)))
+   end function poly_force
 
    !> The six relations at q (q(bq_gamma0) is the angle), scaled to be of
    !! order one: forces by f_ref, moments by f_ref z_o, lengths by z_o.
