@@ -12,8 +12,8 @@ module body_input
    use deck_cards, only: g_segments, g_joints, g_restraints, g_stopcurve, g_arcs, g_initial
    use deck_reader, only: deck_t, card_t
    use deck_fields, only: card_value, card_int, card_given, group_value
-   use model_origin, only: model_origin_t, cards, group_present, field_given, card_key, header_of, indexed_card, &
-      card_ref, problem
+   use model_origin, only: model_origin_t, cards, group_present, field_given, card_key, indexed_card, &
+      list_card, card_ref, problem
    use model, only: body_section_t, joints_section_t, stop_curve_t, n_joint, n_arc, joint_partner, form_cubic, &
       form_table
    implicit none
@@ -257,6 +257,7 @@ contains
       type(model_origin_t), intent(in) :: orig
       type(error_t), intent(inout) :: err
       type(card_t), allocatable :: cs(:)
+      type(card_t) :: point
       integer :: k, n
       character(len=:), allocatable :: stop
 
@@ -265,28 +266,19 @@ contains
       cs = pack(cs, [(cs(k)%index == joint .and. card_key(orig, g_stopcurve, cs(k), 'SIDE') == side, k=1, size(cs))])
       stop = trim(merge('LOWER', 'UPPER', side == 1))
       do n = 1, size(c%depth)
-         if (n == 1 .and. c%depth(1) > 0.0_wp) call problem(orig, err, point_card(n), 'joint ' &
+         point = list_card(orig, g_stopcurve, cs, n)
+         if (n == 1 .and. c%depth(1) > 0.0_wp) call problem(orig, err, point, 'joint ' &
             //itoa(joint)//', '//stop//' stop: DEPTH = '//num(c%depth(1)/deg) &
             //' deg; the first point of a stop curve must have DEPTH = 0', 'DEPTH')
          if (n > 1) then
-            if (.not. c%depth(n) > c%depth(n - 1)) call problem(orig, err, point_card(n), 'joint ' &
+            if (.not. c%depth(n) > c%depth(n - 1)) call problem(orig, err, point, 'joint ' &
                //itoa(joint)//', '//stop//' stop: DEPTH = ' &
                //num(c%depth(n)/deg)//' deg after '//num(c%depth(n - 1)/deg)//' deg ('//card_ref(orig, &
-               point_card(n - 1))//'); DEPTH must increase from card to card of a stop curve', 'DEPTH')
+               list_card(orig, g_stopcurve, cs, n - 1))//'); DEPTH must increase from card to card of a stop curve', &
+               'DEPTH')
          end if
       end do
-      if (size(c%depth) < 2) call problem(orig, err, point_card(size(c%depth)), 'joint '//itoa(joint)//', ' &
+      if (size(c%depth) < 2) call problem(orig, err, point, 'joint '//itoa(joint)//', ' &
          //stop//' stop: a stop curve needs at least two points; this is its only card', 'SIDE')
-   contains
-      !> The card of point n (the group's header when the origin has none).
-      function point_card(n) result(card)
-         integer, intent(in) :: n
-         type(card_t) :: card
-         if (n <= size(cs)) then
-            card = cs(n)
-         else
-            card = header_of(orig, g_stopcurve)
-         end if
-      end function point_card
    end subroutine check_curve
 end module body_input

@@ -13,7 +13,7 @@ module interior_input
    use deck_cards, only: g_options, g_surfaces, g_interior, g_contactoff, g_arcs, g_segments, g_materials
    use deck_reader, only: deck_t, card_t
    use deck_fields, only: card_value, card_int, card_given, group_value, single_card
-   use model_origin, only: model_origin_t, cards, field_given, has_card, header_of, first_card, indexed_card, &
+   use model_origin, only: model_origin_t, cards, field_given, has_card, first_card, indexed_card, list_card, &
       card_ref, field_where, problem, warning
    use model, only: model_t, interior_section_t, nend_contact
    use contact_tables, only: contact_pair_t, position_pairs, surface_code_valid, surface_name, is_undesired, &
@@ -70,6 +70,7 @@ contains
       character(len=3), parameter :: names(4) = ['X  ', 'Y  ', 'PSI', 'D  ']
       type(contact_pair_t), allocatable :: pairs(:)
       type(card_t), allocatable :: cs(:)
+      type(card_t) :: c
       logical :: need(4), derived(4)
       integer :: q, k, f, i, kk, j, first
       cs = cards(orig, g_surfaces)
@@ -97,16 +98,17 @@ contains
       do q = 1, size(it%off, 2)
          i = it%off(1, q)
          kk = it%off(2, q)
+         c = list_card(orig, g_contactoff, cs, q)
          if (.not. any(pairs%i == i .and. pairs%k == kk)) then
-            call problem(orig, err, off_card(q), 'the pair ('//itoa(i)//', '//itoa(kk)//') is not one of NBODY ' &
+            call problem(orig, err, c, 'the pair ('//itoa(i)//', '//itoa(kk)//') is not one of NBODY ' &
                          //itoa(nbody)//'''s (Tables 7, 8; '//card_ref(orig, first_card(orig, g_options)) &
                          //'); body point '//itoa(i)//' has '//surfaces_of(i), 'I K')
             cycle
          end if
          first = findloc([(it%off(1, j) == i .and. it%off(2, j) == kk, j=1, q - 1)], .true., 1)
          if (first > 0) then
-            call problem(orig, err, off_card(q), 'the pair ('//itoa(i)//', '//itoa(kk)//') is switched off twice ' &
-                         //'(first by '//card_ref(orig, off_card(first))//')', 'I K')
+            call problem(orig, err, c, 'the pair ('//itoa(i)//', '//itoa(kk)//') is switched off twice ' &
+                         //'(first by '//card_ref(orig, list_card(orig, g_contactoff, cs, first))//')', 'I K')
             cycle
          end if
       end do
@@ -130,18 +132,6 @@ contains
          end select
          need = need .and. .not. derived
       end subroutine table3
-
-      !> The *CONTACTOFF card of pair q (the group's header when the origin
-      !! has none).
-      function off_card(q) result(c)
-         integer, intent(in) :: q
-         type(card_t) :: c
-         if (q <= size(cs)) then
-            c = cs(q)
-         else
-            c = header_of(orig, g_contactoff)
-         end if
-      end function off_card
 
       function surfaces_of(ii) result(text)
          integer, intent(in) :: ii

@@ -19,7 +19,7 @@ module model_origin
 
    public :: model_origin_t, deck_origin
    public :: cards, group_present, has_card, field_given, group_field_given, card_key, group_name
-   public :: header_of, first_card, indexed_card, card_ref, field_where, located
+   public :: header_of, first_card, indexed_card, list_card, card_ref, field_where, located
    public :: problem, problem_at, warning
 
    !> The origin of a model: for one built from a deck, the deck's cards
@@ -137,6 +137,22 @@ contains
       end do
       c = header_of(o, gid)
    end function indexed_card
+
+   !> Card n of cs, a list of group gid's cards (row n of a table, point n
+   !! of a curve), or the group's header when the list is shorter (an origin
+   !! without the cards: a model built in code).
+   function list_card(orig, gid, cs, n) result(c)
+      type(model_origin_t), intent(in) :: orig
+      integer, intent(in) :: gid
+      type(card_t), intent(in) :: cs(:)
+      integer, intent(in) :: n
+      type(card_t) :: c
+      if (n >= 1 .and. n <= size(cs)) then
+         c = cs(n)
+      else
+         c = header_of(orig, gid)
+      end if
+   end function list_card
 
    !> Where another card is, for a problem that involves two: "*OPTIONS
    !! card 1 at default.deck:12" (or "*OPTIONS, not in the deck").

@@ -12,7 +12,7 @@ module vehicle_input
    use deck_cards, only: g_vehicle, g_gravity, g_pulse, g_pulserates, g_pulsepos, g_pulsefile
    use deck_reader, only: deck_t, card_t
    use deck_fields, only: card_value, card_given, group_value, single_card
-   use model_origin, only: model_origin_t, cards, field_given, header_of, first_card, card_ref, problem, warning
+   use model_origin, only: model_origin_t, cards, field_given, first_card, list_card, card_ref, problem, warning
    use model, only: vehicle_section_t, pulse_table_t, environment_section_t
    use pulse_csv, only: read_pulse_csv
    use vehicle_motion, only: vehicle_motion_t, vehicle_state_t, vehicle_motion_init, vehicle_state_at
@@ -137,12 +137,12 @@ contains
       integer :: k, j, n_given
       cs = cards(orig, gid)
       do k = 1, size(table%t)
-         if (k == 1 .and. table%t(1) > 0.0_wp) call problem(orig, err, row_card(orig, gid, cs, k), &
+         if (k == 1 .and. table%t(1) > 0.0_wp) call problem(orig, err, list_card(orig, gid, cs, k), &
             'T = '//num(table%t(1))//' s; the first time of a vehicle table must be 0', 'T')
          if (k > 1) then
-            if (.not. table%t(k) > table%t(k - 1)) call problem(orig, err, row_card(orig, gid, cs, k), 'T = ' &
+            if (.not. table%t(k) > table%t(k - 1)) call problem(orig, err, list_card(orig, gid, cs, k), 'T = ' &
                //num(table%t(k))//' s after '//num(table%t(k - 1))//' s on '//card_ref(orig, &
-               row_card(orig, gid, cs, k - 1))//'; T must increase from card to card', 'T')
+               list_card(orig, gid, cs, k - 1))//'; T must increase from card to card', 'T')
          end if
       end do
       if (all_given) return
@@ -160,21 +160,6 @@ contains
          end if
       end do
    end subroutine check_table
-
-   !> The card of row k of a table of group gid: its k-th card (the
-   !! group's header when the origin has none).
-   function row_card(orig, gid, cs, k) result(c)
-      type(model_origin_t), intent(in) :: orig
-      integer, intent(in) :: gid
-      type(card_t), intent(in) :: cs(:)
-      integer, intent(in) :: k
-      type(card_t) :: c
-      if (k <= size(cs)) then
-         c = cs(k)
-      else
-         c = header_of(orig, gid)
-      end if
-   end function row_card
 
    !> Tabulated rates or positions must start where the initial conditions
    !! do (*VEHICLE's field initial(j); blank: the interior's origin, 0).
@@ -196,7 +181,7 @@ contains
             from = 'the vehicle starts at 0 (its initial position is the origin)'
          end if
          if (abs(table%v(1, j) - start(j)) > 1.0e-9_wp*max(1.0_wp, abs(start(j)))) &
-            call problem(orig, err, row_card(orig, gid, cards(orig, gid), 1), trim(names(j))//' at t = 0 is ' &
+            call problem(orig, err, list_card(orig, gid, cards(orig, gid), 1), trim(names(j))//' at t = 0 is ' &
             //num(table%v(1, j)/scale(j))//' '//trim(units(j))//' but '//from, trim(names(j)))
       end do
    end subroutine check_start
@@ -294,12 +279,12 @@ contains
                //num(100.0_wp*worst/scale(j), 3)//' % of the tables'' largest '//what//', ' &
                //num(scale(j), 6)//unit_text
             if (worst > error_share*scale(j)) then
-               call problem(orig, err, row_card(orig, gid, cards(orig, gid), at), text//'; a table may differ from ' &
+               call problem(orig, err, list_card(orig, gid, cards(orig, gid), at), text//'; a table may differ from ' &
                   //'the integral ' &
                   //'by at most 10 % (measurement error; the inertial forces come from the accelerations, C.3): ' &
                   //'is a unit, a column or a digit wrong?', trim(names(j)))
             else
-               call warning(orig, warnings, row_card(orig, gid, cards(orig, gid), at), text//': the run takes the ' &
+               call warning(orig, warnings, list_card(orig, gid, cards(orig, gid), at), text//': the run takes the ' &
                   //'inertial forces from the accelerations and the motion from this table (C.3)', trim(names(j)))
             end if
          end do
