@@ -6,6 +6,7 @@
 !! fields each material takes, orders, curves that never pull, curves that
 !! exist, R <= 1 - G.
 module loading_input
+   use kinds, only: wp
    use error_handling, only: error_t
    use strings, only: itoa
    use text_io, only: string_t
@@ -188,24 +189,24 @@ contains
          end do
       end do
 
-      cs = cards(orig, g_materials)
-      do k = 1, size(cs)
-         i = cs(k)%index
-         where = 'material '//itoa(i)
-         call check_reference(cs(k), ld%material_curve(i))
-         message = recurrent_check(mat%g(i), mat%r(i))
-         if (len(message) > 0) call problem(orig, err, cs(k), where//': '//message, 'G R')
-      end do
-
-      cs = cards(orig, g_beltloading)
-      do k = 1, size(cs)
-         i = cs(k)%index
-         where = 'section '//itoa(i)
-         call check_reference(cs(k), ld%belt_curve(i))
-         message = recurrent_check(ld%belt_g(i), ld%belt_r(i))
-         if (len(message) > 0) call problem(orig, err, cs(k), where//': '//message, 'G R')
-      end do
+      call check_laws(g_materials, 'material ', ld%material_curve, mat%g, mat%r)
+      call check_laws(g_beltloading, 'section ', ld%belt_curve, ld%belt_g, ld%belt_r)
    contains
+      !> The laws of group gid's rows (materials, belt sections: what): the
+      !! curve each names, its G and R.
+      subroutine check_laws(gid, what, curve, g, r)
+         integer, intent(in) :: gid, curve(:)
+         character(len=*), intent(in) :: what
+         real(wp), intent(in) :: g(:), r(:)
+         cs = cards(orig, gid)
+         do k = 1, size(cs)
+            i = cs(k)%index
+            where = what//itoa(i)
+            call check_reference(cs(k), curve(i))
+            message = recurrent_check(g(i), r(i))
+            if (len(message) > 0) call problem(orig, err, cs(k), where//': '//message, 'G R')
+         end do
+      end subroutine check_laws
       !> A curve named on a card must exist in the selected form.
       subroutine check_reference(c, curve)
          type(card_t), intent(in) :: c
