@@ -66,6 +66,7 @@ contains
       used = [nbelt_lap(nbelt), nbelt_torso(nbelt), nbelt_torso(nbelt), nbelt_lap(nbelt) .and. bt%lap_sides == 2]
 
       options = first_card(orig, g_options)
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_belts)
       do k = 1, size(cs)
          c = cs(k)

@@ -67,6 +67,7 @@ contains
       integer :: k, i
       integer, parameter :: chain(6) = [1, 2, 3, 4, 5, 7]
 
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_segments)
       do k = 1, size(cs)
          i = cs(k)%index
@@ -152,6 +153,7 @@ contains
       integer :: k, i
       real(wp) :: rel0
 
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_joints)
       do k = 1, size(cs)
          i = cs(k)%index
@@ -262,6 +264,7 @@ contains
       character(len=:), allocatable :: stop
 
       if (.not. allocated(c%depth)) return
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_stopcurve)
       cs = pack(cs, [(cs(k)%index == joint .and. card_key(orig, g_stopcurve, cs(k), 'SIDE') == side, k=1, size(cs))])
       stop = trim(merge('LOWER', 'UPPER', side == 1))

@@ -40,6 +40,7 @@ contains
       type(error_t), intent(inout) :: err
       type(card_t), allocatable :: cs(:)
       integer :: k, i
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_injury)
       do k = 1, size(cs)
          i = cs(k)%index

@@ -73,6 +73,7 @@ contains
       type(card_t) :: c
       logical :: need(4), derived(4)
       integer :: q, k, f, i, kk, j, first
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_surfaces)
       do q = 1, size(cs)
          k = cs(q)%index
@@ -158,6 +159,7 @@ contains
       integer :: q, l, k, lb
       integer, allocatable :: source(:)
       logical :: reported(32)
+      allocate (source(0))      ! (realloc on assignment: a descriptor set first)
       do q = 1, size(surface_codes)
          k = surface_codes(q)
          source = surface_sources(k)
@@ -290,6 +292,7 @@ contains
       do q = 1, size(pairs)
          used(surface_sources(pairs(q)%k)) = .true.
       end do
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_surfaces)
       do q = 1, size(cs)
          k = cs(q)%index
@@ -318,6 +321,7 @@ contains
                                                110.0_wp, -45.0_wp, -45.0_wp, 80.0_wp]
       real(wp) :: psi
       integer :: q, k, r
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_surfaces)
       do q = 1, size(cs)
          k = cs(q)%index

@@ -48,6 +48,7 @@ contains
       integer, allocatable :: codes(:)
       described = .false.
       if (k < 1 .or. k > size(it%given)) return
+      allocate (codes(0))      ! (realloc on assignment: a descriptor set first)
       codes = surface_sources(k)
       described = all(it%given(codes))
       if (k == 30) described = described .and. it%ds > 0.0_wp

@@ -57,6 +57,7 @@ contains
       type(error_t), intent(inout) :: err
       type(card_t), allocatable :: cs(:)
       integer :: k, l
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_materials)
       do k = 1, size(cs)
          l = cs(k)%index
@@ -171,6 +172,7 @@ contains
          call unused(g_loadpoly, '*LOADTABLE')
       end if
 
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_loadrate)
       do k = 1, size(cs)
          i = cs(k)%index
@@ -235,6 +237,7 @@ contains
       type(card_t), allocatable :: cs(:)
       character(len=:), allocatable :: where, message, fields
       integer :: k, i, n, point
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_loadpoly)
       do k = 1, size(cs)
          i = cs(k)%index
@@ -269,6 +272,7 @@ contains
       type(card_t), allocatable :: cs(:), points(:)
       character(len=:), allocatable :: message
       integer :: k, i, point
+      allocate (cs(0), points(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_loadtable)
       do i = 1, max_curves
          if (ld%curve(i)%form /= curve_table) cycle

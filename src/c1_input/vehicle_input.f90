@@ -135,6 +135,7 @@ contains
       type(error_t), intent(inout) :: err
       type(card_t), allocatable :: cs(:)
       integer :: k, j, n_given
+      allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, gid)
       do k = 1, size(table%t)
          if (k == 1 .and. table%t(1) > 0.0_wp) call problem(orig, err, list_card(orig, gid, cs, k), &
