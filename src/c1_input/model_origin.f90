@@ -32,11 +32,14 @@ module model_origin
 
 contains
 
-   !> The origin of a model built from deck.
+   !> The origin of a model built from deck: its card table, file names and
+   !! cards (not its echo, which no message needs).
    function deck_origin(deck) result(o)
       type(deck_t), intent(in) :: deck
       type(model_origin_t) :: o
-      o%deck = deck
+      o%deck%spec = deck%spec
+      o%deck%source_name = deck%source_name
+      o%deck%group = deck%group
    end function deck_origin
 
    !> The cards of group gid, in the deck's order.
