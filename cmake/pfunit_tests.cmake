@@ -14,10 +14,18 @@
 # the stand-in tools/pfunit_lite/pfproc.py and link funit_lite, built from
 # tests/funit_lite/funit.F90 (see tests/funit_lite/README.md).
 #
+# -DHSRI2D_REQUIRE_PFUNIT=ON makes a missing pFUnit an error instead (CI's
+# third build tree: it must never fall back to the stand-in unnoticed).
+#
 # The project's flags (hsri2d_set_flags, compilers.cmake) apply when defined.
 include_guard(DIRECTORY)
 
-find_package(PFUNIT QUIET)
+option(HSRI2D_REQUIRE_PFUNIT "Fail when pFUnit is not found instead of using the pfunit_lite stand-in" OFF)
+if(HSRI2D_REQUIRE_PFUNIT)
+  find_package(PFUNIT REQUIRED)
+else()
+  find_package(PFUNIT QUIET)
+endif()
 if(PFUNIT_FOUND)
   message(STATUS "Tests: pFUnit ${PFUNIT_VERSION} found, the .pf tests use it")
 else()
@@ -39,6 +47,10 @@ function(hsri2d_add_pf_test)
     set(workdir "${arg_WORKING_DIRECTORY}")
   endif()
 
+  foreach(source IN LISTS arg_SOURCES)
+    cmake_path(ABSOLUTE_PATH source BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}" NORMALIZE)
+    set_property(GLOBAL APPEND PROPERTY HSRI2D_PF_SOURCES "${source}")
+  endforeach()
   if(PFUNIT_FOUND)
     _hsri2d_pf_test_pfunit(${arg_NAME} "${arg_SOURCES}" "${arg_LINK}")
   else()
@@ -48,6 +60,31 @@ function(hsri2d_add_pf_test)
   # know neither LABELS nor WORKING_DIRECTORY.
   set_tests_properties(${arg_NAME} PROPERTIES
     LABELS "${arg_LABELS}" WORKING_DIRECTORY "${workdir}")
+endfunction()
+
+# Every .pf file under `directory` must belong to a test program (so that
+# none is left out of either build), except those under the `EXCEPT` folders.
+function(hsri2d_check_pf_registered directory)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "EXCEPT")
+  file(GLOB_RECURSE found CONFIGURE_DEPENDS "${directory}/*.pf")
+  get_property(registered GLOBAL PROPERTY HSRI2D_PF_SOURCES)
+  set(missing)
+  foreach(file IN LISTS found)
+    set(excepted FALSE)
+    foreach(folder IN LISTS arg_EXCEPT)
+      cmake_path(IS_PREFIX folder "${file}" NORMALIZE excepted)
+      if(excepted)
+        break()
+      endif()
+    endforeach()
+    if(NOT excepted AND NOT file IN_LIST registered)
+      list(APPEND missing "${file}")
+    endif()
+  endforeach()
+  if(missing)
+    list(JOIN missing "\n  " missing)
+    message(FATAL_ERROR "These .pf files are in no test program (hsri2d_add_pf_test):\n  ${missing}")
+  endif()
 endfunction()
 
 # Real pFUnit. The project's flags go on the sources made from the .pf files

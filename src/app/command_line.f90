@@ -25,13 +25,15 @@ contains
       type(error_t), intent(inout) :: err
       integer :: i, n
       character(len=:), allocatable :: arg
-      logical :: options_done, stdin_named
+      logical :: options_done, stdin_named, listing_named, h5_named
 
       allocate (opts%decks(0))
       opts%listing_file = ''
       opts%h5_file = ''
       options_done = .false.
       stdin_named = .false.
+      listing_named = .false.
+      h5_named = .false.
       n = command_argument_count()
       i = 0
       do while (i < n)
@@ -71,9 +73,16 @@ contains
          case ('--outputs')
             opts%outputs = .true.
          case ('-o', '--output')
-            if (.not. value_of(opts%listing_file)) return
+            if (.not. value_of(opts%listing_file, listing_named, 'the listing file (-o, --output)')) return
+            ! '-' is standard output, where the listing goes without -o
+            if (opts%listing_file == standard_input_path .and. len(opts%listing_file) == 1) opts%listing_file = ''
          case ('--h5')
-            if (.not. value_of(opts%h5_file)) return
+            if (.not. value_of(opts%h5_file, h5_named, 'the HDF5 file (--h5)')) return
+            if (opts%h5_file == standard_input_path .and. len(opts%h5_file) == 1) then
+               call error_set(err, exit_usage, 'option --h5 needs a file: an HDF5 file cannot be written to ' &
+                              //'standard output (-)')
+               return
+            end if
          case ('--')
             options_done = .true.
          case default
@@ -81,9 +90,20 @@ contains
             return
          end select
       end do
+      if (.not. (opts%help .or. opts%version)) call check_combination(opts, h5_named, err)
    contains
-      logical function value_of(target)
+      !> The value of option `arg`, which names `what` once only (`named`:
+      !! whether it was named already).
+      logical function value_of(target, named, what)
          character(len=:), allocatable, intent(inout) :: target
+         logical, intent(inout) :: named
+         character(len=*), intent(in) :: what
+         value_of = .not. named
+         if (.not. value_of) then
+            call error_set(err, exit_usage, what//' is named twice; name it once')
+            return
+         end if
+         named = .true.
          value_of = i < n
          if (.not. value_of) then
             call error_set(err, exit_usage, 'option '//arg//' needs a file name')
@@ -97,6 +117,41 @@ contains
          end if
       end function value_of
    end subroutine parse_command_line
+
+   !> Options that cannot go together, or would be ignored (docs/usage.md,
+   !! "The command line"): one of --deck-format, --default-deck, --outputs,
+   !! --check at most; no deck for the first two; no --h5 but with a run or
+   !! --check. (--help and --version print and ignore the rest.)
+   subroutine check_combination(opts, h5_named, err)
+      type(options_t), intent(in) :: opts
+      logical, intent(in) :: h5_named
+      type(error_t), intent(inout) :: err
+      character(len=:), allocatable :: mode, other
+      mode = ''
+      other = ''
+      call take(opts%deck_format, '--deck-format')
+      call take(opts%print_default_deck, '--default-deck')
+      call take(opts%outputs, '--outputs')
+      call take(opts%check_only, '--check')
+      if (len(other) > 0) then
+         call error_set(err, exit_usage, mode//' and '//other//' cannot go together; give one of them')
+      else if ((opts%deck_format .or. opts%print_default_deck) .and. size(opts%decks) > 0) then
+         call error_set(err, exit_usage, mode//' reads no deck; "'//opts%decks(1)%s//'" would be ignored')
+      else if (h5_named .and. (opts%deck_format .or. opts%print_default_deck .or. opts%outputs)) then
+         call error_set(err, exit_usage, mode//' writes no HDF5 file; --h5 would be ignored')
+      end if
+   contains
+      subroutine take(given, name)
+         logical, intent(in) :: given
+         character(len=*), intent(in) :: name
+         if (.not. given) return
+         if (len(mode) == 0) then
+            mode = name
+         else if (len(other) == 0) then
+            other = name
+         end if
+      end subroutine take
+   end subroutine check_combination
 
    function argument(i) result(arg)
       integer, intent(in) :: i
@@ -117,9 +172,11 @@ contains
           'stands for the built-in default deck (e.g. hsri2d '//builtin_deck_name//' pulse.deck),'//nl// &
           'and '//standard_input_path//' for standard input (e.g. make-deck | hsri2d '//standard_input_path//').'//nl//nl// &
           'options:'//nl// &
-          '  -o, --output FILE   write the listing to FILE (default: standard output)'//nl// &
+          '  -o, --output FILE   write the listing (or what --outputs, --deck-format or'//nl// &
+          '                      --default-deck print) to FILE; - or no -o: standard output'//nl// &
           '  --h5 FILE           write the time histories to the HDF5 file FILE'//nl// &
-          '  --check             read and check the decks, run nothing'//nl// &
+          '  --check             read and check the decks (and that -o and --h5 would not'//nl// &
+          '                      overwrite an input), run nothing, write nothing'//nl// &
           '  --outputs           print the output series the decks would write (HDF5 datasets, '//nl// &
           '                      listing tables) and exit'//nl// &
           '  --deck-format       print the card reference (docs/deck-format.md) and exit'//nl// &

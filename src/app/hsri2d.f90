@@ -11,7 +11,7 @@ program hsri2d
    use default_deck, only: default_deck_lines
    use run_case_mod, only: run_request_t, run_case, describe_outputs
    use output_files, only: output_file_t
-   use posix_files, only: posix_ignore_file_size_signal
+   use posix_files, only: posix_ignore_output_signals
    use version_info, only: hsri2d_version
    implicit none
 
@@ -29,27 +29,29 @@ program hsri2d
    type(string_t), allocatable :: builtin(:), warnings(:)
    integer :: ignore, i, ios
 
-   ! A file-size limit (ulimit -f) then makes writes fail with an error
-   ! that is reported (exit status 4) instead of killing the program.
-   ignore = posix_ignore_file_size_signal()
+   ! A file-size limit (ulimit -f) or a pipe closed by its reader (hsri2d |
+   ! head) then makes writes fail with an error that is reported (exit
+   ! status 4, temporary files removed) instead of killing the program.
+   ignore = posix_ignore_output_signals()
 
    call parse_command_line(opts, err)
    if (err%failed()) call quit(err)
+   ! --help and --version print on standard output whatever else is given
    if (opts%help) then
-      call say([string_t(usage_text())])
+      call say([string_t(usage_text())], '')
       call finish(exit_ok)
    end if
    if (opts%version) then
-      call say([string_t('hsri2d '//hsri2d_version)])
+      call say([string_t('hsri2d '//hsri2d_version)], '')
       call finish(exit_ok)
    end if
    if (opts%deck_format) then
-      call say(deck_format_lines())
+      call say(deck_format_lines(), opts%listing_file)
       call finish(exit_ok)
    end if
    builtin = default_deck_lines()
    if (opts%print_default_deck) then
-      call say(builtin)
+      call say(builtin, opts%listing_file)
       call finish(exit_ok)
    end if
 
@@ -61,7 +63,7 @@ program hsri2d
    if (opts%outputs) then
       call describe_outputs(req, builtin, err)
       if (err%failed()) call quit(err)
-      call say(builtin)
+      call say(builtin, opts%listing_file)
       call finish(exit_ok)
    end if
    call run_case(req, err, warnings=warnings)
@@ -69,19 +71,23 @@ program hsri2d
       write (error_unit, '(a)', iostat=ios) 'hsri2d: warning: '//warnings(i)%s
    end do
    if (err%failed()) call quit(err)
-   if (opts%check_only) call say([string_t('hsri2d: the deck is valid')])
+   if (opts%check_only) call say([string_t('hsri2d: the deck is valid')], '')
    call finish(exit_ok)
 
 contains
 
-   !> Lines on standard output, every write checked (Fortran's own writes
-   !! to standard output do not report a full disk or a closed pipe).
-   subroutine say(lines)
+   !> Lines to `path` ('' = standard output) as the listing would be
+   !! written there (docs/usage.md, "Output files"), every write checked
+   !! (Fortran's own writes to standard output do not report a full disk or
+   !! a closed pipe).
+   subroutine say(lines, path)
       type(string_t), intent(in) :: lines(:)
+      character(len=*), intent(in) :: path
       type(output_file_t) :: out
       type(error_t) :: e
       integer :: k
-      call out%create_text('', 'output', e)
+      call out%create_text(path, 'output', e)
+      if (e%failed()) call quit(e)
       do k = 1, size(lines)
          call out%put_line(lines(k)%s)
       end do
@@ -89,15 +95,17 @@ contains
       if (e%failed()) call quit(e)
    end subroutine say
 
-   !> Print an error report on standard error and exit with its status.
+   !> Print an error report on standard error and exit with its status
+   !! (iostat: a standard error that cannot be written must not turn into
+   !! a runtime error and another status).
    subroutine quit(e)
       type(error_t), intent(in) :: e
-      integer :: code
+      integer :: code, ios
       code = e%code
-      write (error_unit, '(a)') 'hsri2d: '//error_category_name(code)//':'
-      write (error_unit, '(a)') e%message
-      if (code == exit_deck) write (error_unit, '(a)') 'hsri2d: see docs/deck-format.md or hsri2d --deck-format'
-      if (code == exit_numerical) write (error_unit, '(a)') 'hsri2d: the listing holds the run up to the failure'
+      write (error_unit, '(a)', iostat=ios) 'hsri2d: '//error_category_name(code)//':'
+      write (error_unit, '(a)', iostat=ios) e%message
+      if (code == exit_deck) write (error_unit, '(a)', iostat=ios) 'hsri2d: see docs/deck-format.md or hsri2d --deck-format'
+      if (code == exit_numerical) write (error_unit, '(a)', iostat=ios) 'hsri2d: the listing holds the run up to the failure'
       call finish(code)
    end subroutine quit
 

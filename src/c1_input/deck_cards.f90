@@ -12,7 +12,7 @@
 !! for card identification and are ignored.
 module deck_cards
    use kinds, only: wp, deg, g_std
-   use loading_curves, only: max_order
+   use loading_parameters, only: max_order
    use model, only: max_curves, n_belt_section, n_belt_card
    implicit none
    private
@@ -231,7 +231,9 @@ contains
       t(g_time)%name = 'TIME'
       t(g_time)%title = 'Time controls (C.3, C.6, C.7)'
       t(g_time)%note = 'For the fixed-step integrators (NINT 1, 2) TMAX and DTPRINT must be whole multiples ' &
-         //'of DT. For NINT 3, DT is the first trial step and the step never exceeds DTPRINT.'
+         //'of DT. For NINT 3, DT is the first trial step and the step never exceeds DTPRINT. RTOL is at ' &
+         //'least 1e-14 (RTOL = 0 is refused): some 50 times the rounding of a double, below which the error ' &
+         //'estimate of a step is itself rounding and a tighter tolerance would only shrink the step.'
       call set_fields(t(g_time), [ &
          real_field('TMAX', 's', one, blank_default, 0.2_wp, zero, 1.0e3_wp, 'duration of the run', .true.), &
          real_field('DT', 's', one, blank_default, 1.0e-4_wp, zero, 1.0_wp, 'integration step', .true.), &
@@ -239,7 +241,8 @@ contains
          real_field('CTOL', '-', one, blank_default, 1.0e-6_wp, zero, 1.0_wp, &
             'corrector tolerance (relative to max(1,|y|))', .true.), &
          int_field('CITER', blank_default, 10, 1, 1000, 'corrector iteration limit'), &
-         real_field('RTOL', '-', one, blank_default, 1.0e-7_wp, 1.0e-14_wp, 1.0_wp, 'adaptive relative tolerance'), &
+         real_field('RTOL', '-', one, blank_default, 1.0e-7_wp, 1.0e-14_wp, 1.0_wp, &
+            'adaptive relative tolerance (1e-14 at least)'), &
          real_field('ATOL', '-', one, blank_default, 1.0e-9_wp, zero, 1.0_wp, 'adaptive absolute tolerance', .true.)])
 
       t(g_segments)%name = 'SEGMENTS'
@@ -414,7 +417,9 @@ contains
       t(g_pulsefile)%name = 'PULSEFILE'
       t(g_pulsefile)%kind = 'PULSE'
       t(g_pulsefile)%title = 'Vehicle accelerations from a CSV file'
-      t(g_pulsefile)%note = 'The file (a path relative to the deck''s directory, or absolute) holds lines ' &
+      t(g_pulsefile)%note = 'The file (an absolute path, or one relative to the directory of a deck that is a ' &
+         //'regular file, or to the current directory for a deck read from standard input, a pipe, a FIFO or a ' &
+         //'process substitution such as /dev/fd/63) holds lines ' &
          //'"t, xddot, yddot, phiddot" in s, g, g, deg/s^2; missing trailing columns are 0; lines ' &
          //'starting with # and a first line of column names are skipped. Replaces *PULSE.'
       call set_fields(t(g_pulsefile), [text_field('FILE', blank_required, 'CSV file name (columns 1-72)')])

@@ -3,7 +3,7 @@
 !! prints it; a test compares it with the file in docs/.
 module deck_doc
    use kinds, only: wp
-   use strings, only: itoa
+   use strings, only: itoa, num
    use text_io, only: string_t, append_string
    use deck_cards, only: group_spec_t, field_spec_t, card_table, n_groups, kind_real, kind_int, &
       kind_word, kind_text, blank_default, blank_required, blank_absent, layout_single, &
@@ -43,8 +43,10 @@ contains
          '  Other units are the report''s: inch, pound force, second; mass in lb*s^2/in.', &
          '* Several decks may be named on the command line. A later card group replaces the earlier group', &
          '  of its kind (*PULSE and *PULSEFILE are one kind); within one file a group may appear once.', &
-         '* Every problem in a deck is reported with file, line, group, field, columns and the text found;', &
-         '  the exit status is then 2.', '', &
+         '* Every problem in a deck is reported once, with file, line, group, card, field, columns and the', &
+         '  text found; the exit status is then 2. A list group holds at most the number of cards its', &
+         '  layout gives (a table of 100,000 or 1,000,000 points): the first card beyond it is reported', &
+         '  and the group''s later cards are left out.', '', &
          '| group | layout | required | content |', '|---|---|---|---|'])
       do g = 1, n_groups
          call append_string(lines, '| `*'//trim(t(g)%name)//'` | '//layout_text(t(g))//' | ' &
@@ -92,9 +94,10 @@ contains
             s = 'a card for any '//trim(g%index_name)//' of 1 to '//itoa(g%max_index)
          end if
       case (layout_list)
-         s = 'a list of at least '//itoa(g%min_cards)//' card(s)'
+         s = 'a list of '//itoa(g%min_cards)//' to '//grouped(g%max_cards)//' cards'
       case (layout_multi)
-         s = 'a list of cards, each with its '//trim(g%index_name)
+         s = 'a list of '//itoa(g%min_cards)//' to '//grouped(g%max_cards)//' cards, each with its ' &
+             //trim(g%index_name)
       case default
          s = '?'
       end select
@@ -134,6 +137,20 @@ contains
           //blank//' | '//valid//' | '//md(trim(f%meaning))//' |'
    end function field_row
 
+   !> A card count with thousands separators: 100,000.
+   pure function grouped(n) result(s)
+      integer, intent(in) :: n
+      character(len=:), allocatable :: s
+      character(len=:), allocatable :: digits
+      integer :: k
+      digits = itoa(n)
+      s = ''
+      do k = len(digits), 1, -1
+         s = digits(k:k)//s
+         if (mod(len(digits) - k + 1, 3) == 0 .and. k > 1) s = ','//s
+      end do
+   end function grouped
+
    function range_text(f) result(s)
       type(field_spec_t), intent(in) :: f
       character(len=:), allocatable :: s
@@ -149,16 +166,12 @@ contains
       end if
    end function range_text
 
+   !> A value of the card table as the messages print it (strings' num):
+   !! every digit the table holds, 1.0E-14 not "0".
    function short(x) result(s)
       real(wp), intent(in) :: x
       character(len=:), allocatable :: s
-      character(len=32) :: buf
-      if (abs(x - anint(x)) <= 1.0e-12_wp*max(1.0_wp, abs(x)) .and. abs(x) < 1.0e9_wp) then
-         write (buf, '(i0)') nint(x)
-      else
-         write (buf, '(es11.4)') x
-      end if
-      s = trim(adjustl(buf))
+      s = num(x)
    end function short
 
    function first_word(words) result(s)

@@ -14,8 +14,12 @@ module deck_fields
 contains
 
    !> The position of field `name` in group gid, or 0. A name the card table
-   !! does not hold is a defect of the program, never of a deck: its value
-   !! is then NaN, which the tests (run with floating-point traps) catch.
+   !! does not hold is a defect of the program, never of a deck (its value
+   !! is then NaN, -huge or .false.): the test cli_field_names
+   !! (tests/cli/check_field_names.py) checks every name that every call of
+   !! these accessors, and every field list of the builder's messages, can
+   !! pass against the card table, whether a test runs that call or not, at
+   !! no cost to a run.
    pure integer function field_number(deck, gid, name) result(k)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: gid

@@ -6,10 +6,11 @@
 !! replaces the earlier group of its kind (how a sweep swaps a pulse).
 module deck_reader
    use kinds, only: wp
-   use strings, only: itoa, num, upper, read_real, read_int
+   use strings, only: itoa, num, upper, read_real, read_int, escaped
    use error_handling, only: error_t, error_append, exit_deck
    use text_io, only: string_t, read_text_file, read_standard_input, append_string, &
       standard_input_path, standard_input_name
+   use posix_files, only: file_info_t, posix_file_info, kind_regular
    use field_values, only: field_expectation, word_position
    use deck_cards, only: group_spec_t, field_spec_t, card_table, max_fields, card_width, &
       index_first_col, index_last_col, data_last_col, field_first_col, field_last_col, &
@@ -21,7 +22,7 @@ module deck_reader
    public :: card_t, group_t, echo_line_t, deck_t
    public :: deck_init, deck_add_file, deck_add_lines, deck_finish
    public :: echo_comment, echo_header, echo_data, echo_blank, echo_bad
-   public :: max_reported_errors
+   public :: max_reported_errors, deck_names
 
    !> Stop listing problems after this many (the count is still given).
    integer, parameter :: max_reported_errors = 200
@@ -29,6 +30,8 @@ module deck_reader
    !> One data card, its fields converted to internal units.
    type :: card_t
       integer :: source = 0, line = 0
+      integer :: group = 0                       !< its group in the card table (0: none, a header)
+      integer :: number = 0                      !< its number in the group, as written (bad cards counted)
       integer :: index = 0                       !< row index (indexed groups)
       real(wp) :: value(max_fields) = 0.0_wp     !< reals, integers, word numbers
       logical :: given(max_fields) = .false.     !< the field was not blank
@@ -70,6 +73,11 @@ module deck_reader
       type(group_t) :: group(n_groups)
       integer :: n_errors = 0
       type(string_t), allocatable :: warnings(:)   !< located, for the model's warnings
+      !> a header card of the group was refused for its characters (a tab,
+      !! ...): the group is not reported missing as well
+      logical :: header_rejected(n_groups) = .false.
+      !> such a header whose group could not be told: no group is reported missing
+      logical :: unknown_header_rejected = .false.
    end type deck_t
 
 contains
@@ -82,18 +90,23 @@ contains
    end subroutine deck_init
 
    !> Read and parse one deck file; the path standard_input_path ('-') reads
-   !! standard input, named standard_input_name in messages, whose files named
-   !! on cards are relative to the current directory. An unreadable file is
-   !! an I/O error; problems in its cards are deck errors (all of them are
-   !! appended).
+   !! standard input, named standard_input_name in messages. Files named on
+   !! cards (*PULSEFILE) are relative to the deck's directory when the deck
+   !! is a regular file (or a link to one), else - standard input, a pipe, a
+   !! FIFO, a process substitution's /dev/fd/N - to the current directory
+   !! (/dev/fd/ holds no pulse file). An unreadable file is an I/O error;
+   !! problems in its cards are deck errors (all of them are appended).
    subroutine deck_add_file(deck, path, err)
       type(deck_t), intent(inout) :: deck
       character(len=*), intent(in) :: path
       type(error_t), intent(inout) :: err
       type(string_t), allocatable :: lines(:)
       type(error_t) :: io_err
-      logical :: from_stdin
+      type(file_info_t) :: info
+      logical :: from_stdin, regular
       from_stdin = path == standard_input_path .and. len(path) == len(standard_input_path)
+      regular = .false.
+      if (.not. from_stdin) regular = posix_file_info(path, info) == 0 .and. info%kind == kind_regular
       if (from_stdin) then
          call read_standard_input(lines, io_err)
       else
@@ -105,8 +118,10 @@ contains
       end if
       if (from_stdin) then
          call deck_add_lines(deck, standard_input_name, '', lines, err)
-      else
+      else if (regular) then
          call deck_add_lines(deck, path, directory_of(path), lines, err)
+      else
+         call deck_add_lines(deck, path, '', lines, err)
       end if
    end subroutine deck_add_file
 
@@ -119,7 +134,12 @@ contains
       integer :: src, i, gid, current, first_line(n_groups)
       character(len=:), allocatable :: text, word
 
-      call append_string(deck%source_name, name)
+      ! one line in messages and the echo, and never empty
+      if (len(name) == 0) then
+         call append_string(deck%source_name, '(unnamed deck)')
+      else
+         call append_string(deck%source_name, escaped(name))
+      end if
       call append_string(deck%source_dir, directory)
       src = size(deck%source_name)
       current = 0
@@ -128,8 +148,23 @@ contains
 
       do i = 1, size(lines)
          text = lines(i)%s
-         if (.not. card_is_clean(deck, err, src, i, text)) then
+         if (.not. card_is_clean(deck, err, src, i, text, bad_card_place(deck, current, text))) then
             call add_echo(deck, src, i, echo_bad, current, printable(text))
+            if (text(1:1) == '*') then
+               ! a header refused for its characters: its group is not read,
+               ! and not reported missing as well
+               gid = group_by_name(deck, upper(leading_name(text(2:))))
+               if (gid > 0) then
+                  deck%header_rejected(gid) = .true.
+               else
+                  deck%unknown_header_rejected = .true.
+               end if
+               current = -1
+            else if (text(1:1) /= '$' .and. current > 0) then
+               ! a data card refused for its characters is a bad card of its
+               ! group: counted, and not reported missing as well
+               call count_bad_card(deck%group(current), deck%spec(current), i, text)
+            end if
             cycle
          end if
          if (len_trim(text) == 0) then
@@ -150,7 +185,8 @@ contains
             else if (same_kind_in_file(deck, first_line, gid) > 0) then
                call report(deck, err, src, i, 'card group *'//trim(deck%spec(gid)%name) &
                   //' and *'//trim(deck%spec(same_kind_in_file(deck, first_line, gid))%name) &
-                  //' give the same table; use one of them')
+                  //' (line '//itoa(first_line(same_kind_in_file(deck, first_line, gid)))//') give the same ' &
+                  //'table; use one of them')
             else
                first_line(gid) = i
                call start_group(deck, gid, src, i)
@@ -180,7 +216,8 @@ contains
          associate (g => deck%group(gid), s => deck%spec(gid))
             if (.not. g%present) then
                ! (when no source held a line, "the deck is empty" says it all)
-               if (s%required .and. .not. kind_present(deck, gid) .and. deck%n_echo > 0) &
+               if (s%required .and. .not. kind_present(deck, gid) .and. deck%n_echo > 0 .and. .not. &
+                   (deck%header_rejected(gid) .or. deck%unknown_header_rejected)) &
                   call report(deck, err, 0, 0, 'the deck has no *'//trim(s%name)//' card group (' &
                   //trim(s%title)//'); it is required')
                cycle
@@ -189,8 +226,9 @@ contains
                ! blank cards are skipped, so a header alone is the blank card
                ! ("blank means empty" for *TITLE)
                call append_card(g, blank_card(s, g%source, g%line))
-            else if (g%n_written < s%min_cards) then
+            else if (g%n_written < s%min_cards .and. .not. (s%layout == layout_indexed .and. s%all_rows)) then
                ! bad cards count as written: their own errors say what is wrong
+               ! (a group that needs every row says which are missing, below)
                call report(deck, err, g%source, g%line, '*'//trim(s%name)//' needs at least ' &
                   //itoa(s%min_cards)//' data card(s); found '//itoa(g%n_written))
             end if
@@ -226,9 +264,11 @@ contains
       type(group_t), intent(in) :: g
       type(group_spec_t), intent(in) :: s
       logical :: seen(s%max_index), take_good
-      integer :: good, bad, idx, line, n_unreadable
+      integer :: good, bad, idx, line, n_unreadable, first_line(s%max_index), n_missing
+      character(len=:), allocatable :: missing
 
       seen = .false.
+      first_line = 0
       good = 1
       bad = 1
       ! good and rejected cards merged in the order of their lines
@@ -250,18 +290,27 @@ contains
             bad = bad + 1
          end if
          if (idx < 1 .or. idx > s%max_index) cycle
-         if (seen(idx)) call report(deck, err, g%source, line, '*'//trim(s%name) &
-            //': a second card for '//trim(s%index_name)//' = '//itoa(idx))
+         if (seen(idx)) then
+            call report(deck, err, g%source, line, '*'//trim(s%name)//', '//trim(s%index_name) &
+               //' (columns 1-2): a second card for '//trim(s%index_name)//' = '//itoa(idx)//'; the first is at line ' &
+               //itoa(first_line(idx)))
+         else
+            first_line(idx) = line
+         end if
          seen(idx) = .true.
       end do
       if (.not. s%all_rows) return
       n_unreadable = count(g%rejected_index(1:g%n_rejected) < 1)
       if (count(.not. seen) <= n_unreadable) return
+      ! the rows missing, in one message
+      missing = ''
+      n_missing = 0
       do idx = 1, s%max_index
-         if (.not. seen(idx)) call report(deck, err, g%source, g%line, '*'//trim(s%name) &
-            //': no card for '//trim(s%index_name)//' = '//itoa(idx)//' (one card for each of ' &
-            //'1 to '//itoa(s%max_index)//' is required)')
+         if (.not. seen(idx)) call add_to_list(missing, n_missing, itoa(idx))
       end do
+      call report(deck, err, g%source, g%line, '*'//trim(s%name)//', '//trim(s%index_name) &
+         //' (columns 1-2): '//trim(merge('no card  ', 'no cards ', n_missing == 1))//' for '//trim(s%index_name) &
+         //' = '//missing//' (one card for each of 1 to '//itoa(s%max_index)//' is required)')
    end subroutine check_rows
 
    !> A single card holding only a text field that may be blank (*TITLE):
@@ -291,12 +340,13 @@ contains
 
    !> A card holds printable ASCII without tabs in at most 80 columns. A
    !! comment card ($ in column 1) may also hold UTF-8 text; its columns are
-   !! counted in characters.
-   logical function card_is_clean(deck, err, src, line, text) result(ok)
+   !! counted in characters. A problem is reported after `place` (the
+   !! group and card number of a data card, '' for other lines).
+   logical function card_is_clean(deck, err, src, line, text, place) result(ok)
       type(deck_t), intent(inout) :: deck
       type(error_t), intent(inout) :: err
       integer, intent(in) :: src, line
-      character(len=*), intent(in) :: text
+      character(len=*), intent(in) :: text, place
       integer :: i, c, column, n_bytes, code_point, width
       logical :: comment
 
@@ -310,26 +360,26 @@ contains
          c = iachar(text(i:i))
          n_bytes = 1
          if (c == 9) then
-            call report(deck, err, src, line, 'tab character in column '//itoa(column) &
+            call report(deck, err, src, line, place//'tab character in column '//itoa(column) &
                //'; cards have fixed columns, use spaces')
             return
          else if (c < 32 .or. c == 127) then
-            call report(deck, err, src, line, 'control character (code '//itoa(c)//') in column ' &
+            call report(deck, err, src, line, place//'control character (code '//itoa(c)//') in column ' &
                //itoa(column)//'; is this a text deck?')
             return
          else if (c > 127) then
             call utf8_character(text(i:), n_bytes, code_point)
             if (n_bytes == 0) then
-               call report(deck, err, src, line, 'byte '//itoa(c)//' in column '//itoa(column) &
+               call report(deck, err, src, line, place//'byte '//itoa(c)//' in column '//itoa(column) &
                   //' is not part of a UTF-8 character (nor printable ASCII); is this a text deck?')
                return
             else if (.not. comment) then
-               call report(deck, err, src, line, 'non-ASCII character "'//text(i:i + n_bytes - 1) &
+               call report(deck, err, src, line, place//'non-ASCII character "'//text(i:i + n_bytes - 1) &
                   //'" in column '//itoa(column)//'; only comment cards ($ in column 1) may hold ' &
                   //'non-ASCII text, data and header cards are ASCII')
                return
             else if (code_point < 160) then
-               call report(deck, err, src, line, 'control character (U+00'//hex_byte(code_point) &
+               call report(deck, err, src, line, place//'control character (U+00'//hex_byte(code_point) &
                   //') in column '//itoa(column)//'; is this a text deck?')
                return
             end if
@@ -343,12 +393,57 @@ contains
          if (c < 128 .or. c >= 192) width = width + 1
       end do
       if (width > card_width) then
-         call report(deck, err, src, line, 'card image of '//itoa(width) &
+         call report(deck, err, src, line, place//'card image of '//itoa(width) &
             //' columns; a card has at most '//itoa(card_width))
          return
       end if
       ok = .true.
    end function card_is_clean
+
+   !> Where a line refused for its characters is, for its message: the
+   !! group and number it would have as a data card of the group being read
+   !! ("*TIME card 2: "), a header card (of its group when its name can be
+   !! read) or a comment card; nothing for a line outside any group.
+   function bad_card_place(deck, current, text) result(place)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: current
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: place
+      integer :: gid
+      place = ''
+      if (len(text) == 0) return
+      if (text(1:1) == '$') then
+         place = 'comment card: '
+      else if (text(1:1) == '*') then
+         gid = group_by_name(deck, upper(leading_name(text(2:))))
+         place = 'header card: '
+         if (gid > 0) place = 'header card of *'//trim(deck%spec(gid)%name)//': '
+      else if (current > 0) then
+         place = '*'//trim(deck%spec(current)%name)//' card '//itoa(deck%group(current)%n_written + 1)//': '
+      end if
+   end function bad_card_place
+
+   !> A data card refused for its characters: counted as written and as
+   !! rejected, with its row index when columns 1-2 hold a valid one, so
+   !! that its group's checks do not also report it missing.
+   subroutine count_bad_card(g, s, line, text)
+      type(group_t), intent(inout) :: g
+      type(group_spec_t), intent(in) :: s
+      integer, intent(in) :: line
+      character(len=*), intent(in) :: text
+      character(len=index_last_col) :: columns
+      integer :: row
+      logical :: good
+      g%n_written = g%n_written + 1
+      if (g%n_written > s%max_cards) return
+      row = 0
+      if (s%layout == layout_indexed .or. s%layout == layout_multi) then
+         columns = text
+         call read_int(trim(adjustl(printable(columns))), row, good)
+         if (.not. good .or. row < 1 .or. row > s%max_index) row = 0
+      end if
+      call note_rejected(g, line, row)
+   end subroutine count_bad_card
 
    !> The UTF-8 character starting s (whose first byte is not ASCII): its
    !! length in bytes and its code point; n_bytes = 0 when s does not start
@@ -422,13 +517,17 @@ contains
       c = text
       card%source = src
       card%line = line
+      card%group = gid
       associate (s => deck%spec(gid), g => deck%group(gid))
          ! cards are numbered as written, bad ones included
          g%n_written = g%n_written + 1
+         card%number = g%n_written
          where = '*'//trim(s%name)//' card '//itoa(g%n_written)
          if (g%n_written > s%max_cards) then
-            call report(deck, err, src, line, where//': too many cards; *'//trim(s%name) &
-               //' takes at most '//itoa(s%max_cards))
+            ! reported once, at the first card too many (docs/deck-format.md)
+            if (g%n_written == s%max_cards + 1) call report(deck, err, src, line, where//': too many cards; *' &
+               //trim(s%name)//' takes at most '//itoa(s%max_cards)//' (docs/deck-format.md): this card ' &
+               //'and every later card of the group are left out')
             return
          end if
          ok = .true.
@@ -697,6 +796,21 @@ contains
    ! --- lexical helpers ---------------------------------------------------
 
 
+   !> The letters and digits that start s after any blanks (a group name
+   !! followed by a character that is refused).
+   pure function leading_name(s) result(w)
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: w
+      integer :: i
+      w = adjustl(s)
+      do i = 1, len(w)
+         if (index('ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789', w(i:i)) == 0) then
+            w = w(1:i - 1)
+            return
+         end if
+      end do
+   end function leading_name
+
    pure function first_word(s) result(w)
       character(len=*), intent(in) :: s
       character(len=:), allocatable :: w
@@ -758,6 +872,20 @@ contains
    end function directory_of
 
    ! --- bookkeeping -------------------------------------------------------
+
+   !> The names of the deck's sources, for a problem of the whole deck:
+   !! "@default, mine.deck" ("deck" before any source).
+   function deck_names(deck) result(names)
+      type(deck_t), intent(in) :: deck
+      character(len=:), allocatable :: names
+      integer :: k
+      names = ''
+      do k = 1, size(deck%source_name)
+         if (k > 1) names = names//', '
+         names = names//deck%source_name(k)%s
+      end do
+      if (len(names) == 0) names = 'deck'
+   end function deck_names
 
    integer function group_by_name(deck, name)
       type(deck_t), intent(in) :: deck
@@ -887,7 +1015,7 @@ contains
       else if (src > 0) then
          loc = deck%source_name(src)%s//': '
       else
-         loc = 'deck: '
+         loc = deck_names(deck)//': '   ! (a problem of the whole deck: every file of it)
       end if
       call error_append(err, exit_deck, loc//message)
    end subroutine report

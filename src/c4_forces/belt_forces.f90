@@ -498,8 +498,8 @@ contains
       text = trim(this%title)//':'
       do k = 1, this%n_sections
          c = this%chain_of(k)
-         text = text//' '//trim(this%label(k))//' anchor ('//num(this%geom(k)%anchor(1))//', ' &
-                //num(this%geom(k)%anchor(2))//') in'
+         text = text//' '//trim(this%label(k))//' anchor ('//num(this%geom(k)%anchor(1), 7)//', ' &
+                //num(this%geom(k)%anchor(2), 7)//') in'
          if (this%chain(c)%body(this%position(k)) == 0) text = text//' (body rigid)'
          if (k < this%n_sections) text = text//';'
       end do

@@ -17,7 +17,7 @@
 !! v_T), the power of the force at the surface's material point.
 module contact_forces
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-   use kinds, only: wp, g_std
+   use kinds, only: wp, g_std, deg
    use strings, only: itoa, num
    use text_io, only: string_t, append_string
    use model, only: body_section_t, n_dof, arc_name
@@ -29,7 +29,7 @@ module contact_forces
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
-      arc_segment, front_side, surface_flat, surface_line, surface_circle, surface_point
+      arc_segment, front_side, shin_side_now, surface_flat, surface_line, surface_circle, surface_point
    use recurrent_loading, only: recurrent_law_t
    use series_chain, only: series_chain_t, chain_split_t, chain_split, split_ok, chain_split_text, chain_new, &
       chain_accept, chain_energies, chain_n_aux, chain_set_initial, chain_relaxing, max_chain
@@ -54,7 +54,8 @@ module contact_forces
       !! cap; the steering column gated, not moving until its padding has
       !! bottomed out (C.4.f, D-C19; its gate the padding's force at the cap)
       type(series_chain_t) :: chain
-      !> D-C16a: the point came at a flat surface from behind its line (memory)
+      !> D-C16a: the point came at a flat surface from behind its line; D-C16b:
+      !! the panel's edge came at the shin from behind the shank's axis (memory)
       logical :: behind = .false.
       !> aux: the chain's (its elements' rate-term work and states), then the
       !! friction's work and the supplied work
@@ -369,23 +370,25 @@ contains
    end function pair_far
 
    !> pair_far's bound (far), and where it is far what front_side would
-   !! answer at st (D-C16a; accept's short path needs it): 0 for a surface
-   !! that is not flat, +1 where the flat surface is far because the point
-   !! is clearly in front of its line, -1 where it is clearly behind it
-   !! (and beyond its extent, or it came from behind), side_unknown where
-   !! the bound does not decide it (the shin's capsule against a flat piece,
-   !! broken glass). The bound's margins decide the side: for a flat
+   !! answer at st (D-C16a, D-C16b; accept's short path needs it): 0 for a
+   !! surface that is neither flat nor the shin's edge, +1 where the flat
+   !! surface is far because the point is clearly in front of its line, -1
+   !! where it is clearly behind it (and at least r beyond its extent, or it
+   !! came from behind), side_unknown where the bound does not decide it
+   !! (broken glass). The bound's margins decide the side: for a flat
    !! surface far with h > reach = r + rho' + m (rho' for the arcs 2, 3
    !! whose centre is within rho' of the joint, else 0) and h > rho' + m
-   !! (which follows for r >= 0), the centre's own h is above r and above
-   !! 0, so front_side's first test holds and gives +1; with h < -reach
-   !! and h < -(rho' + m) the centre is behind the line
-   !! (h < 0: whichever of its tests front_side takes gives -1), beyond the
-   !! extent (T below -(rho' + m) or above D + rho' + m, so the centre's T
-   !! outside [0, D], and front_side's first test holds: -1) or come from
+   !! (which follows for r >= 0), the centre's own h is above r, so
+   !! front_side's first test holds and gives +1; with h < -reach and h <
+   !! -(rho' + m) the centre is behind the line (h < 0) and either beyond the
+   !! extent by more than reach (T below -reach or above D + reach, so the
+   !! centre's T at least r beyond it: front_side gives -1) or come from
    !! behind (front_side gives -1 or 0, and 0 keeps the side that is
-   !! behind): the memory becomes, or stays, behind. The margin m, 1e-9 of
-   !! the coordinates' size, covers the roundings, as for far.
+   !! behind): the memory becomes, or stays, behind. For the shin, far means
+   !! off the capsule, where front_side gives the side of the shank's axis
+   !! the edge is on: decided where the edge is more than the margin from
+   !! the axis. The margin m, 1e-9 of the coordinates' size, covers the
+   !! roundings, as for far.
    pure subroutine far_check(this, st, far, side)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
@@ -424,8 +427,13 @@ contains
          d = d - lam*v
          reach = max(this%body%r_arc(7), this%body%r_arc(11)) + m
          far = dot_product(d, d) > reach*reach
-         ! (front_side reads the knee's circle, which this bound does not place)
-         if (this%surface%kind /= surface_flat) side = 0
+         ! off the capsule: front_side's side of the shank's axis the edge is
+         ! on (D-C16b), where the margin decides it
+         if (far) then
+            h = dot_product(this%surface%s - jt, [-et(2), et(1)])
+            if (h > m) side = 1
+            if (h < -m) side = -1
+         end if
          return
       case default                    ! hip, shoulder: the joint itself
          p = jt
@@ -449,7 +457,9 @@ contains
          end if
          if (.not. abs(h) > reach) return
          tt = dot_product(this%surface%s - p, this%tk)
-         far = this%behind .or. tt < -(ext + m) .or. tt > this%surface%d + ext + m
+         ! come from behind: the ends, on the line; else the solid met from
+         ! inside (D-C16b), whose ends' walls reach r beyond them
+         far = this%behind .or. tt < -reach .or. tt > this%surface%d + reach
          if (far .and. h < -(ext + m)) side = -1   ! clearly behind (D-C16a)
       end select
    end subroutine far_check
@@ -516,21 +526,33 @@ contains
    !! when it went from below FSW at the last accepted state to beyond it at
    !! st by more than locate_tol: the fraction of the step, by the secant of
    !! P through the two states, aimed at FSW (1 + locate_tol/2) so that the
-   !! glass breaks at the state the driver steps to. 0 otherwise.
+   !! glass breaks at the state the driver steps to. short_of_jump (>= 1)
+   !! when st falls short of FSW (the driver, searching for the break, keeps
+   !! it below; issue 14: without it a tiny FSW, whose secant lands before
+   !! the head even touches, was located a 5e-14 s step at a time, for
+   !! ever). 0 otherwise: nothing to locate, or st within locate_tol above
+   !! FSW, where the glass breaks.
    pure real(wp) function pair_locate(this, st, extra, aux) result(theta)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), parameter :: short_of_jump = 2.0_wp
       type(pair_state_t) :: ps
       associate (u1 => size(extra) + size(aux))
       end associate
       theta = 0.0_wp
       if (.not. this%fsw > 0.0_wp .or. this%shattered .or. .not. this%p_accepted < this%fsw) return
+      theta = short_of_jump
       if (this%exit_far) then
          if (pair_far(this, st)) return
       end if
       call pair_eval(this, st, aux, ps)
-      if (ps%split%status /= split_ok) return
+      if (ps%split%status /= split_ok) then
+         theta = 0.0_wp
+         return
+      end if
+      if (ps%split%force < this%fsw) return
+      theta = 0.0_wp
       if (.not. ps%split%force > this%fsw*(1.0_wp + locate_tol)) return
       theta = (this%fsw*(1.0_wp + 0.5_wp*locate_tol) - this%p_accepted)/(ps%split%force - this%p_accepted)
       theta = min(max(theta, 0.0_wp), 1.0_wp)
@@ -538,19 +560,44 @@ contains
 
    !> D-C14 (7): a pair that starts deep in its surface - more than half its
    !! arc's radius, or loaded beyond the body's weight - is most likely a
-   !! misplaced surface (a sign of PSI, a point given at the wrong end).
+   !! misplaced surface (a sign of PSI, a point given at the wrong end). So
+   !! is one whose body point starts on a flat surface's far side, its
+   !! centre behind the line within the surface's extent (issue 14: the seat
+   !! back 2-8 in ahead of the hip, through the pelvis, started the hip
+   !! "behind" it, D-C16a, with no force and no warning): every surface
+   !! faces its occupant, and what lies behind its line over its extent is
+   !! the interior's structure (seat, dashboard, floor, the glass and the
+   !! outside), so nothing of the occupant starts there. Beyond the extent
+   !! or in the rim's opening a point behind the line is legitimately
+   !! behind (the passenger's hand in his lap, below the upper panel's line
+   !! far behind its rear end), as is one that goes there during the run
+   !! (docs/contacts.md D-C14 (7)).
    function pair_initial_notes(this, st, extra, aux) result(notes)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(string_t), allocatable :: notes(:)
       type(pair_state_t) :: ps
-      real(wp) :: weight
+      real(wp) :: weight, h, tt
       associate (u1 => size(extra) + size(aux))
       end associate
       allocate (notes(0))
       call pair_eval(this, st, aux, ps)
       if (ps%split%status /= split_ok) return
+      if (this%i /= 9 .and. this%surface%kind == surface_flat) then
+         h = dot_product(ps%f%p - this%surface%s, this%nk)
+         tt = dot_product(this%surface%s - ps%f%p, this%tk)
+         if (h < 0.0_wp .and. tt >= 0.0_wp .and. tt <= this%surface%d .and. .not. (this%surface%t_open(2) > &
+             this%surface%t_open(1) .and. tt > this%surface%t_open(1) .and. tt < this%surface%t_open(2))) then
+            call append_string(notes, '*SURFACES surface '//itoa(this%k)//' ('//trim(surface_name(this%k))//')' &
+               //placed_by(this%k)//': body point '//itoa(this%i)//' ('//trim(arc_name(this%i))//') starts on its ' &
+               //'far side, its centre '//cents(-h)//' in behind the line (the surface faces the occupant, PSI = ' &
+               //cents(this%surface%psi/deg)//' deg), within its extent (T = '//cents(tt)//' of D = ' &
+               //cents(this%surface%d)//' in): the surface passes through the body; is it where it should be? ' &
+               //'(docs/contacts.md D-C14)')
+            return
+         end if
+      end if
       weight = g_std*sum(this%body%mass)
       ! (an arc of radius 0, a point, is judged by its force alone)
       if ((ps%f%r > 0.0_wp .and. ps%cs%delta > 0.5_wp*ps%f%r) .or. ps%split%force > weight) &
@@ -730,10 +777,14 @@ contains
       none = 0.0_wp
       call chain_set_initial(this%chain, 0.0_wp)
       call pair_eval(this, st, none, ps)
-      if (this%surface%kind == surface_flat) then
+      if (this%i == 9) then
+         ! the shin: the side of the shank's axis the panel's edge starts on (D-C16b)
+         call set_behind(this, shin_side_now(ps%f, this%surface%s) < 0)
+      else if (this%surface%kind == surface_flat) then
          call set_behind(this, dot_product(ps%f%p - this%surface%s, this%nk) < 0.0_wp)
-         if (this%behind) call pair_eval(this, st, none, ps)      ! (its penetration with that side)
       end if
+      ! (its penetration with that side: where the chain's states start)
+      if (this%behind) call pair_eval(this, st, none, ps)
       if (ps%split%status /= split_ok .or. .not. ps%cs%delta > 0.0_wp) return
       call chain_set_initial(this%chain, ps%cs%delta)
    end subroutine pair_set_initial
@@ -805,7 +856,7 @@ contains
    function pair_describe(this) result(text)
       class(contact_pair_effect_t), intent(in) :: this
       character(len=:), allocatable :: text
-      text = trim(this%title)//': surface at ('//num(this%surface%s(1))//', '//num(this%surface%s(2))//') in'
+      text = trim(this%title)//': surface at ('//num(this%surface%s(1), 7)//', '//num(this%surface%s(2), 7)//') in'
    end function pair_describe
 
    !> Why the last evaluation at this state failed ('' when it did not):

@@ -9,17 +9,17 @@
 !! F2-1, f.3 with F3-1, F3-2, F24-1). All in the interior frame of C.4.
 !! Pure functions, no memory: the contact effects are built on them.
 module contact_geometry
-   use kinds, only: wp
+   use kinds, only: wp, pi
    use model, only: body_section_t, n_seg, n_dof
    use body_kinematics, only: point_state_t, joint_state, to_interior, joint_position_velocity
    implicit none
    private
 
    public :: contact_feature_t, contact_surface_t, contact_state_t
-   public :: body_feature, shin_alpha0, contact_check, arc_segment, front_side, e
+   public :: body_feature, shin_alpha0, contact_check, arc_segment, front_side, shin_side_now, e
    public :: surface_flat, surface_line, surface_circle, surface_point
    public :: region_none, region_face, region_corner, region_circle, region_shin_line, region_shin_knee, &
-      region_shin_ankle
+      region_shin_ankle, region_end_wall, region_shin_far
 
    !> The segment that carries each arc i = 1..10 (D-C1, A-C2, F3-1).
    integer, parameter :: arc_segment(10) = [1, 3, 3, 4, 5, 5, 7, 8, 8, 6]
@@ -29,6 +29,12 @@ module contact_geometry
    integer, parameter :: surface_flat = 1, surface_line = 2, surface_circle = 3, surface_point = 4
    integer, parameter :: region_none = 0, region_face = 1, region_corner = 2, region_circle = 3, &
       region_shin_line = 4, region_shin_knee = 5, region_shin_ankle = 6
+   !> D-C16b: the end of a flat surface's solid met from inside it (a point
+   !! come through the face, its centre behind the line); the shin met by
+   !! an edge that crossed its axis (the far half, its faces: the near
+   !! tangent, the planes across the axis through the knee's top and the
+   !! ankle's bottom)
+   integer, parameter :: region_end_wall = 7, region_shin_far = 8
 
    !> A body feature (interior frame): an arc of radius r centred at the
    !! material point p of segment seg, or (i = 9) the shin capsule.
@@ -142,7 +148,9 @@ contains
    !! acts between body feature f and surface sf, and its state. The region
    !! is chosen so that delta and its gradient are continuous everywhere.
    !! behind (the pair's memory): the point came at the surface from behind
-   !! its line, where a flat surface meets it with its ends only (D-C16a).
+   !! its line, where a flat surface meets it with its ends only (D-C16a);
+   !! for the shin, the panel's edge came at it from behind the shank's
+   !! axis (D-C16b). Absent: the side the point (the edge) is on now.
    !! e_psi: e(sf%psi) when at hand (a pair's, taken once: the same bits).
    pure function contact_check(f, sf, behind, e_psi) result(cs)
       type(contact_feature_t), intent(in) :: f
@@ -150,15 +158,22 @@ contains
       logical, intent(in), optional :: behind
       real(wp), intent(in), optional :: e_psi(2)
       type(contact_state_t) :: cs
-      real(wp) :: tk(2), nk(2), tt, te
+      real(wp) :: tk(2), nk(2), tt, te, h
+      logical :: from_behind
+      from_behind = .false.
+      if (present(behind)) from_behind = behind
       if (f%arc == 9) then
-         cs = shin_check(f, sf%s)
+         if (present(behind)) then
+            cs = shin_check(f, sf%s, merge(-1, 1, from_behind))
+         else
+            cs = shin_check(f, sf%s, 0)
+         end if
          return
       end if
       select case (sf%kind)
       case (surface_circle)        ! the head rest (F24-1, F4-1)
          call round(f%p - sf%s, 0.5_wp*sf%d, region_circle, cs)
-         cs%pos = 0.0_wp
+         cs%pos = head_rest_position(sf, cs%n)
       case (surface_point)
          call round(f%p - sf%s, 0.0_wp, region_corner, cs)
          cs%pos = 0.0_wp
@@ -170,27 +185,33 @@ contains
          end if
          nk = [-tk(2), tk(1)]
          tt = dot_product(sf%s - f%p, tk)                ! f.2's T
+         h = dot_product(f%p - sf%s, nk)
          te = -1.0_wp
-         if (sf%kind == surface_flat) then
-            if (tt < 0.0_wp) then
-               te = 0.0_wp
-            else if (tt > sf%d) then
-               te = sf%d
-            else if (in_opening(sf, tt)) then
-               te = merge(sf%t_open(1), sf%t_open(2), tt - sf%t_open(1) <= sf%t_open(2) - tt)
+         if (sf%kind == surface_flat .and. h < 0.0_wp .and. .not. from_behind) then
+            ! D-C16b: come from the front, its centre behind the line: the
+            ! surface is the face of a solid (its extent, or each piece of the
+            ! rim beside the opening), met from inside
+            call solid_from_inside(cs)
+         else
+            if (sf%kind == surface_flat) then
+               if (tt < 0.0_wp) then
+                  te = 0.0_wp
+               else if (tt > sf%d) then
+                  te = sf%d
+               else if (in_opening(sf, tt)) then
+                  te = merge(sf%t_open(1), sf%t_open(2), tt - sf%t_open(1) <= sf%t_open(2) - tt)
+               end if
+               if (te < 0.0_wp .and. from_behind) te = nearest_end(sf, tt)   ! from behind: the nearest free end
             end if
-            if (te < 0.0_wp .and. present(behind)) then
-               if (behind) te = nearest_end(sf, tt)      ! from behind: the nearest free end
+            if (te >= 0.0_wp) then   ! a corner at the end (or the opening's edge) nearest (D-C16)
+               call round(f%p - (sf%s - te*tk), 0.0_wp, region_corner, cs)
+               cs%pos = te
+            else                      ! the face: delta = r - (P - S).n_k (f.2)
+               cs%region = region_face
+               cs%n = nk
+               cs%delta = f%r - h
+               cs%pos = tt
             end if
-         end if
-         if (te >= 0.0_wp) then   ! a corner at the end (or the opening's edge) nearest (D-C16)
-            call round(f%p - (sf%s - te*tk), 0.0_wp, region_corner, cs)
-            cs%pos = te
-         else                      ! the face: delta = r - (P - S).n_k (f.2)
-            cs%region = region_face
-            cs%n = nk
-            cs%delta = f%r - dot_product(f%p - sf%s, nk)
-            cs%pos = tt
          end if
       end select
       cs%t = [cs%n(2), -cs%n(1)]
@@ -213,20 +234,86 @@ contains
             st%n = [0.0_wp, 1.0_wp]          ! (coincident centres: any direction)
          end if
       end subroutine round
+
+      !> D-C16b: the circle's penetration of the solid behind a flat piece
+      !! [a, b] of the surface, its centre inside or beyond the piece's ends
+      !! and behind its line (h < 0): the least of the depths to leave it
+      !! through the face (r - h, along n_k) or past either end (r - (a - T),
+      !! along +t_k; r - (T - b), along -t_k), the larger of the rim's two
+      !! pieces. r - the signed distance of the centre to the solid: equal to
+      !! the face's and the corners' at h = 0, so continuous there, and never
+      !! along -n_k (the surface never pulls the point in).
+      pure subroutine solid_from_inside(st)
+         type(contact_state_t), intent(out) :: st
+         type(contact_state_t) :: other
+         if (sf%t_open(2) > sf%t_open(1)) then
+            call piece(0.0_wp, sf%t_open(1), st)
+            call piece(sf%t_open(2), sf%d, other)
+            if (other%delta > st%delta) st = other
+         else
+            call piece(0.0_wp, sf%d, st)
+         end if
+      end subroutine solid_from_inside
+
+      pure subroutine piece(a, b, st)
+         real(wp), intent(in) :: a, b
+         type(contact_state_t), intent(out) :: st
+         st%region = region_face
+         st%n = nk
+         st%delta = f%r - h
+         st%pos = tt
+         if (f%r - (a - tt) < st%delta) then
+            st%region = region_end_wall
+            st%n = tk
+            st%delta = f%r - (a - tt)
+            st%pos = a
+         end if
+         if (f%r - (tt - b) < st%delta) then
+            st%region = region_end_wall
+            st%n = -tk
+            st%delta = f%r - (tt - b)
+            st%pos = b
+         end if
+      end subroutine piece
    end function contact_check
 
-   !> D-C16a: which side of a flat surface's line a body point is on, for
-   !! the pair's memory, or 0 where it is not decided: a point over the
-   !! surface's extent and within r of its line keeps the side it came from.
-   !! Deciding only where face and ends give the same (no contact or the
-   !! ends' region) makes the switch continuous.
+   !> D-C3: where on the head rest (k = 1) the head acts, T = 1/2 D_1 times
+   !! the angle from the direction the rest faces, e(psi_1 + 90 deg), to the
+   !! contact's normal n, counter-clockwise positive: a signed arc length
+   !! along the rest's face, increasing the way a flat surface's T does
+   !! (towards -e(psi_1) from the facing point).
+   pure real(wp) function head_rest_position(sf, n) result(pos)
+      type(contact_surface_t), intent(in) :: sf
+      real(wp), intent(in) :: n(2)
+      real(wp) :: facing(2)
+      facing = e(sf%psi + 0.5_wp*pi)
+      pos = 0.5_wp*sf%d*atan2(facing(1)*n(2) - facing(2)*n(1), dot_product(facing, n))
+   end function head_rest_position
+
+   !> D-C16a, D-C16b: which side of a flat surface's line a body point is
+   !! on, for the pair's memory, or 0 where it is not decided: decided only
+   !! where the two sides' rules give the same (so the switch is continuous
+   !! and needs no restart) - at least r in front of the line, where nothing
+   !! touches either way; beyond the surface's ends (or in the rim's
+   !! opening) in front of the line, where both meet the end's corner; and
+   !! there behind the line only once at least r beyond the end, where the
+   !! solid met from inside (D-C16b) no longer touches. Elsewhere the point
+   !! keeps the side it came from. The shin (D-C16b): the side of the
+   !! shank's axis the panel's edge is on, decided where the edge is off the
+   !! capsule (no contact either way).
    !! e_psi: e(sf%psi) when at hand, as for contact_check.
    pure integer function front_side(f, sf, e_psi) result(side)
       type(contact_feature_t), intent(in) :: f
       type(contact_surface_t), intent(in) :: sf
       real(wp), intent(in), optional :: e_psi(2)
-      real(wp) :: tk(2), nk(2), tt, h
+      type(contact_state_t) :: cs
+      real(wp) :: tk(2), nk(2), tt, h, beyond
       side = 0
+      if (f%arc == 9) then
+         cs = shin_check(f, sf%s, 0)
+         if (.not. cs%delta > 0.0_wp) side = shin_side_now(f, sf%s)
+         return
+      end if
       if (sf%kind /= surface_flat) return
       if (present(e_psi)) then
          tk = e_psi
@@ -236,12 +323,22 @@ contains
       nk = [-tk(2), tk(1)]
       tt = dot_product(sf%s - f%p, tk)
       h = dot_product(f%p - sf%s, nk)
-      ! decided where only the ends act (beyond them, or in the rim's opening)
-      ! or where nothing touches (r in front): face and ends agree there
-      if (tt < 0.0_wp .or. tt > sf%d .or. h >= f%r) then
-         side = merge(1, -1, h >= 0.0_wp)
-      else if (in_opening(sf, tt)) then
-         side = merge(1, -1, h >= 0.0_wp)
+      if (h >= f%r) then
+         side = 1
+      else if (tt < 0.0_wp .or. tt > sf%d .or. in_opening(sf, tt)) then
+         ! how far beyond the nearest end (or edge of the opening)
+         if (tt < 0.0_wp) then
+            beyond = -tt
+         else if (tt > sf%d) then
+            beyond = tt - sf%d
+         else
+            beyond = min(tt - sf%t_open(1), sf%t_open(2) - tt)
+         end if
+         if (h >= 0.0_wp) then
+            side = 1
+         else if (beyond >= f%r) then
+            side = -1
+         end if
       end if
    end function front_side
 
@@ -257,26 +354,52 @@ contains
       end if
    end function nearest_end
 
-   !> The shin capsule against the lower panel's edge ed (D-C2): the line
-   !! part (F2-2, F2-3) between the tangent points, the knee or the ankle
-   !! circle beyond them. The normal is the edge's push on the body.
-   pure function shin_check(f, ed) result(cs)
+   !> The side of the shank's axis the panel's edge ed is on: +1 in front
+   !! (the side of e(theta_8 + 90 deg), on the axis too), -1 behind.
+   pure integer function shin_side_now(f, ed) result(side)
       type(contact_feature_t), intent(in) :: f
       real(wp), intent(in) :: ed(2)
-      type(contact_state_t) :: cs
-      real(wp) :: u(2), m(2), tt, t_end, v(2), d, axis_n(2)
-      ! the capsule's side the edge is on: the front tangent (F2-2, F2-3) or,
-      ! for an edge behind the shank's axis, the back one (its mirror), so
-      ! the shin is the convex hull of its two circles on both sides (D-C2;
-      ! review of issue 7). They agree on the axis.
+      real(wp) :: axis_n(2)
       axis_n = [-sin(f%theta), cos(f%theta)]
-      if (dot_product(ed - f%joint, axis_n) >= 0.0_wp) then
-         u = e(f%theta - f%alpha0)
-         m = [-u(2), u(1)]
-      else
-         u = e(f%theta + f%alpha0)
-         m = [u(2), -u(1)]
-      end if
+      side = merge(1, -1, dot_product(ed - f%joint, axis_n) >= 0.0_wp)
+   end function shin_side_now
+
+   !> The shin capsule against the lower panel's edge ed (D-C2). side: the
+   !! side of the shank's axis the edge came from (the pair's memory,
+   !! D-C16b; 0: the side it is on now). On that side, and wherever the
+   !! edge is off the capsule, the capsule (shin_capsule). An edge that came
+   !! from one side and has crossed the axis, still inside the capsule,
+   !! meets the far half as a solid met from inside (shin_far): it keeps
+   !! pushing the shin the way the edge came, where the capsule's other
+   !! tangent would pull it onto the edge (issue 14: 2,400 lb reversed in
+   !! one step). Out through the other side, the edge has gone through the
+   !! shin and lets go.
+   pure function shin_check(f, ed, side) result(cs)
+      type(contact_feature_t), intent(in) :: f
+      real(wp), intent(in) :: ed(2)
+      integer, intent(in) :: side
+      type(contact_state_t) :: cs
+      integer :: side_now
+      side_now = shin_side_now(f, ed)
+      cs = shin_capsule(f, ed, side_now)
+      if (side == 0 .or. side == side_now .or. .not. cs%delta > 0.0_wp) return
+      cs = shin_far(f, ed, side)
+   end function shin_check
+
+   !> The capsule (D-C2) against the edge ed on its side side_now of the
+   !! shank's axis: the line part (F2-2, F2-3) between the tangent points,
+   !! the knee or the ankle circle beyond them. The normal is the edge's
+   !! push on the body. The front tangent (F2-2, F2-3) or, for an edge
+   !! behind the axis, the back one (its mirror), so the shin is the convex
+   !! hull of its two circles on both sides (review of issue 7). They agree
+   !! on the axis.
+   pure function shin_capsule(f, ed, side_now) result(cs)
+      type(contact_feature_t), intent(in) :: f
+      real(wp), intent(in) :: ed(2)
+      integer, intent(in) :: side_now
+      type(contact_state_t) :: cs
+      real(wp) :: u(2), m(2), tt, t_end, v(2), d
+      call shin_frame(f, side_now, u, m)
       tt = dot_product(ed - f%joint, u)                  ! T_9 (F2-3)
       t_end = norm2(f%ankle - f%joint)*cos(f%alpha0)
       if (tt >= 0.0_wp .and. tt <= t_end) then
@@ -305,7 +428,62 @@ contains
       cs%pos = tt
       cs%t = [cs%n(2), -cs%n(1)]
       call rates(f, cs)
-   end function shin_check
+   end function shin_capsule
+
+   !> The tangent of the shin on side side of the shank's axis (+1: the
+   !! front, F2-2's; -1: the back, its mirror about the axis): its direction
+   !! u from the knee towards the ankle and its outward normal m.
+   pure subroutine shin_frame(f, side, u, m)
+      type(contact_feature_t), intent(in) :: f
+      integer, intent(in) :: side
+      real(wp), intent(out) :: u(2), m(2)
+      if (side >= 0) then
+         u = e(f%theta - f%alpha0)
+         m = [-u(2), u(1)]
+      else
+         u = e(f%theta + f%alpha0)
+         m = [u(2), -u(1)]
+      end if
+   end subroutine shin_frame
+
+   !> D-C16b: the edge ed, come from side side of the shank's axis, has
+   !! crossed it inside the capsule. The shin's far half is then met as a
+   !! solid from inside, bounded by the near tangent, extended, and the
+   !! planes across the axis through the knee circle's top and the ankle
+   !! circle's bottom: delta is the least depth to leave it through one of
+   !! them (r_7 - (E - K).m along -m; r_7 + (E - K).a along a = e(theta_8);
+   !! r_A - (E - A).a along -a), each a plane of the shank, so C = E - delta
+   !! n is a material point of it with delta' = -V_C.n. On the axis these
+   !! equal the capsule's (its line part, knee and ankle circles), so the
+   !! force is continuous as the edge crosses it; none has a component
+   !! towards the side the edge came from.
+   pure function shin_far(f, ed, side) result(cs)
+      type(contact_feature_t), intent(in) :: f
+      real(wp), intent(in) :: ed(2)
+      integer, intent(in) :: side
+      type(contact_state_t) :: cs
+      real(wp) :: u(2), m(2), a(2), d(2), depth
+      call shin_frame(f, side, u, m)
+      a = e(f%theta)
+      d = ed - f%joint
+      cs%region = region_shin_far
+      cs%delta = f%r - dot_product(d, m)                 ! through the near tangent
+      cs%n = -m
+      depth = f%r + dot_product(d, a)                    ! over the knee's top
+      if (depth < cs%delta) then
+         cs%delta = depth
+         cs%n = a
+      end if
+      depth = f%r_ankle - dot_product(ed - f%ankle, a)   ! under the ankle's bottom
+      if (depth < cs%delta) then
+         cs%delta = depth
+         cs%n = -a
+      end if
+      cs%c = ed - cs%delta*cs%n
+      cs%pos = dot_product(d, u)
+      cs%t = [cs%n(2), -cs%n(1)]
+      call rates(f, cs)
+   end function shin_far
 
    !> delta' = -V_C.n and v_T = V_C.t, V_C the interior velocity of the
    !! body's material point at C (the surface is fixed in the interior).

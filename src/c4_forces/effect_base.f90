@@ -42,8 +42,8 @@ module effect_base
    public :: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    public :: event_dislocation_low, event_dislocation_high, event_kind_name, max_events_per_step
    public :: event_tension, event_compression, event_shear, event_undesired, event_shatter, event_cut
-   public :: event_ramp_widened
-   public :: point_force_t, point_force_list_t, point_force_add
+   public :: event_ramp_widened, n_event_kinds
+   public :: point_force_t, point_force_list_t, point_force_add, point_force_reserve
    public :: proximity_guard_t, guard_none, guard_ball, guard_half_plane, guard_slab, guard_capsule, guard_always
    public :: guard_rel_margin, guard_big, guard_holds
 
@@ -64,7 +64,10 @@ module effect_base
    integer, parameter :: event_shatter = 7, event_cut = 8
    !> A contact's friction ramp widened for the fixed step (D-C18b; a note, not an injury)
    integer, parameter :: event_ramp_widened = 9
-   character(len=28), parameter :: event_kind_name(9) = [character(len=28) :: &
+   !> The number of event kinds: every kind from 1 to it has a name here and
+   !! a description in c6_output/event_text (test_every_event_kind_described)
+   integer, parameter :: n_event_kinds = 9
+   character(len=28), parameter :: event_kind_name(n_event_kinds) = [character(len=28) :: &
       'dislocation (below limit)', 'dislocation (above limit)', 'tension dislocation', 'compression fracture', &
       'shear fracture', 'undesired contact', 'windshield shattered', 'cut on broken glass', 'friction ramp widened']
    !> Events one effect may report at one accepted step.
@@ -160,7 +163,9 @@ module effect_base
    end type point_force_t
 
    !> The point forces of an occupant's effects at one state (f(1:n); it
-   !! grows as forces are added).
+   !! grows as forces are added, doubling, and keeps its storage when it is
+   !! emptied (n = 0) and filled again: a list reserved before the step loop
+   !! allocates nothing in it, docs/architecture.md).
    type :: point_force_list_t
       integer :: n = 0
       type(point_force_t), allocatable :: f(:)
@@ -278,6 +283,19 @@ contains
       end select
    end function guard_holds
 
+   !> Room for at least n forces in the list (its forces kept).
+   pure subroutine point_force_reserve(list, n)
+      type(point_force_list_t), intent(inout) :: list
+      integer, intent(in) :: n
+      type(point_force_t), allocatable :: longer(:)
+      if (allocated(list%f)) then
+         if (size(list%f) >= n) return
+      end if
+      allocate (longer(max(n, 16)))
+      if (list%n > 0) longer(1:list%n) = list%f(1:list%n)
+      call move_alloc(longer, list%f)
+   end subroutine point_force_reserve
+
    !> Append a force to a list.
    pure subroutine point_force_add(list, segment, point, force, across_bone, arc, surface, normal_force)
       type(point_force_list_t), intent(inout) :: list
@@ -286,12 +304,10 @@ contains
       logical, intent(in), optional :: across_bone
       integer, intent(in), optional :: arc, surface
       real(wp), intent(in), optional :: normal_force
-      type(point_force_t), allocatable :: longer(:)
-      if (.not. allocated(list%f)) allocate (list%f(16))
-      if (list%n == size(list%f)) then
-         allocate (longer(2*size(list%f)))
-         longer(1:list%n) = list%f(1:list%n)
-         call move_alloc(longer, list%f)
+      if (.not. allocated(list%f)) then
+         call point_force_reserve(list, 16)
+      else if (list%n == size(list%f)) then
+         call point_force_reserve(list, 2*size(list%f))
       end if
       list%n = list%n + 1
       list%f(list%n) = point_force_t(segment=segment, point=point, force=force)
@@ -326,7 +342,9 @@ contains
    !> Where inside the step just taken the effect's right-hand side should
    !! have jumped, as a fraction theta of the step (0 < theta < 1) from the
    !! last accepted state to st, a state not yet accepted (memory
-   !! read-only); 0 when it need not be located. The driver then takes the
+   !! read-only); 0 when it need not be located; 1 or more when st falls
+   !! short of a jump the effect watches for (read while the driver
+   !! searches for one). The driver then takes the
    !! step again to that fraction (simulation: the windshield's break,
    !! D-C24b). The default effect never asks.
    pure real(wp) function effect_locate(this, st, extra, aux) result(theta)

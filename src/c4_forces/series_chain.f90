@@ -577,10 +577,10 @@ contains
       case (split_no_convergence)
          text = 'the shared deflection did not converge within '//itoa(max_iter)//' iterations'
          if (present(setting)) text = text//setting
-         text = text//' and '//itoa(bisections)//' bisections at the deformation '//num(s)//' in, rate '//num(s_dot)//' in/s'
+         text = text//' and '//itoa(bisections)//' bisections at the deformation '//num(s, 6)//' in, rate '//num(s_dot, 6)//' in/s'
       case (split_not_finite)
-         text = 'the shared deflection met a value that is not finite (deformation '//num(s)//' in, rate ' &
-                //num(s_dot)//' in/s)'
+         text = 'the shared deflection met a value that is not finite (deformation '//num(s, 6)//' in, rate ' &
+                //num(s_dot, 6)//' in/s)'
       case default
          text = ''
       end select

@@ -228,7 +228,7 @@ contains
             text = trim(label)//': '//name//' is not finite'
             return
          else if (abs(z(i)) > bound) then
-            text = trim(label)//': |'//name//'| = '//num(abs(z(i)))//' '//unit//' > '//num(bound)//' '//unit
+            text = trim(label)//': |'//name//'| = '//num(abs(z(i)), 6)//' '//unit//' > '//num(bound)//' '//unit
             return
          end if
          bound = merge(max_rate, max_speed, i <= n_seg)
@@ -237,7 +237,7 @@ contains
             text = trim(label)//': '//name//' dot is not finite'
             return
          else if (abs(zd(i)) > bound) then
-            text = trim(label)//': |'//name//' dot| = '//num(abs(zd(i)))//' '//unit//' > '//num(bound)//' '//unit
+            text = trim(label)//': |'//name//' dot| = '//num(abs(zd(i)), 6)//' '//unit//' > '//num(bound)//' '//unit
             return
          end if
       end do

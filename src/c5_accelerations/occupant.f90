@@ -6,7 +6,7 @@
 module occupant
    use kinds, only: wp, i8
    use segment_trig, only: segment_cos_sin
-   use model, only: model_t, body_section_t, n_dof, n_seg, solver_dense
+   use model, only: model_t, body_section_t, n_dof, n_seg, solver_dense, injury_section_t, end_tests_section_t
    use preliminary, only: body_constants_t, body_constants, initial_state
    use effect_base, only: effect_t, effect_slot_t, body_state_t, point_force_list_t, guard_none, guard_holds
    use effect_factory, only: build_effects
@@ -42,6 +42,11 @@ module occupant
       !> per effect: its extra coordinates and rates, its auxiliary quantities
       integer, allocatable :: extra_offset(:), aux_offset(:)
       real(wp) :: z0(n_dof) = 0.0_wp, zdot0(n_dof) = 0.0_wp
+      !> its own end test and limits (C.7: *OPTIONS NEND, *ENDTESTS; Table 5:
+      !! *INJURY), so that occupants built from different models keep theirs
+      integer :: nend = 0
+      type(end_tests_section_t) :: end_tests
+      type(injury_section_t) :: injury
    end type occupant_t
 
 contains
@@ -57,6 +62,9 @@ contains
 
       occ%label = label
       occ%body = m%body
+      occ%nend = m%options%nend
+      occ%end_tests = m%end_tests
+      occ%injury = m%injury
       occ%bc = body_constants(m%body)
       occ%solver = matrix_structured
       if (m%numerics%solver == solver_dense .or. .not. body_structure_matches(occ%bc)) occ%solver = matrix_dense
@@ -197,8 +205,9 @@ contains
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: y(:)
-      type(point_force_list_t), intent(out) :: list
+      type(point_force_list_t), intent(inout) :: list
       integer :: k, xo, ao
+      list%n = 0      ! (its storage kept: nothing allocated once it is large enough)
       do k = 1, size(occ%effects)
          associate (e => occ%effects(k)%e)
             if (.not. e%external) cycle

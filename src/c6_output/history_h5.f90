@@ -1,8 +1,8 @@
 !> The run's time histories in an HDF5 file, written as the run goes (C.6).
 !!
-!! Layout, format_version 2 (h5py shapes; Fortran shapes are the reverse):
+!! Layout, format_version 3 (h5py shapes; Fortran shapes are the reverse):
 !!
-!! - root attributes `format_version` (integer, 2), `program` (= "hsri2d"),
+!! - root attributes `format_version` (integer, 3), `program` (= "hsri2d"),
 !!   `version` (the program's version), `title`, `units`;
 !! - `/input/deck`: the deck's card images, 1-D fixed-length strings;
 !! - one dataset per series, e.g. `/time`, `/body/z`: float64 growing along
@@ -17,7 +17,7 @@
 !! `units` (one string per column; "-" for a dimensionless or text column)
 !! and `description`. Attribute strings are variable-length UTF-8 (h5py 3
 !! reads them as `str`); string datasets are fixed-length, null-padded
-!! ASCII (h5py: `.asstr()`).
+!! UTF-8 (h5py: `.asstr()`; a deck's comment cards may hold UTF-8).
 !!
 !! Rows are kept in memory per series and written in blocks of
 !! `block_rows` (also the chunk length), which amortizes HDF5's
@@ -83,8 +83,9 @@ module history_h5
 
    !> Version of the file layout, the root attribute `format_version`: 2
    !! since /time became 1-D, the root got `version` and attribute strings
-   !! became variable-length UTF-8.
-   integer, parameter :: history_format_version = 2
+   !! became variable-length UTF-8; 3 since the string datasets are UTF-8
+   !! (a reader's memory type must say so: HDF5 converts no character sets).
+   integer, parameter :: history_format_version = 3
 
    !> Rows kept in memory per series before they are written; also the
    !! chunk length along rows.
@@ -235,12 +236,13 @@ contains
       if (.not. local%failed()) &
          call create_growing(this%file, this%path, 'events/time', h5t_ieee_f64le, 0, event_chunk, this%ev_time, local)
       if (.not. local%failed()) &
-         call describe(this%ev_time, this%path, 'events/time', ['t'], ['s'], 'time of each injury event', local)
+         call describe(this%ev_time, this%path, 'events/time', ['t'], ['s'], 'time of each event or note', local)
       if (.not. local%failed()) &
          call create_growing(this%file, this%path, 'events/kind', h5t_std_i32le, 0, event_chunk, this%ev_kind, local)
       if (.not. local%failed()) &
          call describe(this%ev_kind, this%path, 'events/kind', ['kind'], ['-'], &
-                       'kind of each event, a code (events/text says it in words)', local)
+                       'kind of each event, a code (docs/usage.md; events/text says it in words, a note''s ' &
+                       //'beginning "note:")', local)
       if (.not. local%failed()) &
          call create_growing(this%file, this%path, 'events/index', h5t_std_i32le, 0, event_chunk, this%ev_index, local)
       if (.not. local%failed()) &
@@ -770,6 +772,9 @@ contains
       end if
       call h5tset_size_f(type_id, int(n, size_t), hdferr)
       if (hdferr >= 0 .and. in_file) call h5tset_strpad_f(type_id, h5t_str_nullpad_f, hdferr)
+      ! UTF-8, in memory and file alike (HDF5 converts no character sets): a deck's
+      ! comment card may hold UTF-8, and h5py's .asstr() decodes by the type's set.
+      if (hdferr >= 0) call h5tset_cset_f(type_id, h5t_cset_utf8_f, hdferr)
       if (hdferr < 0) then
          call h5tclose_f(type_id, ignore)
          type_id = no_id

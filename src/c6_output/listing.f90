@@ -70,16 +70,56 @@ contains
       this%line = 3
    end subroutine page_header
 
-   !> One line, opening a new page when the page is full. Lines are never
-   !! cut: the writers keep them within 132 columns (a test checks every
-   !! shipped deck's listing).
-   subroutine listing_put(this, text)
+   !> One line, opening a new page when the page is full. A text wider
+   !! than the listing (132 columns) is wrapped, never cut off: broken at a
+   !! blank in the second half of the line (or, where there is none, such as
+   !! in a long path, at the last column), each continuation line indented
+   !! by indent columns (default: the text's own indentation plus 4).
+   subroutine listing_put(this, text, indent)
+      class(listing_t), intent(inout) :: this
+      character(len=*), intent(in) :: text
+      integer, intent(in), optional :: indent
+      integer :: n, start, cut, width, lead, cont, blank
+      n = len_trim(text)
+      if (n <= listing_width) then
+         call put_one(this, text(1:n))
+         return
+      end if
+      lead = max(0, verify(text, ' ') - 1)
+      cont = lead + 4
+      if (present(indent)) cont = indent
+      cont = min(max(cont, 0), listing_width/2)
+      start = 1
+      width = listing_width
+      do while (start <= n)
+         if (start > 1) then
+            start = start + verify(text(start:n), ' ') - 1   ! (no blanks at a continuation's start)
+            width = listing_width - cont
+         end if
+         cut = n
+         if (n - start + 1 > width) then
+            cut = start + width - 1
+            ! the last blank up to the column after a full line, if it leaves
+            ! at least half a line here
+            blank = index(text(start:cut + 1), ' ', back=.true.)
+            if (blank > width/2) cut = start + blank - 2
+         end if
+         if (start == 1) then
+            call put_one(this, text(1:cut))
+         else
+            call put_one(this, repeat(' ', cont)//text(start:cut))
+         end if
+         start = cut + 1
+      end do
+   end subroutine listing_put
+
+   subroutine put_one(this, text)
       class(listing_t), intent(inout) :: this
       character(len=*), intent(in) :: text
       if (this%line >= this%lines_per_page) call page_header(this)
       call emit(this, trim(text))
       this%line = this%line + 1
-   end subroutine listing_put
+   end subroutine put_one
 
    subroutine listing_blank(this)
       class(listing_t), intent(inout) :: this

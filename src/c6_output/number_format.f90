@@ -1,8 +1,11 @@
-!> Numbers in fixed-width listing fields: fixed never prints asterisks (a
-!! value that does not fit the F editing of its field switches to E editing
-!! of the same width); es11_3 and f10_5 write the time-history tables'
-!! fields, the same characters as the edit descriptors ES11.3 and F10.5,
-!! fast.
+!> Numbers in fixed-width listing fields, never printed as asterisks:
+!! fixed switches a value that does not fit the F editing of its field to
+!! E editing of the same width (wider only when even that cannot hold it,
+!! in a field narrower than 9 columns); right_int right-justifies an integer
+!! in its field and widens the field for one that does not fit; es11_3 and
+!! f10_5 write the time-history tables' fields, the same characters as the
+!! edit descriptors ES11.3 and F10.5, fast (ES11.3 holds every double; F10.5
+!! every time up to TMAX's limit, 1000 s, the library's F10.5 beyond).
 !!
 !! Why the fast forms: the listing's time histories are most of its
 !! numbers, and the run-time library's formatted conversion costs some
@@ -18,11 +21,17 @@
 !! with the library over millions of values.
 module number_format
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_negative
-   use kinds, only: wp
+   use kinds, only: wp, i8
    implicit none
    private
 
-   public :: fixed, es11_3, f10_5
+   public :: fixed, es11_3, f10_5, right_int
+
+   !> An integer right-justified in a field of w columns, or wider when it
+   !! needs more (never asterisks).
+   interface right_int
+      module procedure right_int_default, right_int_i8
+   end interface right_int
 
    !> 10**k, k = 0..22: every one exactly a double.
    real(wp), parameter :: pow10(0:22) = [1.0e0_wp, 1.0e1_wp, 1.0e2_wp, 1.0e3_wp, 1.0e4_wp, 1.0e5_wp, &
@@ -38,26 +47,53 @@ module number_format
 contains
 
    !> x in w columns with d decimals (Fw.d), or in E notation when that
-   !! would overflow the field; w >= 9.
+   !! would overflow the field (w >= 9 holds every double so); in a narrower
+   !! field, a value that fits neither gets the few columns more it needs.
    function fixed(x, w, d) result(s)
       real(wp), intent(in) :: x
       integer, intent(in) :: w, d
-      character(len=w) :: s
+      character(len=:), allocatable :: s
       character(len=16) :: fmt
-      integer :: digits
+      character(len=40) :: wide
+      integer :: digits, width
+      allocate (character(len=w) :: s)
       write (fmt, '(a,i0,a,i0,a)') '(f', w, '.', d, ')'
       write (s, fmt) x
       if (index(s, '*') == 0) return
       ! a blank, the sign, a digit, the point, E, the exponent's sign and digits
+      width = max(w, 9)
       if (abs(x) >= 1.0e100_wp) then
-         digits = max(1, w - 9)
-         write (fmt, '(a,i0,a,i0,a)') '(es', w, '.', digits, 'e3)'
+         digits = max(1, width - 9)
+         write (fmt, '(a,i0,a,i0,a)') '(es', width, '.', digits, 'e3)'
       else
-         digits = max(1, w - 8)
-         write (fmt, '(a,i0,a,i0,a)') '(es', w, '.', digits, ')'
+         digits = max(1, width - 8)
+         write (fmt, '(a,i0,a,i0,a)') '(es', width, '.', digits, ')'
       end if
-      write (s, fmt) x
+      write (wide, fmt) x
+      if (width == w) then
+         s = wide(1:w)
+      else
+         ! as few columns past w as it needs
+         s = trim(adjustl(wide(1:width)))
+         if (len(s) < w) s = repeat(' ', w - len(s))//s
+      end if
    end function fixed
+
+   function right_int_default(n, w) result(s)
+      integer, intent(in) :: n, w
+      character(len=:), allocatable :: s
+      s = right_int_i8(int(n, i8), w)
+   end function right_int_default
+
+   function right_int_i8(n, w) result(s)
+      integer(i8), intent(in) :: n
+      integer, intent(in) :: w
+      character(len=:), allocatable :: s
+      character(len=24) :: digits
+      write (digits, '(i0)') n
+      s = trim(digits)
+      if (len(s) < w) s = repeat(' ', w - len(s))//s
+   end function right_int_i8
 
    !> write (s, '(es11.3)') x: "  d.dddE+xx", "-" before the digit when x < 0.
    pure function es11_3(x) result(s)

@@ -17,11 +17,11 @@
 !! place: there is nothing to rename.
 module output_files
    use error_handling, only: error_t, error_set, exit_ok, exit_usage, exit_numerical, exit_io
-   use text_io, only: string_t
-   use posix_files, only: file_info_t, posix_file_info, posix_fd_info, posix_real_path, posix_check_writable, &
-                          posix_create_temp, posix_open_for_writing, posix_write, posix_sync, posix_close, &
-                          posix_sync_path, posix_rename, posix_remove, posix_error_text, &
-                          kind_none, kind_regular, kind_directory, stdout_fd, errno_not_found
+   use text_io, only: string_t, standard_input_path, standard_input_name
+   use posix_files, only: file_info_t, posix_file_info, posix_fd_info, posix_real_path, posix_target_path, &
+                          posix_check_writable, posix_create_temp, posix_open_for_writing, posix_write, &
+                          posix_sync, posix_close, posix_sync_path, posix_rename, posix_remove, posix_error_text, &
+                          kind_regular, kind_directory, kind_character, stdin_fd, stdout_fd, errno_not_found
    implicit none
    private
 
@@ -300,14 +300,19 @@ contains
 
    !> Refuse (exit status 1) outputs that would overwrite an input: the
    !! listing (`listing_file`, '' = standard output) or the HDF5 file
-   !! (`h5_file`, '' = none) being one of the decks or the pulse file
-   !! (`pulse_file`, '' = none), or both outputs being the same file (also
-   !! standard output redirected to the HDF5 file). Runs before any output
-   !! file is created.
+   !! (`h5_file`, '' = none) being one of the decks (`-` = standard input)
+   !! or the pulse file (`pulse_file`, '' = none), or both outputs being the
+   !! same file (also standard output redirected to the HDF5 file). An
+   !! output and an input are the same file when they have the same device
+   !! and inode, whatever the names (`-o /dev/stdin`, `>> run.deck`); a
+   !! character device (a terminal, /dev/null) is exempt: writing to it
+   !! destroys nothing. Runs before any output file is created.
    subroutine check_output_paths(decks, pulse_file, listing_file, h5_file, err)
       type(string_t), intent(in) :: decks(:)
       character(len=*), intent(in) :: pulse_file, listing_file, h5_file
       type(error_t), intent(inout) :: err
+      type(file_info_t) :: listing_info, h5_info
+      logical :: listing_exists, h5_exists
       integer :: k
 
       if (len(listing_file) > 0 .and. len(h5_file) > 0) then
@@ -316,8 +321,15 @@ contains
             return
          end if
       end if
-      if (len(listing_file) == 0 .and. len(h5_file) > 0) then
-         if (is_standard_output(h5_file)) then
+      if (len(listing_file) == 0) then
+         listing_exists = posix_fd_info(stdout_fd, listing_info) == 0
+      else
+         listing_exists = posix_file_info(listing_file, listing_info) == 0
+      end if
+      h5_exists = .false.
+      if (len(h5_file) > 0) h5_exists = posix_file_info(h5_file, h5_info) == 0
+      if (len(listing_file) == 0 .and. listing_exists .and. h5_exists) then
+         if (clash(listing_info, h5_info)) then
             call error_set(err, exit_usage, 'standard output is the HDF5 file '//h5_file// &
                            '; write the listing elsewhere (-o)')
             return
@@ -330,21 +342,33 @@ contains
    contains
       subroutine refuse(input, kind)
          character(len=*), intent(in) :: input, kind
+         type(file_info_t) :: input_info
+         character(len=:), allocatable :: shown
+         integer :: errno
          if (err%failed()) return
-         if (len(listing_file) > 0) then
-            if (same_file(listing_file, input)) then
-               call error_set(err, exit_usage, 'the listing file '//listing_file//' is the '//kind//' '//input// &
-                              '; refusing to overwrite it')
+         shown = input
+         if (input == standard_input_path .and. len(input) == len(standard_input_path)) then
+            errno = posix_fd_info(stdin_fd, input_info)
+            shown = standard_input_name
+         else
+            errno = posix_file_info(input, input_info)
+         end if
+         if (errno /= 0) return
+         if (listing_exists) then
+            if (clash(listing_info, input_info)) then
+               if (len(listing_file) > 0) then
+                  call error_set(err, exit_usage, 'the listing file '//listing_file//' is the '//kind//' '//shown// &
+                                 '; refusing to overwrite it')
+               else
+                  call error_set(err, exit_usage, 'standard output is the '//kind//' '//shown// &
+                                 '; refusing to overwrite it')
+               end if
                return
             end if
-         else if (is_standard_output(input)) then
-            call error_set(err, exit_usage, 'standard output is the '//kind//' '//input// &
-                           '; refusing to overwrite it')
-            return
          end if
-         if (len(h5_file) > 0) then
-            if (same_file(h5_file, input)) then
-               call error_set(err, exit_usage, 'the HDF5 file '//h5_file//' is the '//kind//' '//input// &
+         if (h5_exists) then
+            if (clash(h5_info, input_info)) then
+               call error_set(err, exit_usage, 'the HDF5 file '//h5_file//' is the '//kind//' '//shown// &
                               '; refusing to overwrite it')
                return
             end if
@@ -352,9 +376,16 @@ contains
       end subroutine refuse
    end subroutine check_output_paths
 
+   !> Whether writing to `output` would overwrite `input`: the same file,
+   !! unless it is a character device (a terminal, /dev/null).
+   pure logical function clash(output, input)
+      type(file_info_t), intent(in) :: output, input
+      clash = output%dev == input%dev .and. output%ino == input%ino .and. input%kind /= kind_character
+   end function clash
+
    !> Whether paths `a` and `b` name the same file: the same device and
-   !! inode when both exist, otherwise the same canonical path (the
-   !! directory resolved, the last name as given).
+   !! inode when both exist, otherwise the same file to be created (symbolic
+   !! links that point to nothing yet followed, the directory resolved).
    logical function same_file(a, b)
       character(len=*), intent(in) :: a, b
       type(file_info_t) :: ia, ib
@@ -364,7 +395,7 @@ contains
       if (errno_a == 0 .and. errno_b == 0) then
          same_file = ia%dev == ib%dev .and. ia%ino == ib%ino
       else
-         same_file = canonical_path(a) == canonical_path(b)
+         same_file = target_path(a) == target_path(b)
       end if
    end function same_file
 
@@ -397,7 +428,6 @@ contains
       type(error_t), intent(inout) :: err
       character(len=*), intent(in) :: prefix
       type(file_info_t) :: info
-      character(len=:), allocatable :: dir, real_dir
 
       dest = path
       mode = -1
@@ -428,25 +458,14 @@ contains
          call error_set(err, exit_io, prefix//': it is a directory')
          return
       end if
-      dir = parent_directory(path)
-      errno = posix_real_path(dir, real_dir)
-      if (errno == 0) errno = directory_status(real_dir)
+      ! A new file, or a symbolic link that points to nothing yet: the file
+      ! is created where the link points, and the link stays.
+      errno = posix_target_path(path, dest)
       if (errno /= 0) then
-         call error_set(err, exit_io, prefix//': '//posix_error_text(errno)//directory_note(errno, path))
+         call error_set(err, exit_io, prefix//': '//posix_error_text(errno)//directory_note(errno, dest))
          return
       end if
-      dest = real_dir//'/'//last_name(path)
-      if (real_dir == '/') dest = '/'//last_name(path)
    end subroutine resolve_target
-
-   !> 0 when `dir` is a directory, ENOTDIR (20) otherwise.
-   integer function directory_status(dir) result(errno)
-      character(len=*), intent(in) :: dir
-      type(file_info_t) :: info
-      integer, parameter :: enotdir = 20
-      errno = posix_file_info(dir, info)
-      if (errno == 0 .and. info%kind /= kind_directory) errno = enotdir
-   end function directory_status
 
    !> " (directory D)" after a failure that concerns the directory of
    !! `path` (missing, not a directory, not writable).
@@ -468,28 +487,13 @@ contains
       this%nbuf = 0
    end subroutine write_buffer
 
-   !> Canonical form of a path that may not exist yet: its directory
-   !! resolved, its last name as given (the path itself when even the
-   !! directory cannot be resolved).
-   function canonical_path(path) result(canon)
+   !> The file a write to `path` would create or replace (posix_target_path),
+   !! or `path` itself when that cannot be resolved.
+   function target_path(path) result(target)
       character(len=*), intent(in) :: path
-      character(len=:), allocatable :: canon, dir
-      if (posix_real_path(path, canon) == 0) return
-      canon = path
-      if (posix_real_path(parent_directory(path), dir) /= 0) return
-      canon = dir//'/'//last_name(path)
-   end function canonical_path
-
-   !> Whether standard output is the existing regular file at `path`.
-   logical function is_standard_output(path)
-      character(len=*), intent(in) :: path
-      type(file_info_t) :: out, file
-      is_standard_output = .false.
-      if (posix_fd_info(stdout_fd, out) /= 0) return
-      if (out%kind /= kind_regular) return
-      if (posix_file_info(path, file) /= 0) return
-      is_standard_output = out%dev == file%dev .and. out%ino == file%ino
-   end function is_standard_output
+      character(len=:), allocatable :: target
+      if (posix_target_path(path, target) /= 0) target = path
+   end function target_path
 
    !> Replace the temporary name of `file` by its target in err's message.
    subroutine name_targets(err, file)

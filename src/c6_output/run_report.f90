@@ -22,7 +22,7 @@ module run_report
    use error_handling, only: error_t, error_set, exit_io
    use listing, only: listing_t
    use loading_curves, only: curve_is_defined, curve_polynomial, curve_table
-   use number_format, only: fixed, es11_3, f10_5
+   use number_format, only: fixed, es11_3, f10_5, right_int
    use output_series, only: output_series_t, max_listing_columns
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
@@ -35,7 +35,7 @@ module run_report
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t
    use force_injuries, only: fc_defined, fs_defined, fc_name, fs_name
    use acceleration_criteria, only: hic_result_t
-   use event_text, only: event_description
+   use event_text, only: event_description, event_is_note
    use end_tests, only: end_reason_text, end_failure, end_energy
    implicit none
    private
@@ -203,14 +203,15 @@ contains
       call lst%put(' after J. M. Becker and D. H. Robbins, Mathematical Simulation of Collision, I,')
       call lst%put(' Highway Safety Research Institute, The University of Michigan (appendix C, phase two)')
       call lst%blank()
-      call lst%put(' TITLE   '//trim(m%title))
+      ! (a long path or warning continues under its start: listing_put)
+      call lst%put(' TITLE   '//trim(m%title), indent=9)
       do i = 1, size(deck%source_name)
-         call lst%put(' DECK    '//deck%source_name(i)%s)
+         call lst%put(' DECK    '//deck%source_name(i)%s, indent=9)
       end do
-      call lst%put(' PULSE   '//m%vehicle%pulse_source)
+      call lst%put(' PULSE   '//m%vehicle%pulse_source, indent=9)
       call lst%put(' UNITS   inch, pound force, second; angles in degrees in the listing')
       do i = 1, size(m%warnings)
-         call lst%put(' WARNING '//m%warnings(i)%s)
+         call lst%put(' WARNING '//m%warnings(i)%s, indent=9)
       end do
    end subroutine write_banner
 
@@ -233,7 +234,8 @@ contains
             if (e%group < 0) mark = 'R'          ! replaced by a later deck
             if (e%kind == echo_bad) mark = '?'
             where = source_line(deck, e%source, e%line)
-            write (line, '(i5,2x,a1,2x,a28,1x,a)') k, mark, where, e%text
+            ! the card number right-aligned in 5 columns, and wider from 100,000 (never asterisks)
+            write (line, '(a,2x,a1,2x,a28,1x,a)') repeat(' ', max(0, 5 - len(itoa(k))))//itoa(k), mark, where, e%text
             call lst%put(line)
             ! under each group header, the group's fields at their columns (card table)
             if (e%kind == echo_header .and. e%group /= 0) then
@@ -776,8 +778,9 @@ contains
                if (k == 21) call lst%put('   ...')
                cycle
             end if
-            write (line, '(i5,4a)') k, fixed(v%pulse_acc%t(k), 12, 5), fixed(v%pulse_acc%v(k, 1)/g_std, 12, 4), &
-               fixed(v%pulse_acc%v(k, 2)/g_std, 12, 4), fixed(v%pulse_acc%v(k, 3)/deg, 16, 3)
+            ! (the index widens from 100,000 rows: up to the table's limit)
+            line = right_int(k, 5)//fixed(v%pulse_acc%t(k), 12, 5)//fixed(v%pulse_acc%v(k, 1)/g_std, 12, 4) &
+                   //fixed(v%pulse_acc%v(k, 2)/g_std, 12, 4)//fixed(v%pulse_acc%v(k, 3)/deg, 16, 3)
             call lst%put(line)
          end do
          if (allocated(v%pulse_vel%t)) call lst%put('  vehicle rates tabulated for: '//given_axes(v%pulse_vel%given) &
@@ -818,7 +821,7 @@ contains
             end do
             call lst%heading('EFFECTS THIS SCENE CALLS FOR (C.4)', size(occ%effects) + 1)
             do k = 1, size(occ%effects)
-               call lst%put('  '//occ%effects(k)%e%describe())
+               call lst%put('  '//occ%effects(k)%e%describe(), indent=6)
             end do
          end associate
          iz = series_at(reg, 'body/z', o)
@@ -874,7 +877,7 @@ contains
       call lst%new_page('SUMMARY (C.6, C.7)')
       call lst%heading('END OF RUN', 3)
       call lst%put('  ended at t ='//fixed(res%t_end, 10, 5)//' s: '//end_reason_text(res%end_reason))
-      if (res%end_reason == end_failure .or. res%end_reason == end_energy) call put_wrapped(lst, '  ', res%failure)
+      if (res%end_reason == end_failure .or. res%end_reason == end_energy) call lst%put('  '//res%failure, indent=4)
 
       do o = 1, size(res%occ)
          associate (os => res%occ(o))
@@ -901,15 +904,11 @@ contains
       end do
 
       call lst%heading('INJURY EVENTS (C.4.c FIGURE 10, C.4.f FIGURE 26)', 3)
-      if (res%n_events == 0) call lst%put('  none')
-      do i = 1, res%n_events
-         associate (e => res%events(i))
-            head = '  t ='//fixed(e%t, 10, 5)//' s  '//trim(merge('occupant '//achar(48 + min(e%occupant, 9)), &
-                   '          ', size(res%occ) > 1))
-            ev = head//' '//event_description(e)
-            call put_wrapped(lst, '', ev)    ! (two occupants' undesired contacts pass 130 columns)
-         end associate
-      end do
+      call put_events(.false.)
+      if (any([(event_is_note(res%events(i)%kind), i=1, res%n_events)])) then
+         call lst%heading('NOTES (NOT INJURIES)', 3)
+         call put_events(.true.)
+      end if
       do o = 1, size(res%occ)
          if (res%occ(o)%force_checked) call put_force_maxima(lst, m, res%occ(o))
       end do
@@ -964,16 +963,32 @@ contains
       do o = 1, size(res%occ)
          do k = 1, size(res%counts, 1)
             if (res%effect_titles(k, o) == ' ') cycle
-            write (line, '(4x,a,i12)') effect_label(o, k), res%counts(k, o)
-            call lst%put(line)
+            call lst%put('    '//effect_label(o, k)//right_int(res%counts(k, o), 12))
          end do
       end do
    contains
+      !> The events (notes = .false.) or the notes, each with its time
+      !! (and occupant); a long one continues under its description.
+      subroutine put_events(notes)
+         logical, intent(in) :: notes
+         integer :: j, n
+         n = 0
+         do j = 1, res%n_events
+            associate (e => res%events(j))
+               if (event_is_note(e%kind) .neqv. notes) cycle
+               n = n + 1
+               head = '  t ='//fixed(e%t, 10, 5)//' s  '
+               if (size(res%occ) > 1) head = head//'occupant '//itoa(e%occupant)
+               ev = head//' '//event_description(e)
+               call lst%put(ev, indent=len(head) + 1)
+            end associate
+         end do
+         if (n == 0) call lst%put('  none')
+      end subroutine put_events
       subroutine count_line(text, n)
          character(len=*), intent(in) :: text
          integer(i8), intent(in) :: n
-         write (line, '(a,i12)') text, n
-         call lst%put(line)
+         call lst%put(text//right_int(n, 12))
       end subroutine count_line
       function effect_label(occupant, k) result(s)
          integer, intent(in) :: occupant, k
@@ -981,24 +996,6 @@ contains
          s = res%effect_titles(k, occupant)
       end function effect_label
    end subroutine write_summary
-
-   !> A long text over several lines of at most 130 columns.
-   subroutine put_wrapped(lst, indent, text)
-      type(listing_t), intent(inout) :: lst
-      character(len=*), intent(in) :: indent, text
-      integer :: start, cut, width
-      width = 130 - len(indent)
-      start = 1
-      do while (start <= len(text))
-         cut = min(len(text), start + width - 1)
-         if (cut < len(text)) then
-            cut = start - 1 + index(text(start:cut), ' ', back=.true.)
-            if (cut < start) cut = min(len(text), start + width - 1)
-         end if
-         call lst%put(indent//text(start:cut))
-         start = cut + 1
-      end do
-   end subroutine put_wrapped
 
    !> The interior (C.4.f, Table 3; docs/contacts.md): each surface as the
    !! scene resolves it (both ends, direction, normal, padding), and the

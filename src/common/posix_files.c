@@ -24,8 +24,12 @@
 #include <unistd.h>
 
 /* What kind of file a path or descriptor is (posix_files.f90 has the
- * same values). */
-enum { KIND_NONE = 0, KIND_REGULAR = 1, KIND_DIRECTORY = 2, KIND_OTHER = 3 };
+ * same values). A character device (a terminal, /dev/null) is told apart:
+ * writing to it never overwrites what it was read from. */
+enum { KIND_NONE = 0, KIND_REGULAR = 1, KIND_DIRECTORY = 2, KIND_OTHER = 3, KIND_CHARACTER = 4 };
+
+/* Symbolic links followed before giving up (Linux's own limit is 40). */
+enum { MAX_LINK_HOPS = 40 };
 
 /* Tries at a fresh temporary name before giving up. */
 enum { TEMP_TRIES = 100 };
@@ -34,6 +38,7 @@ static int kind_of(mode_t mode)
 {
     if (S_ISREG(mode)) return KIND_REGULAR;
     if (S_ISDIR(mode)) return KIND_DIRECTORY;
+    if (S_ISCHR(mode)) return KIND_CHARACTER;
     return KIND_OTHER;
 }
 
@@ -45,12 +50,15 @@ static void fill_info(const struct stat *st, int *kind, int64_t *dev, int64_t *i
     *mode = (int)(st->st_mode & 07777);
 }
 
-/* A write past a file-size limit (ulimit -f) then fails with EFBIG, which
- * is reported like any other write error, instead of killing the process
- * (gfortran's runtime would print a backtrace for the signal). */
-int hsri2d_ignore_file_size_signal(void)
+/* A write past a file-size limit (ulimit -f) then fails with EFBIG, and a
+ * write to a pipe whose reader has gone (hsri2d | head) with EPIPE, which
+ * are reported like any other write error, instead of killing the process
+ * (SIGXFSZ: gfortran's runtime would print a backtrace; SIGPIPE: status
+ * 141 and the temporary output files left behind). */
+int hsri2d_ignore_output_signals(void)
 {
-    return signal(SIGXFSZ, SIG_IGN) == SIG_ERR ? errno : 0;
+    if (signal(SIGXFSZ, SIG_IGN) == SIG_ERR) return errno;
+    return signal(SIGPIPE, SIG_IGN) == SIG_ERR ? errno : 0;
 }
 
 /* Kind, device, inode and permission bits of the file at path (symbolic
@@ -97,6 +105,94 @@ int hsri2d_real_path(const char *path, char *out, size_t cap, size_t *len)
     free(real);
     *len = n;
     return 0;
+}
+
+/* Copy text into out (cap bytes), or ENAMETOOLONG. */
+static int copy_path(char *out, size_t cap, const char *text)
+{
+    size_t n = strlen(text);
+    if (n + 1 > cap) return ENAMETOOLONG;
+    memcpy(out, text, n + 1);
+    return 0;
+}
+
+/* The file a write to path creates or replaces, as a canonical absolute
+ * path, into out (cap bytes; *len its length): realpath when it exists;
+ * otherwise symbolic links that point to nothing yet are followed (each
+ * relative target taken from its link's directory) to the name that does
+ * not exist, whose directory must: its canonical path and that name. On
+ * failure out holds the path reached (the last link's target), for the
+ * message, and the errno value is returned (ENOENT: a directory on the way
+ * is missing; ELOOP: links without end). */
+int hsri2d_target_path(const char *path, char *out, size_t cap, size_t *len)
+{
+    char cur[PATH_MAX], target[PATH_MAX], dir[PATH_MAX];
+    int hops, e;
+    *len = 0;
+    if (cap == 0) return ENAMETOOLONG;
+    out[0] = '\0';
+    if (copy_path(cur, sizeof cur, path) != 0) return ENAMETOOLONG;
+    for (hops = 0; hops <= MAX_LINK_HOPS; hops++) {
+        struct stat st;
+        char *real = realpath(cur, NULL);
+        const char *slash = strrchr(cur, '/');
+        const char *name = slash == NULL ? cur : slash + 1;
+        size_t dir_len = slash == NULL ? 0 : (size_t)(slash - cur);
+        ssize_t n;
+        if (real != NULL) {
+            e = copy_path(out, cap, real);
+            free(real);
+            if (e == 0) *len = strlen(out);
+            return e;
+        }
+        e = errno;
+        copy_path(out, cap, cur);
+        *len = strlen(out);
+        if (e != ENOENT) return e;
+        /* the directory part of cur: "." when none, "/" at the root */
+        if (slash == NULL) {
+            strcpy(dir, ".");
+        } else if (dir_len == 0) {
+            strcpy(dir, "/");
+        } else {
+            memcpy(dir, cur, dir_len);
+            dir[dir_len] = '\0';
+        }
+        if (lstat(cur, &st) != 0) {
+            if (errno != ENOENT) return errno;
+            /* the last name is free: its directory must exist */
+            if (*name == '\0') return EISDIR;
+            real = realpath(dir, NULL);
+            if (real == NULL) return errno;
+            if (stat(real, &st) != 0 || !S_ISDIR(st.st_mode)) {
+                free(real);
+                return ENOTDIR;
+            }
+            if (strlen(real) + 1 + strlen(name) + 1 > cap) {
+                free(real);
+                return ENAMETOOLONG;
+            }
+            strcpy(out, strcmp(real, "/") == 0 ? "" : real);
+            strcat(out, "/");
+            strcat(out, name);
+            free(real);
+            *len = strlen(out);
+            return 0;
+        }
+        if (!S_ISLNK(st.st_mode)) return ENOENT;
+        n = readlink(cur, target, sizeof target - 1);
+        if (n < 0) return errno;
+        target[n] = '\0';
+        if (target[0] == '/' || slash == NULL) {
+            if (copy_path(cur, sizeof cur, target) != 0) return ENAMETOOLONG;
+        } else {
+            if (strlen(dir) + 1 + strlen(target) + 1 > sizeof cur) return ENAMETOOLONG;
+            strcpy(cur, dir);
+            strcat(cur, "/");
+            strcat(cur, target);
+        }
+    }
+    return ELOOP;
 }
 
 /* Whether this process may write the existing file at path. */
@@ -162,10 +258,12 @@ int hsri2d_create_temp(const char *prefix, int mode, char *out, size_t cap, int 
 }
 
 /* Open an existing file that is not a regular file (a terminal, a pipe,
- * /dev/null) for writing, as it is. */
+ * /dev/null), or a file named under /dev or /proc, for writing, as it is.
+ * O_APPEND: a regular file reached that way (/dev/stdout of a shell's
+ * ">> log") is added to, not overwritten from its start. */
 int hsri2d_open_for_writing(const char *path, int *fd)
 {
-    *fd = open(path, O_WRONLY | O_CLOEXEC);
+    *fd = open(path, O_WRONLY | O_APPEND | O_CLOEXEC);
     return *fd >= 0 ? 0 : errno;
 }
 

@@ -11,16 +11,19 @@ module posix_files
    implicit none
    private
 
-   public :: file_info_t, posix_file_info, posix_fd_info, posix_real_path, posix_check_writable
+   public :: file_info_t, posix_file_info, posix_fd_info, posix_real_path, posix_target_path, posix_check_writable
    public :: posix_create_temp, posix_open_for_writing, posix_write, posix_sync, posix_close
    public :: posix_sync_path, posix_rename, posix_remove, posix_error_text
-   public :: posix_ignore_file_size_signal, posix_clear_errno, posix_errno
-   public :: kind_none, kind_regular, kind_directory, kind_other, stdout_fd, errno_not_found
+   public :: posix_ignore_output_signals, posix_clear_errno, posix_errno
+   public :: kind_none, kind_regular, kind_directory, kind_other, kind_character, stdin_fd, stdout_fd
+   public :: errno_not_found
 
-   !> Kinds of file (the values of posix_files.c).
-   integer, parameter :: kind_none = 0, kind_regular = 1, kind_directory = 2, kind_other = 3
-   !> The descriptor of standard output.
-   integer, parameter :: stdout_fd = 1
+   !> Kinds of file (the values of posix_files.c); kind_character: a
+   !! character device (a terminal, /dev/null), kind_other: a pipe, a
+   !! socket, a block device.
+   integer, parameter :: kind_none = 0, kind_regular = 1, kind_directory = 2, kind_other = 3, kind_character = 4
+   !> The descriptors of standard input and standard output.
+   integer, parameter :: stdin_fd = 0, stdout_fd = 1
    !> ENOENT on Linux (and every POSIX system in use).
    integer, parameter :: errno_not_found = 2
    !> Room for a path coming back from C.
@@ -34,9 +37,9 @@ module posix_files
    end type file_info_t
 
    interface
-      integer(c_int) function c_ignore_file_size_signal() bind(c, name='hsri2d_ignore_file_size_signal')
+      integer(c_int) function c_ignore_output_signals() bind(c, name='hsri2d_ignore_output_signals')
          import :: c_int
-      end function c_ignore_file_size_signal
+      end function c_ignore_output_signals
 
       integer(c_int) function c_file_info(path, kind, dev, ino, mode) bind(c, name='hsri2d_file_info')
          import :: c_int, c_char, c_int64_t
@@ -59,6 +62,14 @@ module posix_files
          integer(c_size_t), value :: cap
          integer(c_size_t), intent(out) :: len
       end function c_real_path
+
+      integer(c_int) function c_target_path(path, out, cap, len) bind(c, name='hsri2d_target_path')
+         import :: c_int, c_char, c_size_t
+         character(kind=c_char), intent(in) :: path(*)
+         character(kind=c_char), intent(out) :: out(*)
+         integer(c_size_t), value :: cap
+         integer(c_size_t), intent(out) :: len
+      end function c_target_path
 
       integer(c_int) function c_check_writable(path) bind(c, name='hsri2d_check_writable')
          import :: c_int, c_char
@@ -130,11 +141,12 @@ module posix_files
 
 contains
 
-   !> Make a write past a file-size limit fail with EFBIG (an error the
-   !! program reports) rather than kill the process with SIGXFSZ.
-   integer function posix_ignore_file_size_signal() result(errno)
-      errno = int(c_ignore_file_size_signal())
-   end function posix_ignore_file_size_signal
+   !> Make a write past a file-size limit fail with EFBIG and a write to a
+   !! pipe nobody reads any more fail with EPIPE (errors the program
+   !! reports) rather than kill the process with SIGXFSZ or SIGPIPE.
+   integer function posix_ignore_output_signals() result(errno)
+      errno = int(c_ignore_output_signals())
+   end function posix_ignore_output_signals
 
    !> Kind, identity and permission bits of the file at `path` (links
    !! followed); errno_not_found when there is none.
@@ -167,6 +179,19 @@ contains
       errno = int(c_real_path(c_string(path), buf, int(max_path, c_size_t), n))
       real = from_c(buf, int(n))
    end function posix_real_path
+
+   !> The canonical absolute path of the file a write to `path` creates or
+   !! replaces: the file itself when it exists, otherwise the name a chain
+   !! of symbolic links pointing to nothing yet ends at, in its canonical
+   !! directory. On failure `target` is the path reached (for messages).
+   integer function posix_target_path(path, target) result(errno)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable, intent(out) :: target
+      character(kind=c_char) :: buf(max_path)
+      integer(c_size_t) :: n
+      errno = int(c_target_path(c_string(path), buf, int(max_path, c_size_t), n))
+      target = from_c(buf, int(n))
+   end function posix_target_path
 
    !> 0 when this process may write the existing file at `path`.
    integer function posix_check_writable(path) result(errno)

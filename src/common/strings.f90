@@ -1,11 +1,11 @@
 !> Small text helpers shared by the readers and the formatters.
 module strings
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use kinds, only: wp
    implicit none
    private
 
-   public :: itoa, num, upper, read_real, read_int
+   public :: itoa, num, escaped, upper, read_real, read_int
 
 contains
 
@@ -127,40 +127,133 @@ contains
       s = trim(buf)
    end function itoa
 
-   !> A short readable form of a number for messages: 386, 0.2, 1.5E-04.
-   pure function num(x) result(s)
+   !> A number for messages, warnings and generated docs: the shortest
+   !! decimal of at most 15 significant digits (or of `digits`, when given)
+   !! that reads back as x, else x to 15 (`digits`) significant digits:
+   !! 386, 0.2, 0.9999999, 1.5E-04, 1.0E-14. Every value a deck can give is
+   !! printed as written (a value is never rounded to the round number a
+   !! check compares it with: "G = 0.9999999", not "G = 1."); only the last
+   !! bits of a computed or converted value (75.00000000000001 from radians)
+   !! are left out, below every tolerance the program checks. Magnitudes
+   !! from 1e-3 to below 1e7 print in fixed point (whole numbers without a
+   !! point), others as d.dE+nn.
+   pure function num(x, digits) result(s)
       real(wp), intent(in) :: x
+      integer, intent(in), optional :: digits
       character(len=:), allocatable :: s
-      character(len=32) :: buf
-      integer :: e, k
-      if (abs(x) < 1.0e15_wp .and. abs(x - anint(x)) <= 1.0e-12_wp*max(1.0_wp, abs(x))) then
-         write (buf, '(i0)') nint(x, kind=8)
-         s = trim(buf)
-      else if (abs(x) >= 1.0e-3_wp .and. abs(x) < 1.0e6_wp) then
-         write (buf, '(f0.6)') x
-         s = trim(buf)
-         k = len(s)
-         do while (s(k:k) == '0')
-            k = k - 1
-         end do
-         s = s(1:k)
-         if (s(1:1) == '.') s = '0'//s
-         if (s(1:2) == '-.') s = '-0'//s(2:)
-      else
-         if (abs(x) >= 1.0e100_wp .or. (abs(x) < 1.0e-99_wp .and. abs(x) > 0.0_wp)) then
-            write (buf, '(es13.5e3)') x
-         else
-            write (buf, '(es13.5)') x
-         end if
-         s = trim(adjustl(buf))
-         e = index(s, 'E')
-         k = e - 1
-         do while (s(k:k) == '0')
-            k = k - 1
-         end do
-         if (s(k:k) == '.') k = k + 1
-         s = s(1:k)//s(e:)
+      integer, parameter :: max_digits = 15
+      character(len=40) :: buf
+      character(len=:), allocatable :: mantissa, sign
+      integer :: p, p_max, e, n, ios
+      real(wp) :: back
+
+      if (ieee_is_nan(x)) then
+         s = 'NaN'
+         return
+      else if (.not. ieee_is_finite(x)) then
+         s = merge('-Infinity', 'Infinity ', x < 0.0_wp)
+         s = trim(s)
+         return
+      else if (.not. abs(x) > 0.0_wp) then
+         s = '0'
+         return
       end if
+      p_max = max_digits
+      if (present(digits)) p_max = max(1, min(digits, max_digits))
+      ! the fewest significant digits that read back as x
+      do p = 1, p_max
+         call scientific(abs(x), p, mantissa, e)
+         buf = buf_of(mantissa, e)
+         read (buf, *, iostat=ios) back
+         if (ios == 0 .and. .not. abs(back - abs(x)) > 0.0_wp) exit
+      end do
+      if (p > p_max) call scientific(abs(x), p_max, mantissa, e)
+      ! trailing zeros carry nothing
+      n = len(mantissa)
+      do while (n > 1 .and. mantissa(n:n) == '0')
+         n = n - 1
+      end do
+      mantissa = mantissa(1:n)
+      sign = ''
+      if (x < 0.0_wp) sign = '-'
+      if (e >= -3 .and. e <= 6) then
+         if (e >= 0) then
+            if (n <= e + 1) then
+               s = sign//mantissa//repeat('0', e + 1 - n)
+            else
+               s = sign//mantissa(1:e + 1)//'.'//mantissa(e + 2:)
+            end if
+         else
+            s = sign//'0.'//repeat('0', -e - 1)//mantissa
+         end if
+      else
+         if (n == 1) then
+            s = sign//mantissa//'.0'
+         else
+            s = sign//mantissa(1:1)//'.'//mantissa(2:)
+         end if
+         write (buf, '(i2.2)') abs(e)
+         if (abs(e) > 99) write (buf, '(i0)') abs(e)
+         s = s//'E'//merge('-', '+', e < 0)//trim(buf)
+      end if
+   contains
+      !> The significant digits of y > 0 rounded to p, and its decimal exponent.
+      pure subroutine scientific(y, p, digits_out, exponent)
+         real(wp), intent(in) :: y
+         integer, intent(in) :: p
+         character(len=:), allocatable, intent(out) :: digits_out
+         integer, intent(out) :: exponent
+         character(len=40) :: b
+         character(len=16) :: fmt
+         integer :: k, epos
+         write (fmt, '(a,i0,a,i0,a)') '(es', p + 10, '.', p - 1, 'e4)'
+         write (b, fmt) y
+         b = adjustl(b)
+         epos = index(b, 'E')
+         read (b(epos + 1:), *) exponent
+         digits_out = ''
+         do k = 1, epos - 1
+            if (b(k:k) >= '0' .and. b(k:k) <= '9') digits_out = digits_out//b(k:k)
+         end do
+      end subroutine scientific
+      !> The text "d.dddE+eeee" of significant digits m and exponent ex.
+      pure function buf_of(m, ex) result(t)
+         character(len=*), intent(in) :: m
+         integer, intent(in) :: ex
+         character(len=:), allocatable :: t
+         character(len=12) :: eb
+         write (eb, '(i0)') ex
+         t = m(1:1)//'.'//m(2:)//'0E'//trim(eb)
+      end function buf_of
    end function num
+
+   !> A name (a file's) for messages and the listing, one line whatever it
+   !! holds: a backslash and the control characters are escaped as in C
+   !! (\\, \n, \t, \r, \xNN), so that a name never splits a message or
+   !! an echo line and the escaped form cannot be mistaken for another name.
+   pure function escaped(name) result(s)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: s
+      character(len=*), parameter :: hex = '0123456789ABCDEF'
+      integer :: i, c
+      s = ''
+      do i = 1, len(name)
+         c = iachar(name(i:i))
+         select case (c)
+         case (92)
+            s = s//'\\'
+         case (10)
+            s = s//'\n'
+         case (9)
+            s = s//'\t'
+         case (13)
+            s = s//'\r'
+         case (0:8, 11:12, 14:31, 127)
+            s = s//'\x'//hex(c/16 + 1:c/16 + 1)//hex(mod(c, 16) + 1:mod(c, 16) + 1)
+         case default
+            s = s//name(i:i)
+         end select
+      end do
+   end function escaped
 
 end module strings

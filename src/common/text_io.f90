@@ -7,7 +7,7 @@
 module text_io
    use, intrinsic :: iso_fortran_env, only: int64, iostat_end
    use error_handling, only: error_t, error_set, exit_io
-   use strings, only: itoa
+   use strings, only: itoa, escaped
    implicit none
    private
 
@@ -36,7 +36,8 @@ module text_io
 
 contains
 
-   !> Read the file at path into lines (line terminators removed).
+   !> Read the file at path into lines (line terminators removed); its
+   !! messages name it escaped (a newline in a name would split them).
    subroutine read_text_file(path, lines, err)
       character(len=*), intent(in) :: path
       type(string_t), allocatable, intent(out) :: lines(:)
@@ -45,11 +46,11 @@ contains
 
       inquire (file=path, exist=exists)
       if (.not. exists) then
-         call error_set(err, exit_io, trim(path)//': no such file')
+         call error_set(err, exit_io, escaped(trim(path))//': no such file')
          allocate (lines(0))
          return
       end if
-      call read_stream(path, trim(path), lines, err)
+      call read_stream(path, escaped(trim(path)), lines, err)
    end subroutine read_text_file
 
    !> Read standard input to its end into lines; messages name it

@@ -11,7 +11,9 @@ module run_case_mod
    use default_deck, only: default_deck_lines
    use model_builder, only: build_model
    use model, only: model_t
-   use simulation, only: run_simulation, initial_warnings
+   use simulation, only: run_to_end, initial_warnings
+   use run_loop, only: run_t
+   use sink_list, only: sink_list_t
    use run_summary, only: run_summary_t
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
@@ -93,7 +95,9 @@ contains
       type(run_summary_t) :: res
       type(error_t) :: run_err, io_err
       ! on the heap: it holds the model, which outgrows the stack's static limit
-      type(case_sink_t), allocatable :: sink
+      type(case_sink_t), allocatable, target :: sink
+      type(sink_list_t) :: sinks
+      type(run_t) :: run
       type(output_file_t) :: h5_file
       type(string_t), allocatable :: notes(:)
       integer :: o
@@ -106,14 +110,14 @@ contains
             allocate (warnings(0))
          end if
       end if
-      if (err%failed() .or. req%check_only) return
-      allocate (notes(0), sink)
+      if (err%failed()) return
 
       ! outputs are written under temporary names and put in place of their
       ! targets at the end (output_files); nothing is created before the
-      ! paths are known not to be inputs
+      ! paths are known not to be inputs (--check checks them too)
       call check_output_paths(deck_files(req), pulse_file(deck, m), req%listing_file, req%h5_file, err)
-      if (err%failed()) return
+      if (err%failed() .or. req%check_only) return
+      allocate (notes(0), sink)
       call sink%listing%lst%create_text(req%listing_file, 'listing', err)
       if (err%failed()) return
       sink%with_h5 = len(req%h5_file) > 0
@@ -128,13 +132,21 @@ contains
          end if
       end if
       call listing_sink_start(sink%listing, deck, m, hsri2d_version)
-      call run_simulation(m, res, run_err, sink)
+      call sinks%add(sink)
+      call run%init(m, sinks=sinks)
+      call run_to_end(run, res, run_err)
       if (sink%with_h5) call sink%h5%close(io_err)
       call sink%listing%lst%flush(io_err)
       ! An input/output error outweighs a numerical failure: the outputs
       ! that would show the run up to the failure are incomplete.
       if (run_err%code == exit_io .and. io_err%failed()) then
-         io_err%message = run_err%message//new_line('a')//io_err%message
+         ! the run ended on an output's failure, which closing that output
+         ! may report again: said once
+         if (index(run_err%message, io_err%message) == 0) then
+            io_err%message = run_err%message//new_line('a')//io_err%message
+         else
+            io_err = run_err
+         end if
       else if (run_err%code == exit_io) then
          io_err = run_err
       else if (run_err%failed() .and. io_err%failed()) then
@@ -168,8 +180,12 @@ contains
       type(output_registry_t), intent(in) :: reg
       type(output_frame_t), intent(in) :: first
       type(error_t), intent(inout) :: err
-      call this%listing%begin(sys, reg, first, err)
+      ! the HDF5 file's structure first (it is flushed at once), then the
+      ! listing's first pages, what is known before the run, on the disk
+      ! before the run starts: a run killed early leaves both (docs/usage.md)
       if (this%with_h5) call this%h5%begin(sys, reg, first, err)
+      call this%listing%begin(sys, reg, first, err)
+      call this%listing%lst%flush(err)
    end subroutine case_begin
 
    subroutine case_record(this, frame, err)
@@ -177,6 +193,10 @@ contains
       type(output_frame_t), intent(in) :: frame
       type(error_t), intent(inout) :: err
       call this%listing%record(frame, err)
+      ! each page of tables on the disk as soon as it is complete (every
+      ! 50 records; nothing to write otherwise), and a listing nobody can
+      ! read any more (a closed pipe) ends the run at once
+      call this%listing%lst%flush(err)
       if (this%with_h5) call this%h5%record(frame, err)
    end subroutine case_record
 
@@ -211,6 +231,9 @@ contains
       type(output_registry_t) :: reg
       allocate (lines(0))
       call read_case_deck(req, deck, m, err)
+      if (err%failed()) return
+      ! the table goes where the listing would (-o or standard output)
+      call check_output_paths(deck_files(req), pulse_file(deck, m), req%listing_file, '', err)
       if (err%failed()) return
       call system_build(m, sys)
       call registry_build(sys, reg)

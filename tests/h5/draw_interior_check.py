@@ -5,7 +5,10 @@ floor): the SVG names every resolved surface, draws the flat ones as
 segments from (X, Y) to their far end as the listing gives them (their
 length and direction checked against the deck's D and PSI), the
 occupant's seven joints, and the body points' contact arcs where f.1 puts
-them.
+them. A deck whose run fails numerically (status 3) is drawn the same
+(issue 14, item 27); an output that is one of the inputs (a deck, through a
+link, or standard input) is refused with status 1 and the deck left as it
+was (item 9); a symbolic link given as the output stays, its target written.
 
 Usage: draw_interior_check.py HSRI2D TOOL DECK WORKDIR
 """
@@ -69,4 +72,62 @@ p = subprocess.run([sys.executable, tool, "--hsri2d", hsri2d, os.path.join(work,
                    capture_output=True, text=True)
 if p.returncode == 0:
     fail("a missing deck did not fail")
+
+# a run that ends in a numerical failure (an energy-balance tolerance no run
+# meets: status 3) is drawn: the drawing needs only t = 0
+tight = os.path.join(work, "tight.deck")
+with open(tight, "w") as f:
+    f.write("*NUMERICS\n" + "1.0E-12".rjust(32) + "\n")
+failing = subprocess.run([hsri2d, deck, tight, "-o", os.devnull], capture_output=True)
+if failing.returncode != 3:
+    fail(f"the deck with EBTOL = 1e-12 ends with status {failing.returncode}, not 3: the test needs another deck")
+out3 = os.path.join(work, "failing.svg")
+p = subprocess.run([sys.executable, tool, "--hsri2d", hsri2d, deck, tight, "-o", out3], capture_output=True, text=True)
+if p.returncode != 0:
+    fail(f"a run ending with status 3 was not drawn: status {p.returncode}: {p.stderr}")
+if open(out3, encoding="utf-8").read() != text:
+    fail("the drawing of the failing run differs from the drawing at t = 0")
+
+# an output that is an input is refused, the input untouched
+mine = os.path.join(work, "mine.deck")
+deck_text = open(deck, encoding="utf-8").read()
+with open(mine, "w", encoding="utf-8") as f:
+    f.write(deck_text)
+link = os.path.join(work, "link.svg")
+if os.path.lexists(link):
+    os.unlink(link)
+os.symlink("mine.deck", link)
+for args, stdin, what in (([mine, "-o", mine], None, "-o the deck"),
+                          ([mine, "-o", link], None, "-o a link to the deck"),
+                          (["-", "-o", mine], mine, "-o the deck on standard input"),
+                          (["-", "-o", "/dev/stdin"], mine, "-o /dev/stdin, the deck on standard input")):
+    with open(stdin or os.devnull, "rb") as f:
+        p = subprocess.run([sys.executable, tool, "--hsri2d", hsri2d, *args], stdin=f, capture_output=True, text=True)
+    if p.returncode != 1 or "refusing to overwrite" not in p.stderr:
+        fail(f"{what}: status {p.returncode}, expected 1 and a refusal: {p.stderr}")
+    if open(mine, encoding="utf-8").read() != deck_text:
+        fail(f"{what}: the deck was changed")
+if not os.path.islink(link):
+    fail("link.svg is no longer a symbolic link")
+
+# the deck from standard input is drawn like the deck from its file
+out_stdin = os.path.join(work, "stdin.svg")
+with open(mine, "rb") as f:
+    p = subprocess.run([sys.executable, tool, "--hsri2d", hsri2d, "-", "-o", out_stdin], stdin=f,
+                       capture_output=True, text=True)
+if p.returncode != 0 or open(out_stdin, encoding="utf-8").read() != text:
+    fail(f"the deck on standard input was not drawn as from its file: status {p.returncode}: {p.stderr}")
+
+# a symbolic link to nothing yet as the output: the link stays, its target is written
+dangling = os.path.join(work, "dangling.svg")
+drawn = os.path.join(work, "drawn.svg")
+for path in (dangling, drawn):
+    if os.path.lexists(path):
+        os.unlink(path)
+os.symlink("drawn.svg", dangling)
+p = subprocess.run([sys.executable, tool, "--hsri2d", hsri2d, deck, "-o", dangling], capture_output=True, text=True)
+if p.returncode != 0 or not os.path.islink(dangling) or not os.path.isfile(drawn):
+    fail(f"-o a dangling link: status {p.returncode}, the link {'kept' if os.path.islink(dangling) else 'replaced'}")
+if [n for n in os.listdir(work) if n.endswith(".part")]:
+    fail("a temporary file was left")
 print(f"{NAME}: PASS ({len(labels)} surfaces, {len(joints)} joints, {len(arcs)} arcs)")

@@ -1,4 +1,4 @@
-"""The HDF5 file as h5py 3 reads it (format_version 2, docs/usage.md):
+"""The HDF5 file as h5py 3 reads it (format_version 3, docs/usage.md):
 root attributes, every dataset's columns/units/description as Python str,
 /time 1-D, string datasets readable with .asstr().
 
@@ -36,8 +36,8 @@ def main():
 
     with h5py.File("run.h5", "r") as f:
         a = f.attrs
-        if int(a["format_version"]) != 2:
-            fail(f"format_version is {a['format_version']!r}, expected 2")
+        if int(a["format_version"]) != 3:
+            fail(f"format_version is {a['format_version']!r}, expected 3")
         for key, want in (("program", "hsri2d"), ("version", version)):
             if not isinstance(a[key], str) or a[key] != want:
                 fail(f"root attribute {key} is {a[key]!r}, expected the str {want!r}")
@@ -122,7 +122,31 @@ def main():
         for t, line in zip(f["events/time"][()], text):
             if f"t ={t:10.5f} s   {line.rstrip()}" not in listing:
                 fail(f"event {line.rstrip()!r} at t = {t} is not in the listing's summary")
+    check_utf8_comment(exe)
     print(f"{NAME}: PASS ({len(datasets)} datasets, {n} rows)")
+
+
+def check_utf8_comment(exe):
+    """The documented recipe, f["input/deck"].asstr()[:], on a deck whose comment
+    holds UTF-8 gives back its lines (the dataset was typed ASCII: UnicodeDecodeError)."""
+    deck = subprocess.run([exe, "--default-deck"], capture_output=True, text=True, check=True).stdout
+    comment = "$ crash pulse \u00e0 la SAE J211 \u2014 \u0394v = 48 km/h"
+    with open("utf8.deck", "w", encoding="utf-8") as out:
+        out.write(comment + "\n" + deck)
+    p = subprocess.run([exe, "utf8.deck", "-o", "utf8.lst", "--h5", "utf8.h5"],
+                       capture_output=True, text=True, timeout=120)
+    if p.returncode != 0:
+        fail(f"the run of a deck with a UTF-8 comment failed: {p.stderr}")
+    with h5py.File("utf8.h5", "r") as f:
+        try:
+            lines = f["input/deck"].asstr()[:]
+        except UnicodeDecodeError as e:
+            fail(f'f["input/deck"].asstr()[:] raised {e}')
+        if lines[0] != comment:
+            fail(f"/input/deck's first line is {lines[0]!r}, expected {comment!r}")
+        if [line.rstrip() for line in lines[1:]] != [line.rstrip() for line in deck.splitlines()]:
+            fail("/input/deck does not hold the deck's lines")
+        f["events/text"].asstr()[:]
 
 
 if __name__ == "__main__":

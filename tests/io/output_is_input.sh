@@ -3,7 +3,11 @@
 # anything is written: the listing or the HDF5 file naming an input deck or
 # the CSV pulse file (by inode, through a symbolic link, by another spelling
 # of the path), -o and --h5 naming one file, standard output redirected to
-# the HDF5 file or appended to a deck. The inputs stay as they were and no output file is created.
+# the HDF5 file or appended to a deck, and the same for a deck read from
+# standard input (-): -o or --h5 naming the file on standard input
+# (/dev/stdin, /dev/fd/0, /proc/self/fd/0), standard output appended to it,
+# and standard input a pipe that -o would write back into. The inputs stay
+# as they were and no output file is created.
 #
 # Usage: output_is_input.sh HSRI2D WORK_DIRECTORY
 test_name=io_output_is_input
@@ -59,4 +63,36 @@ rm -f out.h5
 expect_status 1 $? "in.deck >>in.deck"
 expect_text err 'standard output is the input deck in.deck' "in.deck >>in.deck"
 same_content in.deck in.copy "in.deck >>in.deck"
+
+# A deck read from standard input (issue 14, item 8): refused as for a named
+# deck, the deck untouched.
+stdin_refused() { # regex args... (standard input: in.deck)
+    local regex=$1
+    shift
+    "$exe" "$@" <in.deck >out 2>err
+    expect_status 1 $? "$* <in.deck"
+    expect_text err "$regex" "$* <in.deck"
+    no_crash err
+    same_content in.deck in.copy "$* <in.deck"
+    no_part_files .
+}
+for name in /dev/stdin /dev/fd/0 /proc/self/fd/0; do
+    stdin_refused "the listing file $name is the input deck \(standard input\); refusing" - -o "$name"
+    stdin_refused "the HDF5 file $name is the input deck \(standard input\); refusing" - --h5 "$name" -o out.lst
+    stdin_refused "the listing file $name is the input deck \(standard input\)" @default - -o "$name"
+done
+[ ! -e out.lst ] || fail "out.lst was created"
+
+# Standard output appended to the deck read from standard input.
+"$exe" - <in.deck >>in.deck 2>err
+expect_status 1 $? "- <in.deck >>in.deck"
+expect_text err 'standard output is the input deck \(standard input\); refusing' "- <in.deck >>in.deck"
+same_content in.deck in.copy "- <in.deck >>in.deck"
+
+# Standard input a pipe: -o /dev/stdin would write into the pipe the deck
+# came through (nobody reads it: the run would block once it is full).
+cat in.deck | timeout 60 "$exe" - -o /dev/stdin >out 2>err
+expect_status 1 "${PIPESTATUS[1]}" "cat in.deck | - -o /dev/stdin"
+expect_text err 'the listing file /dev/stdin is the input deck \(standard input\)' "a pipe on standard input"
+
 pass

@@ -11,6 +11,13 @@ Usage: run_checks.py HSRI2D DECK_DIRECTORY WORK_DIRECTORY
   listing (every shipped deck, with NOUT = 3 too) is wider than 132 columns.
 - NBODY = 2 warns, on standard error and in the listing, that the occupant
   position changes nothing without *SURFACES (the body-only deck).
+- Adversarial listings keep to 132 columns, wrapping what is longer on
+  indented lines without losing a character (issue 14, 21): a deck and a
+  pulse file at paths of some 300 characters with many warnings naming them,
+  the belts' COUPLING = ALL; and every archived listing (tests/listings).
+- Extreme but legal values print no asterisks (issue 14, 22): a pulse table
+  of 100,000 rows, the table's limit (its index widens); joints, vehicle and
+  pulse at the ends of their ranges.
 """
 import os
 import re
@@ -127,6 +134,96 @@ if not re.search(r"hsri2d: warning: .*NBODY = 2.*changes nothing", p.stderr):
     fail(f"NBODY = 2: no warning on standard error: {p.stderr[:300]}")
 if "WARNING" not in open("passenger.lst").read():
     fail("NBODY = 2: no warning in the listing")
+
+# 4. long lines wrapped, never cut (issue 14, 21)
+def wrapped_text(path, start):
+    """The line starting with `start` and its continuation lines (indented
+    9 columns), joined without their indentation."""
+    lines = open(path).read().splitlines()
+    for i, line in enumerate(lines):
+        if line.startswith(start):
+            text = line
+            for more in lines[i + 1:]:
+                if not more.startswith(" " * 9) or more[9:10] == " ":
+                    break
+                text += more[9:]
+            return text
+    return None
+
+
+deep = os.path.join(os.path.abspath(work), "long_" + "d" * 90, "e" * 90, "f" * 60)
+os.makedirs(deep, exist_ok=True)
+long_deck = os.path.join(deep, "a_deck_with_a_long_name_" + "g" * 20 + ".deck")
+# the default deck in it for a passenger without belts (its belts and the driver's
+# surfaces unused: warnings naming
+# the file), its pulse from a CSV file in the long directory, a short run
+write(os.path.join(deep, "pulse_with_a_long_name.csv"), "t, xddot\n0, -20\n0.1, -20\n0.11, 0\n")
+default_text = open(os.path.join(decks, "default.deck")).read()
+lines = default_text.splitlines()
+header = next(i for i, l in enumerate(lines) if l.upper().startswith("*OPTIONS"))
+data = next(i for i in range(header + 1, len(lines)) if lines[i].strip() and not lines[i].startswith("$"))
+lines[data] = card(2, 0, 1, 2, 3, 2).rstrip("\n")
+write(long_deck, "\n".join(lines) + "\n")
+write(os.path.join(deep, "more.deck"), "*PULSEFILE\npulse_with_a_long_name.csv\n*TIME\n" + card("0.02"))
+p = run(long_deck, os.path.join(deep, "more.deck"), "-o", "long.lst")
+if p.returncode != 0:
+    fail(f"the long path: status {p.returncode}: {p.stderr[:300]}")
+else:
+    for problem in listing_problems("long.lst"):
+        fail("the long path: " + problem)
+    text = open("long.lst").read()
+    if text.count(" WARNING ") < 2:
+        fail("the long path: expected warnings naming the deck in the listing")
+    if max(len(l) for l in text.splitlines()) < 120:
+        fail("the long path: no line came near the width: the test tests nothing")
+    joined = wrapped_text("long.lst", " DECK    " + long_deck[:20])
+    if joined != " DECK    " + long_deck:
+        fail(f"the long path: the DECK line is not the path wrapped: {joined!r}")
+    joined = wrapped_text("long.lst", " PULSE   ")
+    if joined is None or "pulse_with_a_long_name.csv" not in joined.replace(" ", ""):
+        fail(f"the long path: the PULSE line lost the file's name: {joined!r}")
+write("coupling.deck", "*BELTOPTIONS\n" + card("ALL") + "*TIME\n" + card("0.02"))
+p = run("@default", "coupling.deck", "-o", "coupled.lst")
+if p.returncode != 0:
+    fail(f"COUPLING = ALL: status {p.returncode}: {p.stderr[:300]}")
+else:
+    for problem in listing_problems("coupled.lst"):
+        fail("COUPLING = ALL: " + problem)
+
+listings = os.path.join(os.path.dirname(os.path.abspath(decks)), "tests", "listings")
+for name in sorted(os.listdir(listings)):
+    if name.endswith(".lst"):
+        for problem in listing_problems(os.path.join(listings, name)):
+            fail("archived: " + problem)
+
+# 5. extreme but legal values (issue 14, 22): 100,000 pulse rows
+rows = "".join(card(f"{k * 1e-6:.6f}", -20) for k in range(100000))
+write("pulse100k.deck", "*PULSE\n" + rows + "*TIME\n" + card("0.01", "", "0.01"))
+p = run(body_only, "pulse100k.deck", "-o", "pulse100k.lst")
+if p.returncode != 0:
+    fail(f"100,000 pulse rows: status {p.returncode}: {p.stderr[:300]}")
+else:
+    for problem in listing_problems("pulse100k.lst"):
+        fail("100,000 pulse rows: " + problem)
+    if not re.search(r"^100000 +0\.1", open("pulse100k.lst").read(), re.M):
+        fail("100,000 pulse rows: the last row's index is not printed as 100000")
+
+# ... and parameters at the ends of their ranges (the listing's tables before
+# the run; the run itself may well fail, status 3, its listing delivered)
+body_lines = open(body_only).read().splitlines()
+first = next(i for i, l in enumerate(body_lines) if l.upper().startswith("*JOINTS"))
+joint_cards = [l.ljust(72) for l in body_lines[first + 1:] if l.strip() and not l.startswith("$")][:7]
+# the stiffnesses, friction and its velocity limit at their largest, the stop angles as they were
+joints = "".join(c[:2] + "%10s" % "1.0E+12" * 3 + c[32:52] + "%10s" % "1.0E+12" * 2 + "\n" for c in joint_cards)
+write("extreme.deck", "*JOINTS\n" + joints + "*VEHICLE\n" + card("1.0E+12", "1.0E+12", -100000, 100000, -90, -100000)
+      + "*PULSE\n" + card(0, -10000, 10000, "-1.0E+08") + card(1000, 10000, -10000, "1.0E+08")
+      + "*TIME\n" + card("0.001", "", "0.001"))
+p = run(body_only, "extreme.deck", "-o", "extreme.lst")
+if p.returncode not in (0, 3):
+    fail(f"extreme values: status {p.returncode}: {p.stderr[:300]}")
+else:
+    for problem in listing_problems("extreme.lst"):
+        fail("extreme values: " + problem)
 
 if failures:
     sys.exit(1)

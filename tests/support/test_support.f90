@@ -23,7 +23,7 @@ module test_support
 
    public :: default_model, model_from_cards, model_with_changes, rng_t, kinetic_energy_section_b
    public :: cards_of_default, body_only_model, body_only_with_changes, cards_of_body_only
-   public :: shipped_model, table_curve
+   public :: shipped_model, shipped_deck_names, table_curve
 
    !> A linear congruential generator: the same numbers on every machine.
    type :: rng_t
@@ -115,6 +115,32 @@ contains
       call deck_finish(deck, err)
       if (.not. err%failed()) call build_model(deck, m, err)
    end subroutine shipped_model
+
+   !> The file names of every shipped deck (decks/*.deck), from the
+   !! environment variable HSRI2D_DECK_NAMES (comma-separated; CMake sets it
+   !! from the folder for the unit tests); none when it is not set.
+   function shipped_deck_names() result(names)
+      character(len=:), allocatable :: names(:)
+      character(len=8192) :: list
+      integer :: length, status, start, comma, n, k
+      call get_environment_variable('HSRI2D_DECK_NAMES', list, length, status)
+      if (status /= 0 .or. length == 0) then
+         allocate (character(len=1) :: names(0))
+         return
+      end if
+      n = count([(list(k:k) == ',', k=1, length)]) + 1
+      allocate (character(len=64) :: names(n))
+      start = 1
+      do k = 1, n
+         comma = index(list(start:length), ',')
+         if (comma == 0) then
+            names(k) = list(start:length)
+         else
+            names(k) = list(start:start + comma - 2)
+            start = start + comma
+         end if
+      end do
+   end function shipped_deck_names
 
    !> A model from card images alone.
    subroutine model_from_cards(cards, m, err)

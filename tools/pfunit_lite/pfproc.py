@@ -6,7 +6,8 @@ the subset of pFUnit described in tests/funit_lite/README.md. The same .pf
 files build unchanged under a real pFUnit.
 
     pfproc.py module INPUT.pf OUTPUT.F90
-        Write the test module with every @assert... line replaced by a call
+        Check that INPUT.pf is written as pFUnit 4.14 reads it (below), then
+        write the test module with every @assert... line replaced by a call
         to the assertion of the funit module (tests/funit_lite/funit.F90)
         carrying the .pf file's name and line, followed by
         `if (anyExceptions()) return`. `#line` markers keep compiler
@@ -18,6 +19,18 @@ files build unchanged under a real pFUnit.
         a summary; its exit status is 1 if any test failed.
 
 Malformed input is reported as `file:line: error: ...` with exit status 1.
+So is what the stand-in could read but pFUnit 4.14's preprocessor (funitproc)
+cannot, since it matches each line as a whole against a regular expression:
+
+  - an @ directive continued with `&` (pFUnit leaves it as invalid Fortran);
+  - a comment after an @ directive (pFUnit takes it for part of the
+    directive: an @assert's comment swallows the location arguments);
+  - an @assert whose one line, as pFUnit writes it (`  call assertX(..., &`),
+    is wider than the 132 columns the tests are compiled with; likewise the
+    line pFUnit writes to register a test, and the suite function's name
+    (`<module>_suite`), which must be a Fortran name (63 characters at most);
+  - a comment on the `module` statement (pFUnit then does not see the module).
+
 Standard library only.
 """
 
@@ -51,6 +64,17 @@ KEYWORD_ARG_RE = re.compile(r"\s*[A-Za-z]\w*\s*=(?!=)")
 
 # Longest generated line before continuation (the project allows 132).
 WRAP_WIDTH = 100
+
+# The free-form line width the tests are compiled with (cmake/compilers.cmake,
+# -ffree-line-length-132), which also applies to the lines pFUnit generates.
+PFUNIT_LINE_LIMIT = 132
+# The longest Fortran name (F2008 3.2.2).
+FORTRAN_NAME_LIMIT = 63
+
+# How pFUnit 4.14's preprocessor recognises a test module and an assertion
+# (bin/funit/pFUnitParser.py, AtBegin and AtAssert): the whole line must match.
+PFUNIT_MODULE_RE = re.compile(r"\s*module\s+(\w*)\s*$", re.IGNORECASE)
+PFUNIT_ASSERT_RE = re.compile(r"\s*@assert(\w+)\s*\((.*)\)\s*$", re.IGNORECASE)
 
 
 class PfError(Exception):
@@ -100,27 +124,20 @@ def is_blank_or_comment(line):
     return not stripped or stripped.startswith("!")
 
 
-def read_directive(lines, start, path):
-    """Join a directive continued with `&` (comment lines may sit between
-    the parts) and drop its comments. Returns (text, index after it)."""
-    text, quote = strip_comment(lines[start], None)
-    text = text.rstrip()
-    i = start + 1
-    while text.endswith("&"):
-        text = text[:-1]
-        while i < len(lines) and is_blank_or_comment(lines[i]) and not quote:
-            i += 1
-        if i == len(lines):
-            raise PfError(path, start + 1, "directive continued past the end of the file")
-        part = lines[i].lstrip()
-        if part.startswith("&"):
-            part = part[1:]
-        part, quote = strip_comment(part, quote)
-        text += part.rstrip()
-        i += 1
+def read_directive(line, path, number):
+    """The text of a directive, which must stand alone on its line, as
+    pFUnit 4.14 reads it: no continuation, no trailing comment."""
+    code, quote = strip_comment(line, None)
     if quote:
-        raise PfError(path, start + 1, "unterminated character string in directive")
-    return text.strip(), i
+        raise PfError(path, number, "unterminated character string in directive")
+    code = code.rstrip()
+    if code.endswith("&"):
+        raise PfError(path, number, "an @ directive must stand on one line: pFUnit 4.14 does not join "
+                                    "continuation lines (compute long arguments into a variable first)")
+    if code != line.rstrip():
+        raise PfError(path, number, "a comment after an @ directive: pFUnit 4.14 reads it as part of the "
+                                    "directive (put the comment on a line of its own above)")
+    return code.strip()
 
 
 def split_arguments(text, path, line):
@@ -215,6 +232,7 @@ class Parser:
         self.out = []
         self.pending = None  # (directive, line) waiting for its subroutine
         self.disabled = False
+        self.module_line = 1
 
     def error(self, line, text):
         return PfError(self.path, line, text)
@@ -226,9 +244,8 @@ class Parser:
         while i < len(self.lines):
             line = self.lines[i]
             if line.lstrip().startswith("@"):
-                text, after = read_directive(self.lines, i, self.path)
-                self.directive(text, i + 1, after - i)
-                i = after
+                self.directive(read_directive(line, self.path, i + 1), i + 1)
+                i += 1
                 continue
             if not is_blank_or_comment(line):
                 self.statement(line, i + 1)
@@ -245,6 +262,23 @@ class Parser:
             raise self.error(1, "no 'module <name>' statement found")
         if not self.suite.tests:
             raise self.error(1, "no @test found")
+        self.check_pfunit_registration()
+
+    def check_pfunit_registration(self):
+        """The names and lines pFUnit 4.14 writes to register the tests
+        (Parser.printMakeSuite, addSimpleTestMethod) must be valid Fortran."""
+        module, line = self.suite.module, self.module_line
+        suite_function = module + "_suite"
+        if len(suite_function) > FORTRAN_NAME_LIMIT:
+            raise self.error(line, f"module name '{module}' too long: pFUnit names its suite "
+                                   f"'{suite_function}', more than {FORTRAN_NAME_LIMIT} characters")
+        fixtures = "".join(f", {keyword}={name}" for keyword, name
+                           in (("setUp", self.suite.before), ("tearDown", self.suite.after)) if name)
+        for name, number, _ in self.suite.tests:
+            width = len(f"      {name}{fixtures}))")
+            if width > PFUNIT_LINE_LIMIT:
+                raise self.error(number, f"test name '{name}' too long: pFUnit registers it on a line of "
+                                         f"{width} columns, more than {PFUNIT_LINE_LIMIT}")
 
     def statement(self, line, number):
         """A Fortran line: the module statement, or the subroutine a pending
@@ -254,6 +288,9 @@ class Parser:
             return
         match = MODULE_RE.match(strip_comment(line, None)[0])
         if match and not self.suite.module:
+            if not PFUNIT_MODULE_RE.match(line):
+                raise self.error(number, "a comment on the module statement: pFUnit 4.14 would not see the "
+                                         "module (put the comment on a line of its own)")
             self.module(match.group(1), number)
 
     def module(self, name, number):
@@ -261,6 +298,7 @@ class Parser:
         if name.lower() != stem.lower():
             raise self.error(number, f"module '{name}' must be named after its file: '{stem}'")
         self.suite.module = name
+        self.module_line = number
 
     def subroutine(self, line, number):
         directive, _ = self.pending
@@ -280,14 +318,14 @@ class Parser:
         self.pending = None
         self.disabled = False
 
-    def directive(self, text, number, length):
+    def directive(self, text, number):
         match = re.match(r"@(\w+)\s*(.*)$", text, re.DOTALL)
         if not match:
             raise self.error(number, f"malformed directive '{text}'")
         name, rest = match.group(1), match.group(2)
         word = name.lower()
         if word in ASSERTIONS:
-            self.assertion(word, rest, number, length)
+            self.assertion(word, rest, number)
             return
         if word not in ("test", "before", "after", "disable"):
             raise self.error(number, f"@{name} is not supported by pfunit_lite "
@@ -300,9 +338,8 @@ class Parser:
             self.disable(number)
         else:
             self.expect_subroutine(word, number)
-        # Comment lines in place of the directive's lines.
+        # A comment line in place of the directive's line.
         self.out.append("!" + self.lines[number - 1].lstrip())
-        self.out.extend("!" for _ in range(length - 1))
 
     def disable(self, number):
         if not self.pending or self.pending[0] != "test" or self.disabled:
@@ -325,7 +362,7 @@ class Parser:
             if re.search(r"\b" + option + r"\s*=", rest, re.IGNORECASE):
                 raise self.error(number, f"@test option '{option}' is not supported by pfunit_lite")
 
-    def assertion(self, word, rest, number, length):
+    def assertion(self, word, rest, number):
         if self.pending:
             directive, line = self.pending
             raise self.error(line, f"@{directive} is not followed by a subroutine")
@@ -333,6 +370,7 @@ class Parser:
         args = split_arguments(rest, self.path, number)
         if len(args) < operands:
             raise self.error(number, f"@{procedure} needs at least {operands} argument(s)")
+        self.check_pfunit_width(number)
         location = f"location=SourceLocation({fortran_string(self.name)}, {number})"
         indent = re.match(r"\s*", self.lines[number - 1]).group(0)
         expansion = wrap(indent, f"call {procedure}(" + ", ".join(args + [location]) + ")")
@@ -341,7 +379,19 @@ class Parser:
         # compiler messages point at it; then numbering resumes after it.
         for text in expansion:
             self.out += [line_marker(number, self.path), text]
-        self.out.append(line_marker(number + length, self.path))
+        self.out.append(line_marker(number + 1, self.path))
+
+    def check_pfunit_width(self, number):
+        """pFUnit writes an @assert line as `  call assertX(<arguments>, &`
+        (pFUnitParser.py, AtAssert.action); that line must fit."""
+        match = PFUNIT_ASSERT_RE.match(self.lines[number - 1])
+        if not match:
+            raise self.error(number, "pFUnit 4.14 would not recognise this @assert line")
+        arguments = match.group(2)
+        written = f"  call assert{match.group(1)}({arguments}{', ' if arguments.strip() else ''}&"
+        if len(written) > PFUNIT_LINE_LIMIT:
+            raise self.error(number, f"pFUnit 4.14 writes this @assert on one line of {len(written)} columns, "
+                                     f"more than {PFUNIT_LINE_LIMIT} (compute long arguments into a variable first)")
 
 
 def parse(path):
