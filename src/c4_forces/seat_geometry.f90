@@ -179,8 +179,11 @@ contains
          phidot = fr%th8dot
       end if
       ! a numerical guard only: figure 12's logic (leg_rests, on accepted
-      ! steps) lifts the leg off the edge long before the line is this steep
-      cp = max(cp, 1.0e-3_wp)
+      ! steps) lifts the leg off the edge long before the line is this steep.
+      ! The floor keeps the segment's direction: a segment that points back
+      ! (cos < 0, the shank behind a knee the edge has just passed inside a
+      ! step) keeps its own line, not a near-vertical one through the edge
+      if (abs(cp) < 1.0e-3_wp) cp = sign(1.0e-3_wp, cp)
       ln%tan_phi = sp/cp
       sec2 = 1.0_wp + ln%tan_phi**2
       b = j + r*[sp, -cp]
