@@ -6,7 +6,8 @@ module effect_factory
    use kinds, only: wp
    use model, only: model_t, n_joint, n_dof, seat_none, nbelt_lap, nbelt_torso, coupling_all
    use preliminary, only: body_constants_t
-   use effect_base, only: effect_t, effect_slot_t
+   use effect_base, only: effect_t
+   use effect_slots, only: effect_slot_t
    use centrifugal, only: centrifugal_effect
    use gravity, only: gravity_effect
    use joint_elasticity, only: joint_elasticity_effect

@@ -27,15 +27,14 @@ module run_report
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
-   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired, &
-      event_shatter, event_cut
+   use effect_events, only: event_t
    use contact_tables, only: surface_name, contact_pair_t, is_undesired
    use contact_scene, only: scene_pairs, resolved_surface, surface_layers
    use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t
    use force_injuries, only: fc_defined, fs_defined, fc_name, fs_name
    use acceleration_criteria, only: hic_result_t
-   use event_text, only: event_description, event_is_note
+   use event_text, only: event_description
    use end_tests, only: end_reason_text, end_failure, end_energy
    implicit none
    private
@@ -905,7 +904,7 @@ contains
 
       call lst%heading('INJURY EVENTS (C.4.c FIGURE 10, C.4.f FIGURE 26)', 3)
       call put_events(.false.)
-      if (any([(event_is_note(res%events(i)%kind), i=1, res%n_events)])) then
+      if (any([(res%events(i)%note, i=1, res%n_events)])) then
          call lst%heading('NOTES (NOT INJURIES)', 3)
          call put_events(.true.)
       end if
@@ -975,7 +974,7 @@ contains
          n = 0
          do j = 1, res%n_events
             associate (e => res%events(j))
-               if (event_is_note(e%kind) .neqv. notes) cycle
+               if (e%note .neqv. notes) cycle
                n = n + 1
                head = '  t ='//fixed(e%t, 10, 5)//' s  '
                if (size(res%occ) > 1) head = head//'occupant '//itoa(e%occupant)

@@ -18,9 +18,11 @@ module simulation
    use runge_kutta4, only: rk4_stepper_t
    use adams_moulton, only: am_stepper_t, am_start_euler, am_start_rk4
    use dormand_prince, only: dopri_stepper_t
-   use effect_base, only: body_state_t, accept_result_t, event_t, event_tension, event_compression, event_shear, &
-      point_force_list_t, point_force_reserve, event_undesired
-   use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined
+   use effect_base, only: body_state_t
+   use effect_events, only: accept_result_t, event_t
+   use point_forces, only: point_force_list_t, point_force_reserve
+   use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined, force_injury_event, event_tension, &
+      event_compression, event_shear
    use joint_coupling, only: relative_angle
    use output_calc, only: head_chest_acceleration
    use output_registry, only: output_registry_t, output_frame_t
@@ -440,7 +442,8 @@ contains
          if (.not. limit > 0.0_wp .or. os%force_reported(c, index)) return
          if (.not. value > limit) return
          os%force_reported(c, index) = .true.
-         e = event_t(t=t_now, kind=kind, index=index, value=value, limit=limit, injury=.true., occupant=occ_i)
+         e = force_injury_event(kind, t_now, index, value, limit)
+         e%occupant = occ_i
          injured = .true.
          call summary_add_event(summary, e)
          if (present(sink) .and. .not. out_err%failed()) call sink%event(e, out_err)
@@ -487,7 +490,7 @@ contains
                   do j = 1, ar%n_events
                      ar%events(j)%occupant = occ_i
                      occ_injured(occ_i) = occ_injured(occ_i) .or. ar%events(j)%injury
-                     undesired = undesired .or. ar%events(j)%kind == event_undesired
+                     undesired = undesired .or. ar%events(j)%undesired
                      call summary_add_event(summary, ar%events(j))
                      if (present(sink) .and. .not. out_err%failed()) call sink%event(ar%events(j), out_err)
                   end do
