@@ -54,7 +54,8 @@ contains
                          //'of head and chest, the chest''s cumulative 3 ms clip; from the accelerations at ' &
                          //'accepted steps (docs/injury.md) |')
       call append_string(lines, '| `/events/time`, `/events/kind`, `/events/index`, `/events/text` | (k) | - | summary | ' &
-                         //'the events as they happened, by kind: '//event_kinds(.false.)//'; and notes, not injuries ' &
+                         //'the events as they happened, by kind (a code never renumbered; a new kind takes the next): ' &
+                         //event_kinds(.false.)//'; and notes, not injuries ' &
                          //'(their text begins "note:", the listing''s NOTES): '//event_kinds(.true.)//' |')
       call append_string(lines, '| `/input/deck` | (cards) | - | deck echo | the deck''s card images |')
    end function output_table_lines

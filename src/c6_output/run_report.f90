@@ -9,7 +9,6 @@
 module run_report
    use kinds, only: wp, deg, g_std, i8
    use strings, only: itoa
-   use text_io, only: string_t
    use model, only: model_t, n_joint, n_injury, joint_name, integrator_name, nint_adams
    use deck_reader, only: deck_t, echo_bad, echo_header
    use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text
@@ -277,25 +276,9 @@ contains
       allocate (tables(0))   ! (gfortran 12 -Wuninitialized: the assignment reads the descriptor)
       tables = scene_parameter_tables(m, deck)
       do k = 1, size(tables)
-         call put_table(lst, tables(k))
+         call lst%table(tables(k))
       end do
    end subroutine write_parameters
-
-   !> Any table (text_table): its title, kept on one page with its first
-   !! lines (keep_lines), then its lines; nothing for a table without lines.
-   subroutine put_table(lst, t)
-      type(listing_t), intent(inout) :: lst
-      type(text_table_t), intent(in) :: t
-      type(string_t), allocatable :: lines(:)
-      integer :: i
-      allocate (lines(0))
-      lines = t%lines()
-      if (size(lines) == 0) return
-      call lst%heading(t%title, t%keep_lines())
-      do i = 1, size(lines)
-         call lst%put(lines(i)%s)
-      end do
-   end subroutine put_table
 
    !> C.2: a_1..a_17, the scene, the initial state and accelerations.
    subroutine write_preliminary(lst, sys, reg, first)

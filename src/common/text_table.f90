@@ -225,13 +225,9 @@ contains
          end if
          lead_blanks = max(verify(text, ' '), 1) - 1
          first = start + lead_blanks
-         ! a cell may begin only after what the row holds (a wide cell before it)
-         if (start < 1) then
-            this%shift = this%shift + 1 - start
-            first = first + 1 - start
-            finish = finish + 1 - start
-            start = 1
-         else if (first <= this%last .and. len_trim(text) > 0) then
+         ! a cell's text may begin only after what the row holds (a wide cell
+         ! before it; the row's first column)
+         if (first <= this%last .and. len_trim(text) > 0) then
             this%shift = this%shift + this%last - first + 1
             finish = finish + this%last - first + 1
             start = start + this%last - first + 1
