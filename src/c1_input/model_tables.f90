@@ -50,8 +50,7 @@ contains
       type(text_table_t) :: t
       integer :: i
       t = new_table('TABLE 1 - BODY SEGMENTS (I AS IN TABLE 5)', keep=12)
-      call t%add_column('I', 4, cell_int, lead=3)
-      call t%add_column('SEGMENT', 14, cell_text)
+      call add_item_columns(t, 'I', 'SEGMENT')
       call t%add_column('MASS', 12, unit='lb*s^2/in', lead=3)
       call t%add_column('WEIGHT', 12, unit='lb', lead=3)
       call t%add_column('INERTIA', 12, unit='lb*in*s^2')
@@ -59,9 +58,7 @@ contains
       call t%add_column('CG DIST RHO', 12, unit='in')
       associate (b => m%body)
          do i = 1, n_seg
-            call t%new_row()
-            call t%put(i)
-            call t%put(segment_name(i))
+            call item_row(t, i, segment_name(i))
             call t%put(b%mass(i))
             call t%put(b%mass(i)*g_std)
             call t%put(b%inertia(i))
@@ -85,8 +82,7 @@ contains
       character(len=132) :: line
       integer :: i
       t = new_table('TABLE 1 - BODY JOINTS (TABLE 6: JOINT I COUPLES SEGMENTS I AND M)', keep=12)
-      call t%add_column('I', 4, cell_int, lead=3)
-      call t%add_column('JOINT', 14, cell_text)
+      call add_item_columns(t, 'I', 'JOINT')
       call t%add_column('M', 3, cell_int, lead=2)
       call t%add_column('K', 12, unit='in*lb/rad')
       call t%add_column('C''', 12, unit='in*lb')
@@ -100,9 +96,7 @@ contains
       call t%add_column('', 9, cell_fixed, 2, unit='deg')
       do i = 1, n_joint
          associate (r => m%joints%restraint(i), jt => m%joints)
-            call t%new_row()
-            call t%put(i)
-            call t%put(joint_name(i))
+            call item_row(t, i, joint_name(i))
             call t%put(joint_partner(i))
             call t%put(jt%k_elastic(i))
             call t%put(jt%c_friction(i))
@@ -173,8 +167,7 @@ contains
       integer :: i
       t = new_table('TABLE 4 - MATERIALS (THOSE THE DECK GIVES)', keep=count(m%materials%given) + 2)
       if (.not. any(m%materials%given)) return
-      call t%add_column('L', 4, cell_int, lead=3)
-      call t%add_column('MATERIAL', 14, cell_text)
+      call add_item_columns(t, 'L', 'MATERIAL')
       call t%add_column('MU', 12)
       call t%add_column('XI (in/s)', 12)
       call t%add_column('G', 12)
@@ -197,23 +190,18 @@ contains
       type(text_table_t) :: t
       integer :: i
       t = new_table('TABLE 1 - CONTACT ARCS', keep=13)
-      call t%add_column('I', 4, cell_int, lead=3)
-      call t%add_column('ARC', 14, cell_text)
+      call add_item_columns(t, 'I', 'ARC')
       call t%add_column('RADIUS R', 12)
       call t%add_column('RHO''', 12)
       call t%add_column('GAMMA (deg)', 10, cell_fixed, 2)
       associate (b => m%body)
          do i = 1, n_arc
-            call t%new_row()
-            call t%put(i)
-            call t%put(arc_name(i))
+            call item_row(t, i, arc_name(i))
             call t%put(b%r_arc(i))
             call t%put(b%rho_arc(i))
             call t%put(b%gamma_arc(i)/deg)
          end do
-         call t%new_row()
-         call t%put(n_arc + 1)
-         call t%put(arc_name(n_arc + 1))
+         call item_row(t, n_arc + 1, arc_name(n_arc + 1))
          call t%put(b%r_arc(n_arc + 1))
       end associate
    end function arcs_table
@@ -225,14 +213,11 @@ contains
       character(len=132) :: line
       integer :: i
       t = new_table('INITIAL CONDITIONS (C.1) AND VEHICLE', keep=14)
-      call t%add_column('I', 4, cell_int, lead=3)
-      call t%add_column('SEGMENT', 14, cell_text)
+      call add_item_columns(t, 'I', 'SEGMENT')
       call t%add_column('THETA0 (deg)', 12, cell_fixed, 3, lead=3)
       call t%add_column('THETADOT0 (deg/s)', 16, cell_fixed, 3, lead=5)
       do i = 1, n_seg
-         call t%new_row()
-         call t%put(i)
-         call t%put(segment_name(i))
+         call item_row(t, i, segment_name(i))
          call t%put(m%body%theta0(i)/deg)
          call t%put(m%body%theta_dot0(i)/deg)
       end do
@@ -279,6 +264,24 @@ contains
                                                        //itoa(size(v%pulse_pos%t))//' points)')
       end associate
    end function pulse_table
+
+   !> The first two columns of Table 1's tables: the item's number and its name.
+   subroutine add_item_columns(t, index_heading, name_heading)
+      type(text_table_t), intent(inout) :: t
+      character(len=*), intent(in) :: index_heading, name_heading
+      call t%add_column(index_heading, 4, cell_int, lead=3)
+      call t%add_column(name_heading, 14, cell_text)
+   end subroutine add_item_columns
+
+   !> A row's first two cells: the item's number and its name.
+   subroutine item_row(t, i, name)
+      type(text_table_t), intent(inout) :: t
+      integer, intent(in) :: i
+      character(len=*), intent(in) :: name
+      call t%new_row()
+      call t%put(i)
+      call t%put(name)
+   end subroutine item_row
 
    function given_axes(given) result(s)
       logical, intent(in) :: given(3)

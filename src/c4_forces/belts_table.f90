@@ -47,42 +47,10 @@ contains
             call t%add_column(section_name(cols(k))(1:14), 16, head_right=.true.)
          end do
          call put_row('h', 'wrap radius (lap); distance on the torso', 'in', b%h)
-         call row_head('l_o', 'length at t = 0', 'in')
-         do k = 1, nc
-            j = cols(k)
-            if (is_lap(j)) then
-               call t%put(length10(j), mark=' c')
-            else
-               call t%put(b%length0(j))
-            end if
-         end do
-         call row_head('phi_o', 'angle at t = 0, anchor to belt', 'deg')
-         do k = 1, nc
-            j = cols(k)
-            if (is_lap(j)) then
-               call t%put(phi10(j)/deg, form=cell_fixed, decimals=3, mark=' c')
-            else
-               call t%put(b%phi0(j)/deg, form=cell_fixed, decimals=3)
-            end if
-         end do
-         call row_head('l''_o', 'lap anchor to the initial hip', 'in')
-         do k = 1, nc
-            j = cols(k)
-            if (is_lap(j)) then
-               call t%put(b%length_anchor(j))
-            else
-               call t%put('-')
-            end if
-         end do
-         call row_head('phi''_o', 'lap, anchor to the initial hip', 'deg')
-         do k = 1, nc
-            j = cols(k)
-            if (is_lap(j)) then
-               call t%put(b%phi_anchor(j)/deg, form=cell_fixed, decimals=3)
-            else
-               call t%put('-')
-            end if
-         end do
+         call lap_row('l_o', 'length at t = 0', 'in', length10, b%length0)
+         call lap_row('phi_o', 'angle at t = 0, anchor to belt', 'deg', phi10, b%phi0)
+         call lap_row('l''_o', 'lap anchor to the initial hip', 'in', b%length_anchor)
+         call lap_row('phi''_o', 'lap, anchor to the initial hip', 'deg', b%phi_anchor)
          call put_row('Delta', 'slack', 'in', b%slack)
          call row_head('k', 'loading curve (N: its order)', '-')
          do k = 1, nc
@@ -120,6 +88,34 @@ contains
          call t%put(meaning)
          call t%put(unit)
       end subroutine row_head
+      !> A row of the lap sections' lap (computed, marked c, when other is
+      !! given for the torso sections; '-' there otherwise); angles (unit
+      !! deg) in degrees, F editing.
+      subroutine lap_row(symbol, meaning, unit, lap, other)
+         character(len=*), intent(in) :: symbol, meaning, unit
+         real(wp), intent(in) :: lap(n_belt_card)
+         real(wp), intent(in), optional :: other(n_belt_card)
+         real(wp) :: x
+         character(len=2) :: mark
+         integer :: kk
+         call row_head(symbol, meaning, unit)
+         do kk = 1, nc
+            mark = merge(' c', '  ', present(other) .and. is_lap(cols(kk)))
+            if (is_lap(cols(kk))) then
+               x = lap(cols(kk))
+            else if (present(other)) then
+               x = other(cols(kk))
+            else
+               call t%put('-')
+               cycle
+            end if
+            if (unit == 'deg') then
+               call t%put(x/deg, form=cell_fixed, decimals=3, mark=mark)
+            else
+               call t%put(x, mark=mark)
+            end if
+         end do
+      end subroutine lap_row
       subroutine put_row(symbol, meaning, unit, x)
          character(len=*), intent(in) :: symbol, meaning, unit
          real(wp), intent(in) :: x(n_belt_card)
