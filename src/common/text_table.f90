@@ -3,7 +3,7 @@
 !! forms, and free lines among or after the rows. Any layer declares its
 !! tables with it (each subsystem its parameter table, docs/architecture.md,
 !! "How to add an effect"); the listing prints any of them the same way
-!! (run_report: the title, then `lines`).
+!! (listing_t%table: the title as a heading, then `lines`).
 !!
 !! A column spans `width` columns of the line, after the columns before
 !! it. Its heading, its unit and the text of its cells start `lead`
@@ -75,9 +75,10 @@ contains
       allocate (t%body(0))
    end function new_table
 
-   !> A column after the others: its heading, width and form (default ES
-   !! with 4 decimals); its unit (a second heading line when any column
-   !! has one), lead (2) and heading alignment.
+   !> A column after the others (at most 16): its heading (up to 32
+   !! characters), width and form (default ES with 4 decimals); its unit (a
+   !! second heading line when any column has one), lead (2) and heading
+   !! alignment.
    subroutine table_add_column(this, name, width, form, decimals, unit, lead, head_right)
       class(text_table_t), intent(inout) :: this
       character(len=*), intent(in) :: name
