@@ -12,7 +12,7 @@
 !! for card identification and are ignored.
 module deck_cards
    use kinds, only: wp, deg, g_std
-   use loading_curves, only: max_order
+   use loading_parameters, only: max_order
    use model, only: max_curves, n_belt_section, n_belt_card
    implicit none
    private

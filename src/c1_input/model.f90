@@ -5,7 +5,7 @@
 module model
    use kinds, only: wp
    use text_io, only: string_t
-   use loading_curves, only: loading_curve_t
+   use loading_parameters, only: loading_curve_t
    implicit none
    private
 
@@ -19,7 +19,8 @@ module model
    public :: injury_section_t, vehicle_section_t, environment_section_t, end_tests_section_t
    public :: interior_section_t
    public :: materials_section_t, loading_section_t, max_curves, n_belt_section
-   public :: seat_section_t
+   public :: seat_section_t, n_beam_quantities, beam_quantity_name
+   public :: bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    public :: seat_none, seat_springs, seat_rigid_beam, seat_beams, seat_form_name
    public :: belts_section_t, n_belt_card, belt_card_lap2, coupling_independent, coupling_torso, coupling_all
    public :: coupling_name, nbelt_lap, nbelt_torso
@@ -193,6 +194,16 @@ module model
    character(len=9), parameter :: seat_form_name(0:3) = [character(len=9) :: &
       'NONE', 'SPRINGS', 'RIGIDBEAM', 'BEAMS']
 
+   !> The rigid beam's ten quantities at t = 0 of which the deck gives any
+   !! four (C.4.d, A-RB; seat_beam_statics solves for the other six).
+   integer, parameter :: n_beam_quantities = 10
+   !> The ten quantities, in the report's order (C.4.d, with the F'_so the OCR lost).
+   integer, parameter :: bq_a = 1, bq_ap = 2, bq_w0 = 3, bq_fhps0 = 4, bq_fs0 = 5, bq_fps0 = 6, &
+      bq_ds0 = 7, bq_dz0 = 8, bq_yg0 = 9, bq_gamma0 = 10
+   !> Their deck names (*SEATBEAMINIT, and W0, FPS0, GAMMA0 of *SEAT).
+   character(len=6), parameter :: beam_quantity_name(n_beam_quantities) = [character(len=6) :: &
+      'A', 'AP', 'W0', 'FHPS0', 'FS0', 'FPS0', 'DS0', 'DZ0', 'YG0', 'GAMMA0']
+
    !> The seat (C.1's seat parameters and C.4.d; *SEAT, *SEATSPRINGS,
    !! *SEATBEAM, *SEATBEAMINIT, *SEATBEAMS). Lengths in inches, measured in
    !! the interior frame from the initial hip; the friction mu, xi is that
@@ -212,6 +223,7 @@ module model
       real(wp) :: k_hip = 0.0_wp, k_edge = 0.0_wp
       real(wp) :: a = 0.0_wp, a_prime = 0.0_wp, fhps0 = 0.0_wp, fs0 = 0.0_wp
       real(wp) :: ds0 = 0.0_wp, dz0 = 0.0_wp, yg0 = 0.0_wp
+      logical :: beam_given(n_beam_quantities) = .false.   !< which of the ten the deck gives
       ! the non-rigid beams (figure 13): lengths l and k*l, e = 3 E I (NB-1),
       ! the undeflected cushion line through (x''_sc, y''_sc)
       real(wp) :: ell = 0.0_wp, k_ratio = 0.0_wp, e1 = 0.0_wp, e2 = 0.0_wp

@@ -10,7 +10,7 @@ module belts_table
    use strings, only: itoa
    use text_table, only: text_table_t, new_table, cell_text, cell_fixed
    use model, only: model_t, n_belt_card, belt_card_lap2, coupling_name, nbelt_lap, nbelt_torso, material_name
-   use loading_curves, only: curve_polynomial
+   use loading_parameters, only: curve_polynomial
    use belt_geometry, only: belt_section_geometry_t, lap_belt_geometry
    implicit none
    private

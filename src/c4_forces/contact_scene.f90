@@ -10,7 +10,8 @@ module contact_scene
    use kinds, only: wp, pi
    use model, only: model_t, interior_section_t, nint_dopri
    use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle, surface_point, e
-   use contact_tables, only: contact_pair_t, position_pairs, surface_materials, is_undesired, is_shared, body_material
+   use contact_tables, only: contact_pair_t, is_undesired, is_shared, body_material
+   use interior_pairs, only: scene_pairs, surface_layers   ! (the deck's own: C.1 checks them)
    use contact_forces, only: contact_pair_effect_t, contact_pair_effect
    use recurrent_loading, only: recurrent_law_t, material_law
    implicit none
@@ -65,34 +66,6 @@ contains
       ok = .true.
    end subroutine resolved_surface
 
-   !> Surface k's composition (Table 10) as the scene uses it: its outer
-   !! material l (0: none; D-C22: a padded surface's padding or mat when
-   !! D'' > 0, else its backing) and the backing lb behind a padding or mat
-   !! with D'' > 0 that bottoms out (figure 25, D-C19; 0: none). The rear
-   !! floor 25 takes the toeboard 5's D''.
-   pure subroutine surface_layers(it, k, l, lb)
-      type(interior_section_t), intent(in) :: it
-      integer, intent(in) :: k
-      integer, intent(out) :: l, lb
-      integer, allocatable :: comp(:)
-      integer :: kd
-      allocate (comp(0))      ! (realloc on assignment: a descriptor set first)
-      comp = surface_materials(k)
-      l = 0
-      lb = 0
-      if (size(comp) == 0) return
-      kd = k
-      if (k == 25) kd = 5
-      l = comp(1)
-      if (size(comp) > 1) then
-         if (it%dpp(kd) > 0.0_wp) then
-            lb = comp(2)
-         else
-            l = comp(2)
-         end if
-      end if
-   end subroutine surface_layers
-
    !> Table 11 (figure 23): the body material (chest 12, face 13, shoulder
    !! 14) that shares a pair's deflection, when it has a loading curve (a
    !! body material without one is rigid, D-B6); 0 otherwise.
@@ -104,29 +77,6 @@ contains
       if (body_material(pair%i) == 0) return
       if (m%loading%material_curve(body_material(pair%i)) > 0) l = body_material(pair%i)
    end function shared_material
-
-   !> The pairs the scene assembles: the position's, less those switched
-   !! off, whose surface the deck describes.
-   pure function scene_pairs(m) result(pairs)
-      type(model_t), intent(in) :: m
-      type(contact_pair_t), allocatable :: pairs(:), candidates(:)
-      type(contact_surface_t) :: sf
-      logical :: ok, off
-      integer :: q, r
-      allocate (pairs(0), candidates(0))
-      candidates = position_pairs(m%options%nbody)
-      if (.not. any(m%interior%given)) return
-      do q = 1, size(candidates)
-         call resolved_surface(m%interior, candidates(q)%k, sf, ok)
-         off = .false.
-         if (allocated(m%interior%off)) then
-            do r = 1, size(m%interior%off, 2)
-               off = off .or. (m%interior%off(1, r) == candidates(q)%i .and. m%interior%off(2, r) == candidates(q)%k)
-            end do
-         end if
-         if (ok .and. .not. off) pairs = [pairs, candidates(q)]
-      end do
-   end function scene_pairs
 
    !> The contact effects of the scene, one per pair (D-C15). A backing
    !! (padding or mat bottoming out at eta D'' on it) and the body's own

@@ -9,7 +9,8 @@ module interior_table
    use text_table, only: text_table_t, new_table, cell_text, cell_int, cell_fixed
    use model, only: model_t, arc_name
    use contact_tables, only: surface_name, contact_pair_t, is_undesired
-   use contact_scene, only: scene_pairs, resolved_surface, surface_layers
+   use interior_pairs, only: scene_pairs, surface_layers
+   use contact_scene, only: resolved_surface
    use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle
    implicit none
    private

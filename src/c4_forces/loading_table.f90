@@ -6,7 +6,7 @@ module loading_table
    use strings, only: itoa
    use text_table, only: text_table_t, new_table
    use model, only: model_t, material_name
-   use loading_curves, only: curve_is_defined, curve_polynomial, curve_table
+   use loading_parameters, only: curve_is_defined, curve_polynomial, curve_table
    implicit none
    private
 

@@ -40,7 +40,7 @@
 !! element has unloaded completely.
 module recurrent_loading
    use kinds, only: wp
-   use strings, only: num
+   use loading_parameters, only: recurrent_check, ratio_slack
    use loading_curves, only: loading_curve_t, curve_elastic_force, curve_rate_force, curve_energy, &
       curve_moment, curve_deflection_at, curve_flat_extent
    use model, only: materials_section_t, loading_section_t
@@ -62,10 +62,6 @@ module recurrent_loading
 
    !> How the present cycle began (figure 18).
    integer, parameter :: cycle_first = 0, cycle_case_1 = 1, cycle_case_2 = 2
-
-   !> G and R that differ from the consistent R = 1 - G by less than this are
-   !! taken as consistent (decks give decimals: 1 - 0.3 is not 0.7 in binary).
-   real(wp), parameter :: ratio_slack = 1.0e-12_wp
 
    !> A recurrent-loading law: a curve, G and R (Tables 2, 4).
    type :: recurrent_law_t
@@ -118,31 +114,6 @@ contains
       law%n_rate = 0
       if (any(abs(curve%sigma_rate) > 0.0_wp)) law%n_rate = findloc(abs(curve%sigma_rate) > 0.0_wp, .true., 1, back=.true.)
    end function recurrent_law
-
-   !> What is wrong with G and R, or '' (docs/loading.md 3): 0 <= G <= 1,
-   !! 0 <= R <= 1, R <= 1 - G, and G = 1 where R = 0. An unloading curve that ends at G d_max and
-   !! does not rise above the loading curve returns at most (1 - G) times the
-   !! loading work along the curves of docs/loading.md; more would need an
-   !! unloading path above the loading path, which would create energy on the
-   !! next reloading.
-   pure function recurrent_check(g, r) result(message)
-      real(wp), intent(in) :: g, r
-      character(len=:), allocatable :: message
-      message = ''
-      if (g < 0.0_wp .or. g > 1.0_wp) then
-         message = 'G = '//num(g)//' must lie from 0 to 1'
-      else if (r < 0.0_wp .or. r > 1.0_wp) then
-         message = 'R = '//num(r)//' must lie from 0 to 1'
-      else if (r <= 0.0_wp .and. g < 1.0_wp - ratio_slack) then
-         message = 'R = 0 needs G = 1 (here G = '//num(g)//'): an element that returns none of the energy ' &
-                   //'it absorbed falls straight to zero force at its maximum deformation and keeps all of it ' &
-                   //'(docs/loading.md 3)'
-      else if (r > 1.0_wp - g + ratio_slack) then
-         message = 'R = '//num(r)//' exceeds 1 - G = '//num(1.0_wp - g)//': an element that keeps G of ' &
-                   //'its maximum deformation cannot return more than 1 - G of the energy it absorbed ' &
-                   //'(docs/loading.md 3)'
-      end if
-   end function recurrent_check
 
    !> True when the law needs no memory (R = 1, G = 0).
    pure logical function recurrent_is_elastic(law)

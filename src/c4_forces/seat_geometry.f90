@@ -19,6 +19,7 @@ module seat_geometry
    use body_state, only: body_state_t
    use point_forces, only: point_force_list_t, point_force_add
    use dead_band, only: slip_of    ! (the hip slides once |x_1'| reaches xi, A-S4)
+   use seat_beam_statics, only: poly_force   ! (the statics at t = 0 use it too: C.2 below C.4)
    implicit none
    private
 
@@ -279,12 +280,6 @@ contains
          seat_case = case_a
       end if
    end function seat_case
-
-   !> C.4.d (A-S3): the seat cushion's polynomial sum beta_m u^m.
-   pure real(wp) function poly_force(beta, u)
-      real(wp), intent(in) :: beta(3), u
-      poly_force = u*(beta(1) + u*(beta(2) + u*beta(3)))
-   end function poly_force
 
    !> C.6 (E6-1): its energy sum beta_m u^{m+1}/(m+1).
    pure real(wp) function poly_energy(beta, u)

@@ -11,7 +11,9 @@ module run_case_mod
    use default_deck, only: default_deck_lines
    use model_builder, only: build_model
    use model, only: model_t
-   use simulation, only: run_simulation, initial_warnings
+   use simulation, only: run_to_end, initial_warnings
+   use run_loop, only: run_t
+   use sink_list, only: sink_list_t
    use run_summary, only: run_summary_t
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
@@ -93,7 +95,9 @@ contains
       type(run_summary_t) :: res
       type(error_t) :: run_err, io_err
       ! on the heap: it holds the model, which outgrows the stack's static limit
-      type(case_sink_t), allocatable :: sink
+      type(case_sink_t), allocatable, target :: sink
+      type(sink_list_t) :: sinks
+      type(run_t) :: run
       type(output_file_t) :: h5_file
       type(string_t), allocatable :: notes(:)
       integer :: o
@@ -128,7 +132,9 @@ contains
          end if
       end if
       call listing_sink_start(sink%listing, deck, m, hsri2d_version)
-      call run_simulation(m, res, run_err, sink)
+      call sinks%add(sink)
+      call run%init(m, sinks=sinks)
+      call run_to_end(run, res, run_err)
       if (sink%with_h5) call sink%h5%close(io_err)
       call sink%listing%lst%flush(io_err)
       ! An input/output error outweighs a numerical failure: the outputs

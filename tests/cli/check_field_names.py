@@ -4,8 +4,10 @@
 usage: check_field_names.py HSRI2D SRC_DIR
 
 The builders read a card's fields by name (c1_input/deck_fields: card_value,
-group_value, ...) and name them in messages (model_builder: field_where and
-the field lists of problem, problem_at and located). A misspelled name is a
+group_value, ...), the validators ask whether a card gave one (model_origin:
+field_given, group_field_given, card_key), and both name them in messages
+(model_origin: field_where and the field lists of problem, problem_at,
+located and warning). A misspelled name is a
 defect of the program that no deck can show: the accessors then return NaN,
 -huge or .false. and the message names no columns (issue 14, item 29). Tests
 that run the builders only see the names on the paths they take, so this
@@ -33,11 +35,14 @@ GROUP_AND_NAME = {
     "card_value": (1, 3), "card_int": (1, 3), "card_given": (1, 3),
     "group_value": (1, 2), "group_int": (1, 2), "group_given": (1, 2),
     "default_value": (1, 2), "field_number": (1, 2), "field_where": (1, 2),
+    # the validators' origin (c1_input/model_origin)
+    "field_given": (1, 3), "group_field_given": (1, 2), "card_key": (1, 3),
 }
 # procedures with a blank-separated list of field names: (group argument or None, list argument)
-FIELD_LISTS = {"problem": (None, 4), "located": (None, 3), "problem_at": (2, 4), "field_list": (1, 2)}
+FIELD_LISTS = {"problem": (None, 4), "located": (None, 3), "problem_at": (2, 4), "field_list": (1, 2),
+               "warning": (None, 4)}
 # where these are defined the names are dummies of every caller: not checked there
-DEFINITIONS = {"deck_fields.f90"}
+DEFINITIONS = {"deck_fields.f90", "model_origin.f90"}
 HELPERS = {"field_where", "field_list", "located", "problem", "problem_at"}
 MAX_DEPTH = 6
 

@@ -246,7 +246,7 @@ contains
    end subroutine effect_costs
 
    !> RK4 at step h from (t, y) to t_end, each effect with memory told of
-   !! every accepted step (as simulation's on_accepted, without its outputs
+   !! every accepted step (as the run's step_bookkeeping, without its outputs
    !! and end tests); line notes where it stopped if the run failed.
    subroutine advance_to(h, t_end, sys, t, y, line)
       real(wp), intent(in) :: h, t_end

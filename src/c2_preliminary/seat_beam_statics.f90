@@ -5,11 +5,13 @@
 !! choice of four determines the rest (F_so and Delta_so are tied by the
 !! support law, F'_so and Delta_zo too); such a choice is found before any
 !! arithmetic, by a one-to-one assignment of relations to unknowns, and
-!! refused with a message. The deck builder calls this; nothing here stops
-!! the program.
+!! refused with a message. The model builder calls this (rigid_beam_statics)
+!! once the seat's section is built and checked; nothing here stops the
+!! program.
 module seat_beam_statics
    use kinds, only: wp, pi
-   use seat_geometry, only: poly_force
+   use model, only: seat_section_t, n_beam_quantities, beam_quantity_name, bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, &
+      bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    implicit none
    private
 
@@ -17,14 +19,9 @@ module seat_beam_statics
    public :: n_beam_quantities, n_beam_relations, beam_quantity_name, beam_relation_text
    public :: bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    public :: statics_ok, statics_not_four, statics_undetermined, statics_no_solution
+   public :: poly_force, rigid_beam_statics
 
-   integer, parameter :: n_beam_quantities = 10, n_beam_relations = 6
-   !> The ten quantities, in the report's order (C.4.d, with the F'_so the OCR lost).
-   integer, parameter :: bq_a = 1, bq_ap = 2, bq_w0 = 3, bq_fhps0 = 4, bq_fs0 = 5, bq_fps0 = 6, &
-      bq_ds0 = 7, bq_dz0 = 8, bq_yg0 = 9, bq_gamma0 = 10
-   !> Their deck names (*SEATBEAMINIT, and W0, FPS0, GAMMA0 of *SEAT).
-   character(len=6), parameter :: beam_quantity_name(n_beam_quantities) = [character(len=6) :: &
-      'A', 'AP', 'W0', 'FHPS0', 'FS0', 'FPS0', 'DS0', 'DZ0', 'YG0', 'GAMMA0']
+   integer, parameter :: n_beam_relations = 6
    character(len=64), parameter :: beam_relation_text(n_beam_relations) = [character(len=64) :: &
       'F_so + F''_so = W_o + F-hat''_so + m_s g', &
       'a''(F''_so - F-hat''_so) + (a'' - a)F_so + W_o(z_o - a'') = 0', &
@@ -57,6 +54,39 @@ module seat_beam_statics
    end type beam_statics_t
 
 contains
+
+   !> C.4.d (A-S3): the seat cushion's polynomial sum beta_m u^m.
+   pure real(wp) function poly_force(beta, u)
+      real(wp), intent(in) :: beta(3), u
+      poly_force = u*(beta(1) + u*(beta(2) + u*beta(3)))
+   end function poly_force
+
+   !> The rigid-beam seat at t = 0 (C.4.d, A-RB): the four of the ten
+   !! quantities that seat section p gives (beam_given), the other six
+   !! solved for and set in p, under the apparent gravity g (g cos(Phi_o)
+   !! in the interior frame). status and message as beam_statics_solve's;
+   !! p is unchanged unless status is statics_ok.
+   pure subroutine rigid_beam_statics(p, g, status, message)
+      type(seat_section_t), intent(inout) :: p
+      real(wp), intent(in) :: g
+      integer, intent(out) :: status
+      character(len=:), allocatable, intent(out) :: message
+      real(wp) :: q(n_beam_quantities)
+      q = merge([p%a, p%a_prime, p%w0, p%fhps0, p%fs0, p%fps0, p%ds0, p%dz0, p%yg0, p%gamma0], 0.0_wp, p%beam_given)
+      call beam_statics_solve(beam_statics_t(z0=p%z0, m_s=p%m_s, g=g, y_gu=p%y_gu, gamma_u=p%gamma_u, s=p%s, &
+                                             beta=p%beta), p%beam_given, q, status, message)
+      if (status /= statics_ok) return
+      p%a = q(bq_a)
+      p%a_prime = q(bq_ap)
+      p%w0 = q(bq_w0)
+      p%fhps0 = q(bq_fhps0)
+      p%fs0 = q(bq_fs0)
+      p%fps0 = q(bq_fps0)
+      p%ds0 = q(bq_ds0)
+      p%dz0 = q(bq_dz0)
+      p%yg0 = q(bq_yg0)
+      p%gamma0 = q(bq_gamma0)
+   end subroutine rigid_beam_statics
 
    !> The six relations at q (q(bq_gamma0) is the angle), scaled to be of
    !! order one: forces by f_ref, moments by f_ref z_o, lengths by z_o.

@@ -1,0 +1,80 @@
+!> The model of a run from the deck's plain tables (report C.1), with the
+!! one preliminary calculation the deck's seat needs (C.2): each section
+!! built by its builder and checked by its validator (c1_input:
+!! options_input, body_input, injury_input, loading_input, belts_input,
+!! vehicle_input, seat_input, interior_input), in the order of the sections,
+!! so that a deck's problems come in the order they always have; and the
+!! rigid-beam seat's initial relations solved for the quantities the deck
+!! does not give (seat_beam_statics). The validators read the values from
+!! the sections and only the locations of their messages from the deck
+!! (model_origin: file, line, group, card, field, columns).
+module model_builder
+   use error_handling, only: error_t
+   use deck_cards, only: g_title
+   use deck_reader, only: deck_t
+   use deck_fields, only: single_card
+   use model_origin, only: model_origin_t, deck_origin
+   use model, only: model_t, seat_rigid_beam
+   use options_input, only: build_options, build_time, check_time, build_numerics
+   use body_input, only: build_body, check_body, build_joints, check_joints
+   use injury_input, only: build_injury, check_injury, build_end_tests
+   use loading_input, only: build_materials, check_materials, build_loading, check_loading
+   use belts_input, only: build_belts, check_belts
+   use vehicle_input, only: build_vehicle, check_vehicle, check_vehicle_tables, build_environment
+   use seat_input, only: build_seat, check_seat, rigid_beam_problem
+   use interior_input, only: build_interior, check_interior, check_scene
+   use seat_beam_statics, only: rigid_beam_statics, statics_ok
+   implicit none
+   private
+
+   public :: build_model
+
+contains
+
+   !> Fill m from the deck's tables, section by section; append every
+   !! problem found to err.
+   subroutine build_model(deck, m, err)
+      type(deck_t), intent(in) :: deck
+      type(model_t), intent(out) :: m
+      type(error_t), intent(inout) :: err
+      type(model_origin_t) :: orig
+      integer :: status
+      character(len=:), allocatable :: message
+
+      orig = deck_origin(deck)
+      m%warnings = deck%warnings
+      m%title = ' '
+      if (single_card(deck, g_title)) m%title = deck%group(g_title)%card(1)%text
+      call build_options(deck, m%options)
+      call build_time(deck, m%time)
+      call check_time(m%time, m%options%nint, orig, err)
+      call build_numerics(deck, m%numerics)
+      call build_body(deck, m%body)
+      call check_body(m%body, orig, err)
+      call build_joints(deck, m%joints)
+      call check_joints(m%joints, m%body, orig, err)
+      call build_injury(deck, m%injury)
+      call check_injury(orig, err)
+      call build_materials(deck, m%materials)
+      call check_materials(orig, err)
+      call build_loading(deck, m%options%nload, m%loading)
+      call check_loading(m%loading, m%materials, m%options%nload, orig, m%warnings, err)
+      call build_belts(deck, m%belts)
+      call check_belts(m%belts, m%options%nbelt, m%body, m%loading, orig, m%warnings, err)
+      call build_vehicle(deck, m%vehicle, err)
+      call check_vehicle(m%vehicle, orig, err)
+      if (.not. err%failed()) call check_vehicle_tables(m%vehicle, orig, m%warnings, err)
+      m%environment = build_environment(deck)
+      m%end_tests = build_end_tests(deck)
+      call build_seat(deck, m%body, m%materials, m%seat)
+      call check_seat(m%seat, m%body, orig, err)
+      if (m%seat%form == seat_rigid_beam) then
+         ! C.2: under the apparent gravity at t = 0 in the interior frame
+         call rigid_beam_statics(m%seat, m%environment%gravity*cos(m%vehicle%phi0), status, message)
+         if (status /= statics_ok) call rigid_beam_problem(m%seat, orig, message, err)
+      end if
+      call build_interior(deck, m%interior)
+      call check_interior(m%interior, m%options%nbody, orig, err)
+      call check_scene(m, orig, err)
+   end subroutine build_model
+end module model_builder

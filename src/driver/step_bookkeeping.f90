@@ -1,0 +1,322 @@
+!> What a run does after each accepted step (docs/architecture.md, rule 1):
+!! the effects' accept (memory, events, jumps), the maxima and the
+!! acceleration criteria, Table 5's force criteria, the end tests (C.7),
+!! and a restart of the stepper when an effect's memory made the
+!! right-hand side jump; and at print times the energy balance against its
+!! tolerance. Each occupant's limits, end test and criteria are its own
+!! (its NEND, rest limits, Table 5 limits). Nothing is allocated here at a
+!! step: the room it needs is reserved by books_init.
+module step_bookkeeping
+   use kinds, only: wp, g_std
+   use acceleration_criteria, only: criteria_new
+   use error_handling, only: error_t, error_set, exit_numerical
+   use strings, only: num
+   use model, only: n_dof, n_seg, n_joint, n_injury, joint_partner, nend_rest, numerics_section_t, vehicle_section_t
+   use equations_of_motion, only: crash_system_t, system_body_state, rhs_status_text, rhs_diverged, rhs_not_finite
+   use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
+   use ode_system, only: stepper_t, step_ok, step_rhs_failed, step_status_text
+   use effect_base, only: body_state_t
+   use effect_events, only: accept_result_t, event_t
+   use point_forces, only: point_force_list_t, point_force_reserve
+   use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined, force_injury_event, event_tension, &
+      event_compression, event_shear
+   use joint_coupling, only: relative_angle
+   use output_calc, only: head_chest_acceleration
+   use output_producers, only: frame_energy, energy_balance_t
+   use run_summary, only: run_summary_t, occupant_summary_t, extreme_t, raise, summary_add_event
+   use end_tests, only: end_state_t, end_none, end_failure, end_energy, end_injury, end_contact, end_rest, &
+      end_test_update, body_at_rest
+   use sink_list, only: sink_list_t
+   implicit none
+   private
+
+   public :: step_books_t, record_failure
+
+   !> A balance error below this fraction of the largest kinetic energy is rounding.
+   real(wp), parameter :: rounding = 1.0e-9_wp
+
+   type :: step_books_t
+      type(end_state_t), allocatable :: end_state(:)   !< each occupant's rest timer (C.7)
+      logical, allocatable :: injured(:)               !< each occupant injured so far (C.7, NEND = 3)
+      !> the point forces for Table 5's criteria, reused from step to step
+      type(point_force_list_t) :: forces
+      !> the derivative at the accepted point, kept for the frame of a restart that fails
+      real(wp), allocatable :: f_accepted(:)
+      !> an occupant's state at the accepted point (kept from step to step;
+      !! its vehicle state only when something reads it)
+      type(body_state_t) :: st
+      !> *NUMERICS EBTOL and EBFAIL; whether the vehicle's rates or
+      !! positions are tabulated (the balance's message then says more)
+      type(numerics_section_t) :: numerics
+      logical :: pulse_tabulated = .false.
+   contains
+      procedure :: init => books_init
+      procedure :: accept => books_accept
+      procedure :: check_energy => books_check_energy
+   end type step_books_t
+
+contains
+
+   !> The books of a run of sys from (t, y): C.2's initial outputs in the
+   !! summary (the energy totals the balance is measured from, the initial
+   !! joint angles the ranges start from, the criteria), and the room the
+   !! accepted steps need.
+   subroutine books_init(this, sys, t, y, numerics, vehicle, summary)
+      class(step_books_t), intent(out) :: this
+      type(crash_system_t), intent(in) :: sys
+      real(wp), intent(in) :: t, y(:)
+      type(numerics_section_t), intent(in) :: numerics
+      type(vehicle_section_t), intent(in) :: vehicle
+      type(run_summary_t), intent(inout) :: summary
+      integer :: o, i, n_occ
+      n_occ = size(sys%occupants)
+      this%numerics = numerics
+      this%pulse_tabulated = allocated(vehicle%pulse_vel%t) .or. allocated(vehicle%pulse_pos%t)
+      allocate (summary%occ(n_occ), this%end_state(n_occ), this%injured(n_occ), this%f_accepted(size(y)))
+      this%injured = .false.
+      do o = 1, n_occ
+         this%st = system_body_state(sys, o, t, y)
+         associate (eb => frame_energy(sys%occupants(o), this%st, y, 0.0_wp))
+            summary%occ(o)%e_total0 = eb%total
+         end associate
+         summary%occ(o)%head_criteria = criteria_new()
+         summary%occ(o)%chest_criteria = criteria_new(with_hic=.false.)   ! GSI and the 3 ms clip
+         ! Table 5's force criteria only when the occupant's deck gives a limit
+         ! (they cost the point forces and the joint reactions at every
+         ! accepted step)
+         associate (lim => sys%occupants(o)%injury)
+            summary%occ(o)%force_checked = any(lim%f_tension > 0.0_wp) .or. any(lim%f_compression > 0.0_wp) &
+                                           .or. any(lim%f_shear > 0.0_wp)
+         end associate
+         do i = 1, n_joint
+            summary%occ(o)%joint_min(i) = extreme_t(relative_angle(this%st%z, i), 0.0_wp)
+            summary%occ(o)%joint_max(i) = summary%occ(o)%joint_min(i)
+         end do
+      end do
+      ! Nothing allocated in the step loop (docs/architecture.md): room for
+      ! the point forces, one per segment of each effect from outside (the
+      ! most any reports: gravity's)
+      if (any([(summary%occ(o)%force_checked, o=1, n_occ)])) &
+         call point_force_reserve(this%forces, n_seg*maxval([(count([(sys%occupants(o)%effects(i)%e%external, &
+                                                                  i=1, size(sys%occupants(o)%effects))]), o=1, n_occ)]))
+   end subroutine books_init
+
+   !> Memory updates after the step accepted at (t, y) (docs/architecture.md,
+   !! rule 1): the effects' accept, maxima, the end tests; a restart of the
+   !! stepper when an effect's memory made the right-hand side jump. last:
+   !! the run ends at this step (TMAX), so no restart. The run ends
+   !! (reason) at the first injury or undesired contact of an occupant
+   !! whose NEND asks for it, or when every occupant whose NEND asks for
+   !! rest has rested for its THOLD; end_failure when the restart fails.
+   !! Events go to the summary and the sinks.
+   subroutine books_accept(this, sys, stepper, t, y, last, summary, sinks, err, reason)
+      class(step_books_t), intent(inout) :: this
+      type(crash_system_t), intent(inout) :: sys
+      class(stepper_t), intent(inout) :: stepper
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      logical, intent(in) :: last
+      type(run_summary_t), intent(inout) :: summary
+      type(sink_list_t), intent(inout) :: sinks
+      type(error_t), intent(inout) :: err
+      integer, intent(out) :: reason
+      type(accept_result_t) :: ar
+      real(wp) :: a_head, a_chest, delta
+      integer :: k, q, j, o, xo, ao, restart_status, rhs_code, reason_o
+      logical :: restart, undesired, at_rest, any_rest, all_rested
+
+      restart = .false.
+      any_rest = .false.
+      all_rested = .true.
+      reason = end_none
+      do o = 1, size(sys%occupants)
+         undesired = .false.
+         associate (occ => sys%occupants(o), os => summary%occ(o), st => this%st)
+            ! the vehicle's state only when something reads it
+            call occupant_state(occ, t, y, st)
+            if (sys%needs_vehicle .or. occ%nend == nend_rest) call occupant_vehicle(occ, sys%vm, t, st)
+            ! Table 5's force criteria, with the memory the step was taken with
+            if (os%force_checked) &
+               call force_criteria(this, occ, o, t, y, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
+            do q = 1, size(occ%remembering)
+               k = occ%remembering(q)
+               ar%restart = .false.
+               ar%n_events = 0
+               xo = occ%extra_offset(k)
+               ao = occ%aux_offset(k)
+               associate (e => occ%effects(k)%e)
+                  call e%accept(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), ar)
+               end associate
+               restart = restart .or. ar%restart
+               do j = 1, ar%n_events
+                  ar%events(j)%occupant = o
+                  this%injured(o) = this%injured(o) .or. ar%events(j)%injury
+                  undesired = undesired .or. ar%events(j)%undesired
+                  call summary_add_event(summary, ar%events(j))
+                  call sinks%event(ar%events(j))
+               end do
+            end do
+            call head_chest_acceleration(occ%body, st%c, st%s, st%zdot, &
+                                         stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), a_head, a_chest)
+            call raise(os%head_max, a_head, t)
+            call raise(os%chest_max, a_chest, t)
+            call os%head_criteria%add(t, a_head/g_std)
+            call os%chest_criteria%add(t, a_chest/g_std)
+            do k = 1, n_joint
+               delta = st%z(k) - st%z(joint_partner(k))
+               if (delta < os%joint_min(k)%value) os%joint_min(k) = extreme_t(delta, t)
+               if (delta > os%joint_max(k)%value) os%joint_max(k) = extreme_t(delta, t)
+            end do
+            ! C.7 with the occupant's own NEND and limits
+            at_rest = .false.
+            if (occ%nend == nend_rest) at_rest = body_at_rest(occ%body, occ%end_tests, st%z, st%zdot, st%vehicle)
+            call end_test_update(occ%nend, occ%end_tests, this%end_state(o), t, this%injured(o), at_rest, &
+                                 reason_o, undesired)
+            if (occ%nend == nend_rest) then
+               any_rest = .true.
+               all_rested = all_rested .and. reason_o == end_rest
+            else if (reason_o == end_injury .or. reason_o == end_contact) then
+               if (reason == end_none) reason = reason_o
+            end if
+         end associate
+      end do
+      if (reason == end_none .and. any_rest .and. all_rested) reason = end_rest
+      if (restart) then
+         ! the derivative at the accepted point is kept, for the frame of a
+         ! restart that fails
+         this%f_accepted = stepper%f
+         if (reason == end_none .and. .not. last) then
+            call stepper%restart(sys, t, y, restart_status)
+         else
+            ! the run ends here: no restart, but the last record holds one
+            ! state's values, so its z'' is the new memory's (issue 14, 6)
+            call sys%rhs(t, y, stepper%f, rhs_code)
+            restart_status = step_ok
+            if (rhs_code /= 0) then
+               stepper%rhs_status = rhs_code
+               restart_status = step_rhs_failed
+            end if
+         end if
+         if (restart_status /= step_ok) then
+            stepper%f = this%f_accepted
+            call record_failure(summary, err, restart_status, t, sys, stepper)
+            reason = end_failure
+         end if
+      end if
+
+   end subroutine books_accept
+
+   !> Table 5's criteria of occupant o at the step accepted at (t, y),
+   !! where its z'' is zdd: the bone loads against its limits, an event the
+   !! first time each is passed, the maxima kept.
+   subroutine force_criteria(this, occ, o, t, y, zdd, summary, sinks)
+      class(step_books_t), intent(inout) :: this
+      type(occupant_t), intent(in) :: occ
+      integer, intent(in) :: o
+      real(wp), intent(in) :: t, y(:), zdd(n_dof)
+      type(run_summary_t), intent(inout) :: summary
+      type(sink_list_t), intent(inout) :: sinks
+      type(bone_loads_t) :: bl
+      integer :: i
+      call occupant_point_forces(occ, this%st, y, this%forces)
+      bl = bone_loads(occ%body, this%st%z, this%st%zdot, zdd, this%forces)
+      do i = 1, n_joint
+         call raise(summary%occ(o)%ft_max(i), bl%ft(i), t)
+         call force_passed(this, o, t, 1, event_tension, i, bl%ft(i), occ%injury%f_tension(i), summary, sinks)
+      end do
+      do i = 1, n_injury
+         if (fc_defined(i)) then
+            call raise(summary%occ(o)%fc_max(i), bl%fc(i), t)
+            call force_passed(this, o, t, 2, event_compression, i, bl%fc(i), occ%injury%f_compression(i), summary, sinks)
+         end if
+         if (fs_defined(i)) then
+            call raise(summary%occ(o)%fs_max(i), bl%fs(i), t)
+            call force_passed(this, o, t, 3, event_shear, i, bl%fs(i), occ%injury%f_shear(i), summary, sinks)
+         end if
+      end do
+   end subroutine force_criteria
+
+   !> Criterion c (1 tension, 2 compression, 3 shear) of occupant o's joint
+   !! or bone index at time t: an event the first time value passes a
+   !! limit that is given (an injury: C.7's NEND = 3).
+   subroutine force_passed(this, o, t, c, kind, index, value, limit, summary, sinks)
+      class(step_books_t), intent(inout) :: this
+      integer, intent(in) :: o, c, kind, index
+      real(wp), intent(in) :: t, value, limit
+      type(run_summary_t), intent(inout) :: summary
+      type(sink_list_t), intent(inout) :: sinks
+      type(event_t) :: e
+      if (.not. limit > 0.0_wp .or. summary%occ(o)%force_reported(c, index)) return
+      if (.not. value > limit) return
+      summary%occ(o)%force_reported(c, index) = .true.
+      e = force_injury_event(kind, t, index, value, limit)
+      e%occupant = o
+      this%injured(o) = .true.
+      call summary_add_event(summary, e)
+      call sinks%event(e)
+   end subroutine force_passed
+
+   !> The energy balance of C.6 at a print time t (each occupant's, from
+   !! its frame) against its tolerance (*NUMERICS EBTOL): a run whose
+   !! balance fails is flagged and, unless the deck says to continue, ends
+   !! as a numerical failure (summary%end_reason = end_energy, err set).
+   subroutine books_check_energy(this, sys, balance, t, summary, err)
+      class(step_books_t), intent(in) :: this
+      type(crash_system_t), intent(in) :: sys
+      type(energy_balance_t), intent(in) :: balance(:)
+      real(wp), intent(in) :: t
+      type(run_summary_t), intent(inout) :: summary
+      type(error_t), intent(inout) :: err
+      character(len=:), allocatable :: who
+      integer :: o
+      do o = 1, size(balance)
+         associate (os => summary%occ(o), eb => balance(o))
+            os%ke_max = max(os%ke_max, eb%ke_body)
+            os%e_error_final = eb%error
+            if (abs(eb%error) > abs(os%energy_error_max%value)) os%energy_error_max = extreme_t(eb%error, t)
+            if (os%energy_flagged) cycle
+            if (abs(eb%error) > this%numerics%energy_tol*os%ke_max .and. abs(eb%error) > rounding*max(1.0_wp, os%ke_max)) then
+               os%energy_flagged = .true.
+               os%t_flagged = t
+               if (.not. this%numerics%energy_continue .and. summary%end_reason == end_none) then
+                  ! "occupant k: " when there are several
+                  who = ''
+                  if (size(balance) > 1) who = trim(sys%occupants(o)%label)//': '
+                  summary%end_reason = end_energy
+                  summary%failure = who//'the energy balance error '//num(eb%error, 6)//' in*lb at t = '//num(t) &
+                     //' s exceeds EBTOL = '//num(this%numerics%energy_tol)//' of the largest body kinetic energy (' &
+                     //num(os%ke_max, 6)//' in*lb): the results are not trustworthy. A smaller DT (or NINT = 3 ' &
+                     //'with tighter RTOL) should help; *NUMERICS EBFAIL = CONTINUE runs on regardless'
+                  if (this%pulse_tabulated) &
+                     summary%failure = summary%failure//'. Tabulated vehicle rates or positions that are not ' &
+                                       //'the integrals of its accelerations (C.3) make such an error whatever DT: ' &
+                                       //'see the deck''s warnings'
+                  call error_set(err, exit_numerical, summary%failure)
+               end if
+            end if
+         end associate
+      end do
+   end subroutine books_check_energy
+
+   !> The run failed numerically at time t (status code of a step, a
+   !! restart or the first evaluation): why, in the summary and in err.
+   subroutine record_failure(summary, err, code, t, sys, stepper)
+      type(run_summary_t), intent(inout) :: summary
+      type(error_t), intent(inout) :: err
+      integer, intent(in) :: code
+      real(wp), intent(in) :: t
+      type(crash_system_t), intent(in) :: sys
+      class(stepper_t), intent(in) :: stepper
+      character(len=:), allocatable :: why
+      why = step_status_text(code)
+      if (code == step_rhs_failed) then
+         why = why//' at t = '//num(sys%last_t)//' s: '//rhs_status_text(stepper%rhs_status)
+         if ((stepper%rhs_status == rhs_diverged .or. stepper%rhs_status == rhs_not_finite) &
+             .and. allocated(sys%failure_detail)) &
+            why = why//' ('//sys%failure_detail//')'
+      end if
+      summary%failure = 'integration stopped after t = '//num(t)//' s: '//why
+      summary%end_reason = end_failure
+      call error_set(err, exit_numerical, summary%failure)
+   end subroutine record_failure
+end module step_bookkeeping
