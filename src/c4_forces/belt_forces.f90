@@ -43,9 +43,10 @@ module belt_forces
    use kinds, only: wp, deg
    use strings, only: num, itoa, upper
    use model, only: model_t, n_dof, n_seg, belt_card_lap2, coupling_torso
-   use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
-      point_force_list_t, point_force_add, &
-      energy_supplied, n_energy_kinds
+   use effect_base, only: effect_t, body_state_t
+   use effect_events, only: accept_result_t
+   use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
+   use point_forces, only: point_force_list_t, point_force_add
    use output_series, only: output_series_t, series_new, column
    use belt_geometry, only: belt_section_geometry_t, belt_kinematics_t, belt_body_t, &
       lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state, belt_body_fill, belt_section_add

@@ -22,10 +22,14 @@ module contact_forces
    use text_io, only: string_t, append_string
    use model, only: body_section_t, n_dof, arc_name
    use contact_tables, only: surface_name
-   use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
-      energy_supplied, n_energy_kinds, point_force_list_t, point_force_add, event_t, event_undesired, &
-      max_events_per_step, event_shatter, event_cut, event_ramp_widened, proximity_guard_t, guard_none, guard_ball, &
-      guard_half_plane, guard_slab, guard_capsule, guard_always, effect_peak_t
+   use effect_base, only: effect_t, body_state_t
+   use effect_events, only: accept_result_t, accept_add_event
+   use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
+   use point_forces, only: point_force_list_t, point_force_add
+   use proximity_guard, only: proximity_guard_t, guard_none, guard_ball, guard_half_plane, guard_slab, guard_capsule, &
+      guard_always
+   use effect_peaks, only: effect_peak_t
+   use contact_events, only: contact_event, event_undesired, event_shatter, event_cut, event_ramp_widened
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
@@ -201,7 +205,7 @@ contains
       e%guard = pair_guard(e)
    end function contact_pair_effect
 
-   !> The pair's proximity guard (D-C29, effect_base): cases of
+   !> The pair's proximity guard (D-C29, proximity_guard): cases of
    !! far_check's bound, with the same body point, the same reach less
    !! far_check's margin, and twice that margin (so where the guard holds
    !! far_check's bound holds, whatever the roundings of the two
@@ -696,7 +700,7 @@ contains
       ! Table 9 (C.7): coming into contact (D-C28)
       if (this%undesired) then
          if (this%accepted_once .and. .not. this%was_loaded .and. ps%split%force > 0.0_wp) &
-            call add_event(event_t(t=st%t, kind=event_undesired, index=this%i, value=ps%split%force, surface=this%k))
+            call accept_add_event(result, contact_event(event_undesired, st%t, this%i, this%k, ps%split%force))
          this%was_loaded = ps%split%force > 0.0_wp
          this%accepted_once = .true.
       end if
@@ -707,20 +711,19 @@ contains
          this%locates = .false.                                             ! nothing left to locate (D-C24b)
          if (this%guard%kind /= guard_none) this%guard%kind = guard_always   ! broken glass carries nothing
          result%restart = .true.
-         call add_event(event_t(t=st%t, kind=event_shatter, index=this%i, value=ps%split%force, limit=this%fsw, &
-                                surface=this%k))
+         call accept_add_event(result, contact_event(event_shatter, st%t, this%i, this%k, ps%split%force, this%fsw))
       end if
       if (this%shattered) then
-         if (ps%cs%delta > 0.0_wp .and. .not. this%cutting) call add_event(event_t(t=st%t, kind=event_cut, &
-            index=this%i, value=ps%cs%delta, injury=.true., surface=this%k))
+         if (ps%cs%delta > 0.0_wp .and. .not. this%cutting) &
+            call accept_add_event(result, contact_event(event_cut, st%t, this%i, this%k, ps%cs%delta))
          this%cutting = ps%cs%delta > 0.0_wp
       end if
       ! D-C18b: the first accepted step at which the fixed step widened the ramp
       if (.not. this%widened .and. this%mu > 0.0_wp .and. ps%split%force > 0.0_wp) then
          if (ramp_width(this, ps%split%force) > this%xi) then
             this%widened = .true.
-            call add_event(event_t(t=st%t, kind=event_ramp_widened, index=this%i, &
-                                   value=ramp_width(this, ps%split%force), limit=this%xi, surface=this%k))
+            call accept_add_event(result, contact_event(event_ramp_widened, st%t, this%i, this%k, &
+                                                        ramp_width(this, ps%split%force), this%xi))
          end if
       end if
       this%p_accepted = ps%split%force
@@ -737,13 +740,6 @@ contains
       if (this%shattered) return
       call chain_accept(this%chain, ps%cs%delta, ps%cs%delta_dot, aux, changed, split=ps%split)
       result%restart = result%restart .or. changed
-   contains
-      subroutine add_event(ev)
-         type(event_t), intent(in) :: ev
-         if (result%n_events >= max_events_per_step) return
-         result%n_events = result%n_events + 1
-         result%events(result%n_events) = ev
-      end subroutine add_event
    end subroutine pair_accept_full
 
    pure subroutine pair_energy(this, st, extra, aux, e)

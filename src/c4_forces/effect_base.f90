@@ -21,175 +21,29 @@
 !! Evaluations are counted by the system, not by the effect (which is
 !! read-only while it is evaluated).
 !!
-!! An effect may declare a proximity guard (proximity_guard_t, its
-!! component guard): a region of a body point or segment in the interior
-!! frame which the occupant tests from st's frame data before it
-!! dispatches add_forces. Where the guard holds, the effect is inert at st:
-!! b unchanged, every rate (extra_rate, aux_rate) zero, whatever its
-!! memory; the occupant writes those zeros itself and counts the
-!! evaluation, without the call (docs/architecture.md, the effect layer;
-!! the contact pairs far from contact, D-C29).
+!! An effect may declare a proximity guard (proximity_guard): a region
+!! where it is inert for certain, tested before each dispatch (D-C29).
+!!
+!! What the interface's procedures take and give has a module each:
+!! body_state (what an effect sees; also public here), effect_events
+!! (what accept reports), effect_energies, point_forces, effect_peaks,
+!! proximity_guard, output_series; effect_slots holds effects in a list.
 module effect_base
    use kinds, only: wp
-   use model, only: n_dof, n_seg
-   use vehicle_motion, only: vehicle_state_t
+   use model, only: n_dof
+   use body_state, only: body_state_t
+   use effect_energies, only: n_energy_kinds
+   use effect_events, only: accept_result_t
+   use point_forces, only: point_force_list_t
+   use effect_peaks, only: effect_peak_t
+   use proximity_guard, only: proximity_guard_t
    use output_series, only: output_series_t
    use text_io, only: string_t
    implicit none
    private
 
-   public :: effect_t, effect_slot_t, body_state_t, event_t, accept_result_t, effect_peak_t
-   public :: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
-   public :: event_dislocation_low, event_dislocation_high, event_kind_name, max_events_per_step
-   public :: event_tension, event_compression, event_shear, event_undesired, event_shatter, event_cut
-   public :: event_ramp_widened, n_event_kinds
-   public :: point_force_t, point_force_list_t, point_force_add, point_force_reserve
-   public :: proximity_guard_t, guard_none, guard_ball, guard_half_plane, guard_slab, guard_capsule, guard_always
-   public :: guard_rel_margin, guard_big, guard_holds
-
-   !> Kinds of energy an effect reports (C.6): stored in a conservative
-   !! force, dissipated by it, supplied to the body from outside.
-   integer, parameter :: energy_stored = 1, energy_dissipated = 2, energy_supplied = 3
-   integer, parameter :: n_energy_kinds = 3
-   character(len=10), parameter :: energy_kind_name(n_energy_kinds) = [character(len=10) :: &
-      'stored', 'dissipated', 'supplied']
-
-   !> Event kinds (injuries and other happenings on accepted steps).
-   integer, parameter :: event_dislocation_low = 1, event_dislocation_high = 2
-   !> Table 5's force criteria (force_injuries): joint j, bone i
-   integer, parameter :: event_tension = 3, event_compression = 4, event_shear = 5
-   !> Table 9's undesired contact of body point `index` with surface `surface` (C.7, NEND = 2)
-   integer, parameter :: event_undesired = 6
-   !> The windshield shattered (FSW reached), and the head cut on its broken glass (an injury)
-   integer, parameter :: event_shatter = 7, event_cut = 8
-   !> A contact's friction ramp widened for the fixed step (D-C18b; a note, not an injury)
-   integer, parameter :: event_ramp_widened = 9
-   !> The number of event kinds: every kind from 1 to it has a name here and
-   !! a description in c6_output/event_text (test_every_event_kind_described)
-   integer, parameter :: n_event_kinds = 9
-   character(len=28), parameter :: event_kind_name(n_event_kinds) = [character(len=28) :: &
-      'dislocation (below limit)', 'dislocation (above limit)', 'tension dislocation', 'compression fracture', &
-      'shear fracture', 'undesired contact', 'windshield shattered', 'cut on broken glass', 'friction ramp widened']
-   !> Events one effect may report at one accepted step.
-   integer, parameter :: max_events_per_step = 16
-
-   !> What every effect sees at one evaluation: the time, the occupant's
-   !! generalized coordinates and rates, the sines and cosines of the
-   !! segment angles, and the vehicle's state (filled only when an effect of
-   !! the occupant needs it); after the vehicle's state, when an effect needs
-   !! them (needs_joints: the contact pairs' bound, pair_far, reads them 20
-   !! times an evaluation), the segments' joints and axes in the interior
-   !! frame and the sizes that bound them (occupant_frame). No default
-   !! values: it is filled at every evaluation (occupant_state), and
-   !! initializing it there would cost as much as a force.
-   type :: body_state_t
-      real(wp) :: t
-      real(wp) :: z(n_dof), zdot(n_dof)
-      real(wp) :: c(n_seg), s(n_seg)
-      type(vehicle_state_t) :: vehicle
-      !> segment i's proximal joint and its e(theta_i) in the interior frame
-      !! (x = R(Phi)(X - x_c), the start of C.4)
-      real(wp) :: frame_joint(2, n_seg), frame_axis(2, n_seg)
-      !> |X| + |Y| of segment i's joint (inertial) + |x_c| + |y_c|: the
-      !! coordinates' size; sum |z'| + sum |vehicle rates|: the rates' size
-      real(wp) :: joint_size(n_seg), rate_size
-   end type body_state_t
-
-   !> Something that happened at an accepted step.
-   type :: event_t
-      real(wp) :: t = 0.0_wp
-      integer :: kind = 0
-      integer :: index = 0          !< the joint, segment or surface it concerns
-      real(wp) :: value = 0.0_wp    !< the value found
-      real(wp) :: limit = 0.0_wp    !< the limit it passed
-      logical :: injury = .false.   !< counts for the injury end test (C.7)
-      integer :: occupant = 1
-      integer :: surface = 0        !< the surface k of a contact event
-   end type event_t
-
-   !> Kinds of proximity guard: none (always dispatched); the body point
-   !! q farther than the reach from the centre (ball); farther than the
-   !! reach in front of the line through the centre, along the unit
-   !! normal (half-plane); farther than the reach from that line on either
-   !! side (slab); the segment from the joint to q (along e, the axis in
-   !! the interior frame) farther than the reach from the centre
-   !! (capsule); inert at every state (always).
-   integer, parameter :: guard_none = 0, guard_ball = 1, guard_half_plane = 2, guard_capsule = 3, &
-      guard_always = 4, guard_slab = 5
-   !> The guard's margin, guard_rel_margin (1 + size + st%joint_size(seg)),
-   !! added to its reach; a guard holds only where st%rate_size and
-   !! size + st%joint_size(seg) are at most guard_big (not so NaN).
-   real(wp), parameter :: guard_rel_margin = 2.0e-9_wp, guard_big = 1.0e100_wp
-
-   !> A proximity guard (see the module's header). The body point is
-   !! q = st%frame_joint(:, seg) + along st%frame_axis(:, seg) (ball,
-   !! half-plane, slab), the capsule's axis st%frame_joint(:, seg) to that q; the
-   !! reach is radius + m, m = guard_rel_margin (1 + size +
-   !! st%joint_size(seg)). An effect declares one only where its holding
-   !! implies, whatever the roundings of the two computations, the effect's
-   !! own proof that it is inert (for a contact pair, far_check's bound,
-   !! whose margin is half the guard's; radius >= 0). Declaring one makes
-   !! the occupant fill st's interior frame data (as needs_joints); the
-   !! occupant decides that when the effect is placed, so an effect whose
-   !! guard may turn from none to another kind later must set needs_joints
-   !! at construction (the contact pairs do).
-   type :: proximity_guard_t
-      integer :: kind = guard_none
-      integer :: seg = 1
-      real(wp) :: along = 0.0_wp
-      real(wp) :: centre(2) = 0.0_wp, normal(2) = 0.0_wp
-      real(wp) :: radius = 0.0_wp
-      !> the effect's own sizes, in the margin (a pair's lengths and radii, its surface's)
-      real(wp) :: size = 0.0_wp
-   end type proximity_guard_t
-
-   !> A force from outside the body (gravity, seat, belt, contact) on one
-   !! segment, at a point of it: inertial components (lb) and position (in).
-   !! Effects that apply such forces report them (`point_forces`), so that
-   !! the joint reactions can be taken segment by segment (Newton-Euler,
-   !! A-INJ), and each effect's list reproduces its generalized forces.
-   type :: point_force_t
-      integer :: segment = 0
-      real(wp) :: point(2) = 0.0_wp
-      real(wp) :: force(2) = 0.0_wp
-      !> a load across the segment's bone (Table 5's shear fracture); not so
-      !! gravity, spread over the segment, nor a force at a joint (the seat's
-      !! hip force), which the joint passes on
-      logical :: across_bone = .true.
-      !> a contact's body point i, surface k and normal force P (Table 5's
-      !! skull, back, rib, lower leg and face loads); 0 for other forces
-      integer :: arc = 0, surface = 0
-      real(wp) :: normal_force = 0.0_wp
-   end type point_force_t
-
-   !> The point forces of an occupant's effects at one state (f(1:n); it
-   !! grows as forces are added, doubling, and keeps its storage when it is
-   !! emptied (n = 0) and filled again: a list reserved before the step loop
-   !! allocates nothing in it, docs/architecture.md).
-   type :: point_force_list_t
-      integer :: n = 0
-      type(point_force_t), allocatable :: f(:)
-   end type point_force_list_t
-
-   !> A largest value over the accepted steps that an effect keeps (in its
-   !! memory, changed in accept) and reports at the end of the run: the
-   !! summary lists it and /summary/maxima of the HDF5 file has a column
-   !! for it.
-   type :: effect_peak_t
-      character(len=19) :: name = ' '    !< the column: <effect>_<quantity>, lower case
-      character(len=40) :: title = ' '   !< the effect's (for the listing)
-      character(len=24) :: label = ' '   !< the quantity, for the listing
-      character(len=8) :: unit = ' '
-      real(wp) :: value = 0.0_wp
-      real(wp) :: t = 0.0_wp             !< when
-   end type effect_peak_t
-
-   !> What `accept` reports.
-   type :: accept_result_t
-      logical :: restart = .false.  !< the right-hand side jumped: the stepper must restart
-      integer :: n_events = 0
-      type(event_t) :: events(max_events_per_step)
-   end type accept_result_t
+   !> (body_state_t: the interface's state argument, public here too)
+   public :: effect_t, body_state_t
 
    type, abstract :: effect_t
       character(len=24) :: name = ' '    !< HDF5 group /effects/<name>; lower case, no blanks
@@ -227,11 +81,6 @@ module effect_base
       procedure :: initial_notes => effect_initial_notes
    end type effect_t
 
-   !> An effect in a list.
-   type :: effect_slot_t
-      class(effect_t), allocatable :: e
-   end type effect_slot_t
-
    abstract interface
       !> Add this effect's generalized forces to b; write the rates of its
       !! auxiliary quantities and of its extra degrees of freedom. extra
@@ -248,74 +97,6 @@ module effect_base
    end interface
 
 contains
-
-   !> Whether the proximity guard g holds at st (st's interior frame data
-   !! filled: occupant_frame): the effect is then inert at st. A guard of
-   !! kind none never holds, one of kind always at every state.
-   pure logical function guard_holds(g, st) result(holds)
-      type(proximity_guard_t), intent(in) :: g
-      type(body_state_t), intent(in) :: st
-      real(wp) :: scale, reach, q(2), v(2), u2, lam
-      holds = g%kind == guard_always
-      if (g%kind == guard_none .or. holds) return
-      scale = g%size + st%joint_size(g%seg)
-      if (.not. (st%rate_size <= guard_big .and. scale <= guard_big)) return
-      reach = g%radius + guard_rel_margin*(1.0_wp + scale)
-      select case (g%kind)
-      case (guard_ball)
-         q = st%frame_joint(:, g%seg) + g%along*st%frame_axis(:, g%seg) - g%centre
-         holds = q(1)*q(1) + q(2)*q(2) > reach*reach
-      case (guard_half_plane)
-         q = st%frame_joint(:, g%seg) + g%along*st%frame_axis(:, g%seg) - g%centre
-         holds = q(1)*g%normal(1) + q(2)*g%normal(2) > reach
-      case (guard_slab)
-         q = st%frame_joint(:, g%seg) + g%along*st%frame_axis(:, g%seg) - g%centre
-         holds = abs(q(1)*g%normal(1) + q(2)*g%normal(2)) > reach
-      case (guard_capsule)
-         ! the centre's distance to the segment from the joint to q
-         v = g%along*st%frame_axis(:, g%seg)
-         q = g%centre - st%frame_joint(:, g%seg)
-         u2 = v(1)*v(1) + v(2)*v(2)
-         lam = 0.0_wp
-         if (u2 > 0.0_wp) lam = min(1.0_wp, max(0.0_wp, (q(1)*v(1) + q(2)*v(2))/u2))
-         q = q - lam*v
-         holds = q(1)*q(1) + q(2)*q(2) > reach*reach
-      end select
-   end function guard_holds
-
-   !> Room for at least n forces in the list (its forces kept).
-   pure subroutine point_force_reserve(list, n)
-      type(point_force_list_t), intent(inout) :: list
-      integer, intent(in) :: n
-      type(point_force_t), allocatable :: longer(:)
-      if (allocated(list%f)) then
-         if (size(list%f) >= n) return
-      end if
-      allocate (longer(max(n, 16)))
-      if (list%n > 0) longer(1:list%n) = list%f(1:list%n)
-      call move_alloc(longer, list%f)
-   end subroutine point_force_reserve
-
-   !> Append a force to a list.
-   pure subroutine point_force_add(list, segment, point, force, across_bone, arc, surface, normal_force)
-      type(point_force_list_t), intent(inout) :: list
-      integer, intent(in) :: segment
-      real(wp), intent(in) :: point(2), force(2)
-      logical, intent(in), optional :: across_bone
-      integer, intent(in), optional :: arc, surface
-      real(wp), intent(in), optional :: normal_force
-      if (.not. allocated(list%f)) then
-         call point_force_reserve(list, 16)
-      else if (list%n == size(list%f)) then
-         call point_force_reserve(list, 2*size(list%f))
-      end if
-      list%n = list%n + 1
-      list%f(list%n) = point_force_t(segment=segment, point=point, force=force)
-      if (present(across_bone)) list%f(list%n)%across_bone = across_bone
-      if (present(arc)) list%f(list%n)%arc = arc
-      if (present(surface)) list%f(list%n)%surface = surface
-      if (present(normal_force)) list%f(list%n)%normal_force = normal_force
-   end subroutine point_force_add
 
    !> The forces from outside the body that the effect applies, appended
    !! to list: none for the default effect (internal torques, inertia).

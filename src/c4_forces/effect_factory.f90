@@ -1,12 +1,15 @@
 !> The scene (report C.4): the effects an occupant's deck calls for, built
 !! once per run, in the order of the terms of b = C - G + J + S + B + Q.
 !! An effect the deck does not call for is not built, so it costs nothing
-!! (docs/architecture.md, rule 2). Adding an effect is one line here.
+!! (docs/architecture.md, rule 2). Adding an effect is one line here, and
+!! one more for its parameter table (scene_parameter_tables), which the
+!! listing prints.
 module effect_factory
    use kinds, only: wp
    use model, only: model_t, n_joint, n_dof, seat_none, nbelt_lap, nbelt_torso, coupling_all
    use preliminary, only: body_constants_t
-   use effect_base, only: effect_t, effect_slot_t
+   use effect_base, only: effect_t
+   use effect_slots, only: effect_slot_t
    use centrifugal, only: centrifugal_effect
    use gravity, only: gravity_effect
    use joint_elasticity, only: joint_elasticity_effect
@@ -19,10 +22,18 @@ module effect_factory
    use contact_scene, only: scene_contact_effects
    use contact_forces, only: contact_pair_effect_t, pair_set_initial
    use seat_geometry, only: rest_state
+   use deck_reader, only: deck_t
+   use text_table, only: text_table_t, append_table
+   use model_tables, only: options_table, body_table, joints_table, injury_table, materials_table, arcs_table, &
+      initial_table, pulse_table
+   use loading_table, only: loading_curves_table
+   use seat_table, only: seat_parameter_table
+   use belts_table, only: belts_parameter_table
+   use interior_table, only: surfaces_table, contact_pairs_table
    implicit none
    private
 
-   public :: build_effects
+   public :: build_effects, scene_parameter_tables
 
 contains
 
@@ -74,4 +85,28 @@ contains
          call move_alloc(longer, effects)
       end subroutine add
    end subroutine build_effects
+
+   !> The parameter tables of the scene a deck (read into deck, built into
+   !! m) describes, in the listing's order: the model's sections
+   !! (model_tables) and each subsystem's, declared beside its code. A
+   !! subsystem the deck leaves out gives a table without lines.
+   function scene_parameter_tables(m, deck) result(tables)
+      type(model_t), intent(in) :: m
+      type(deck_t), intent(in) :: deck
+      type(text_table_t), allocatable :: tables(:)
+      allocate (tables(0))
+      call append_table(tables, options_table(m))
+      call append_table(tables, body_table(m))
+      call append_table(tables, joints_table(m))                ! C.4.c
+      call append_table(tables, injury_table(m))
+      call append_table(tables, materials_table(m))
+      call append_table(tables, loading_curves_table(m))        ! C.4.e, f
+      call append_table(tables, seat_parameter_table(m, deck))  ! C.4.d
+      call append_table(tables, belts_parameter_table(m))       ! C.4.e
+      call append_table(tables, surfaces_table(m))              ! C.4.f
+      call append_table(tables, contact_pairs_table(m))
+      call append_table(tables, arcs_table(m))
+      call append_table(tables, initial_table(m))
+      call append_table(tables, pulse_table(m))
+   end function scene_parameter_tables
 end module effect_factory

@@ -6,7 +6,9 @@ module gravity
    use model, only: n_seg, n_dof, hip_y
    use preliminary, only: body_constants_t
    use model, only: body_section_t
-   use effect_base, only: effect_t, body_state_t, energy_stored, n_energy_kinds, point_force_list_t, point_force_add
+   use effect_base, only: effect_t, body_state_t
+   use effect_energies, only: energy_stored, n_energy_kinds
+   use point_forces, only: point_force_list_t, point_force_add
    use body_kinematics, only: point_state_t, segment_cg_state
    implicit none
    private

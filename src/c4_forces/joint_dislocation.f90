@@ -3,15 +3,24 @@
 !! joints have dislocated) changes only when a step is accepted, and each
 !! first passage of a limit is an injury event.
 module joint_dislocation
-   use kinds, only: wp
-   use model, only: n_joint, n_dof, restraint_t
-   use effect_base, only: effect_t, body_state_t, accept_result_t, event_t, event_dislocation_low, &
-      event_dislocation_high, max_events_per_step
+   use kinds, only: wp, deg
+   use model, only: n_joint, n_dof, restraint_t, joint_name
+   use number_format, only: fixed
+   use effect_base, only: effect_t, body_state_t
+   use effect_events, only: accept_result_t, event_t, event_kind_t, event_of, accept_add_event
    use joint_coupling, only: relative_angle
    implicit none
    private
 
-   public :: joint_dislocation_t, joint_dislocation_effect
+   public :: joint_dislocation_t, joint_dislocation_effect, dislocation_event, dislocation_event_kinds
+   public :: event_dislocation_low, event_dislocation_high
+
+   !> Its events' codes (/events/kind, docs/usage.md) and kinds: joint `index` dislocated
+   !! below its lower or above its upper limit (an injury).
+   integer, parameter :: event_dislocation_low = 1, event_dislocation_high = 2
+   type(event_kind_t), parameter :: dislocation_event_kinds(2) = [ &
+      event_kind_t(event_dislocation_low, 'dislocation (below limit)'), &
+      event_kind_t(event_dislocation_high, 'dislocation (above limit)')]
 
    type, extends(effect_t) :: joint_dislocation_t
       real(wp) :: lower(n_joint) = 0.0_wp, upper(n_joint) = 0.0_wp  !< limits (rad)
@@ -70,10 +79,19 @@ contains
             cycle
          end if
          this%dislocated(i) = .true.
-         if (result%n_events < max_events_per_step) then
-            result%n_events = result%n_events + 1
-            result%events(result%n_events) = event_t(st%t, kind, i, delta, limit, .true., 1)
-         end if
+         call accept_add_event(result, dislocation_event(kind, st%t, i, delta, limit))
       end do
    end subroutine dislocation_accept
+
+   !> The injury event of kind code (event_dislocation_low or _high) at time
+   !! t: joint i's relative angle passed its limit (rad).
+   function dislocation_event(code, t, i, angle, limit) result(e)
+      integer, intent(in) :: code, i
+      real(wp), intent(in) :: t, angle, limit
+      type(event_t) :: e
+      type(event_kind_t) :: k
+      k = dislocation_event_kinds(code)
+      e = event_of(k, t, i, angle, 'joint '//joint_name(i)//'  '//trim(k%name)//': angle'//fixed(angle/deg, 9, 3) &
+                   //' deg, limit'//fixed(limit/deg, 9, 3)//' deg', limit=limit, injury=.true.)
+   end function dislocation_event
 end module joint_dislocation

@@ -3,7 +3,8 @@
 module joint_elasticity
    use kinds, only: wp
    use model, only: n_dof, n_joint, joint_partner
-   use effect_base, only: effect_t, body_state_t, energy_stored, n_energy_kinds
+   use effect_base, only: effect_t, body_state_t
+   use effect_energies, only: energy_stored, n_energy_kinds
    use output_series, only: output_series_t
    use joint_coupling, only: relative_angle, per_joint_series, joint_list_text
    implicit none

@@ -16,7 +16,9 @@
 module joint_friction
    use kinds, only: wp
    use model, only: n_dof, n_joint, joint_partner
-   use effect_base, only: effect_t, body_state_t, accept_result_t, energy_dissipated, n_energy_kinds
+   use effect_base, only: effect_t, body_state_t
+   use effect_events, only: accept_result_t
+   use effect_energies, only: energy_dissipated, n_energy_kinds
    use dead_band, only: slip_of
    use output_series, only: output_series_t
    use joint_coupling, only: per_joint_series, joint_list_text

@@ -5,7 +5,8 @@
 module joint_stops
    use kinds, only: wp
    use model, only: n_dof, n_joint, restraint_t, joint_partner
-   use effect_base, only: effect_t, body_state_t, energy_stored, n_energy_kinds
+   use effect_base, only: effect_t, body_state_t
+   use effect_energies, only: energy_stored, n_energy_kinds
    use output_series, only: output_series_t
    use joint_coupling, only: relative_angle, per_joint_series, joint_list_text
    use joint_restraints, only: restraint_torque, restraint_energy, restraint_is_active

@@ -36,8 +36,10 @@ module seat_beams
    use kinds, only: wp, deg
    use strings, only: num
    use model, only: n_dof, seat_section_t, body_section_t
-   use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
-      energy_supplied, n_energy_kinds, point_force_list_t
+   use effect_base, only: effect_t, body_state_t
+   use effect_events, only: accept_result_t
+   use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
+   use point_forces, only: point_force_list_t
    use output_series, only: output_series_t, series_new, column
    use seat_geometry, only: add_seat_point_forces, contact_reference, &
       seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, hip_friction, &

@@ -16,7 +16,8 @@ module seat_geometry
    use kinds, only: wp, deg
    use segment_trig, only: segment_cos_sin
    use model, only: n_dof, n_seg, hip_x, hip_y
-   use effect_base, only: body_state_t, point_force_list_t, point_force_add
+   use body_state, only: body_state_t
+   use point_forces, only: point_force_list_t, point_force_add
    use dead_band, only: slip_of    ! (the hip slides once |x_1'| reaches xi, A-S4)
    use seat_beam_statics, only: poly_force   ! (the statics at t = 0 use it too: C.2 below C.4)
    implicit none

@@ -26,8 +26,11 @@ module seat_springs
    use kinds, only: wp, deg
    use strings, only: num
    use model, only: n_dof, n_seg, hip_x, hip_y, seat_section_t, body_section_t
-   use effect_base, only: effect_t, body_state_t, accept_result_t, energy_stored, energy_dissipated, &
-      energy_supplied, n_energy_kinds, point_force_list_t, effect_peak_t
+   use effect_base, only: effect_t, body_state_t
+   use effect_events, only: accept_result_t
+   use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
+   use point_forces, only: point_force_list_t
+   use effect_peaks, only: effect_peak_t
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_state_t, segment_cg_state
    use seat_geometry, only: add_seat_point_forces, contact_reference, &

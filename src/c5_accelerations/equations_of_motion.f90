@@ -12,7 +12,7 @@ module equations_of_motion
    use ode_system, only: ode_system_t
    use state_layout, only: state_layout_t
    use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init
-   use effect_base, only: body_state_t
+   use body_state, only: body_state_t
    use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_initial_y, &
       occupant_add_effect, occupant_vehicle
    use effect_base, only: effect_t

@@ -24,13 +24,22 @@
 !!   panel, front seat back, column and rims (F7-1).
 module force_injuries
    use kinds, only: wp
-   use model, only: body_section_t, n_seg, n_dof, n_joint, n_injury
-   use effect_base, only: point_force_list_t
+   use model, only: body_section_t, n_seg, n_dof, n_joint, n_injury, joint_name
+   use number_format, only: fixed
+   use point_forces, only: point_force_list_t
+   use effect_events, only: event_t, event_kind_t, event_of
    use joint_reactions, only: joint_reaction_forces, bone_components
    implicit none
    private
 
    public :: bone_loads_t, bone_loads, fc_defined, fs_defined, fc_name, fs_name
+   public :: force_injury_event, force_event_kinds, event_tension, event_compression, event_shear
+
+   !> The criteria's events' codes (/events/kind, docs/usage.md) and kinds: joint j's
+   !! tension, bone i's compression or shear passed its limit (an injury).
+   integer, parameter :: event_tension = 3, event_compression = 4, event_shear = 5
+   type(event_kind_t), parameter :: force_event_kinds(3) = [event_kind_t(event_tension, 'tension dislocation'), &
+      event_kind_t(event_compression, 'compression fracture'), event_kind_t(event_shear, 'shear fracture')]
 
    !> Table 5: the bones of the compression and shear fracture criteria.
    character(len=12), parameter :: fc_name(n_injury) = [character(len=12) :: 'lower spine', 'center spine', &
@@ -99,4 +108,23 @@ contains
          if (.not. any(i == [4, 5, 6])) bl%fs(i) = bl%fs(i) + abs(across(i))
       end do
    end function bone_loads
+
+   !> The injury event at time t of criterion code (event_tension: joint
+   !! index; event_compression, event_shear: bone index) whose load value
+   !! passed its limit.
+   function force_injury_event(code, t, index, value, limit) result(e)
+      integer, intent(in) :: code, index
+      real(wp), intent(in) :: t, value, limit
+      type(event_t) :: e
+      character(len=:), allocatable :: what
+      type(event_kind_t) :: k
+      k = force_event_kinds(code - event_tension + 1)
+      if (code == event_tension) then
+         what = 'joint '//joint_name(index)
+      else
+         what = 'bone '//merge(fc_name(index), fs_name(index), code == event_compression)
+      end if
+      e = event_of(k, t, index, value, what//'  '//trim(k%name)//': force'//fixed(value, 10, 1)//' lb, limit' &
+                   //fixed(limit, 10, 1)//' lb', limit=limit, injury=.true.)
+   end function force_injury_event
 end module force_injuries

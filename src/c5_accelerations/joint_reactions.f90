@@ -20,7 +20,7 @@
 module joint_reactions
    use kinds, only: wp
    use model, only: body_section_t, n_seg, n_dof, n_joint
-   use effect_base, only: point_force_list_t
+   use point_forces, only: point_force_list_t
    use body_kinematics, only: point_state_t, segment_cg_state
    implicit none
    private

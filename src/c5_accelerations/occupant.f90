@@ -8,7 +8,10 @@ module occupant
    use segment_trig, only: segment_cos_sin
    use model, only: model_t, body_section_t, n_dof, n_seg, solver_dense, injury_section_t, end_tests_section_t
    use preliminary, only: body_constants_t, body_constants, initial_state
-   use effect_base, only: effect_t, effect_slot_t, body_state_t, point_force_list_t, guard_none, guard_holds
+   use effect_base, only: effect_t, body_state_t
+   use effect_slots, only: effect_slot_t
+   use point_forces, only: point_force_list_t
+   use proximity_guard, only: guard_none, guard_holds
    use effect_factory, only: build_effects
    use body_kinematics, only: joint_positions
    use vehicle_motion, only: vehicle_motion_t, vehicle_state_at
@@ -221,7 +224,7 @@ contains
    !> b = C - G + J + S + B + Q (C.4): the sum of the evaluated effects'
    !! generalized forces, and the rates of their own quantities into dydt.
    !! counts(k) counts the evaluations of effect k. An effect whose
-   !! proximity guard holds at st (effect_base; D-C29) is inert there: its
+   !! proximity guard holds at st (proximity_guard; D-C29) is inert there: its
    !! rates are zero and b is left as it is, what its add_forces would
    !! give, without the dispatch; it is counted all the same.
    pure subroutine occupant_forces(occ, st, y, b, dydt, counts)

@@ -9,7 +9,7 @@ module frame_collector
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
-   use effect_base, only: event_t
+   use effect_events, only: event_t
    use run_summary, only: run_summary_t
    implicit none
    private

@@ -9,6 +9,8 @@
 !! Every write is checked; `flush` and `commit` report a failure.
 module listing
    use strings, only: itoa
+   use text_io, only: string_t
+   use text_table, only: text_table_t
    use output_files, only: output_file_t
    implicit none
    private
@@ -31,6 +33,7 @@ module listing
       procedure :: blank => listing_blank
       procedure :: heading => listing_heading
       procedure :: keep => listing_keep
+      procedure :: table => listing_table
    end type listing_t
 
 contains
@@ -136,6 +139,23 @@ contains
       call this%put(' '//text)
       call this%put(' '//repeat('-', len_trim(text)))
    end subroutine listing_heading
+
+   !> Any table (text_table: each subsystem declares its parameter table
+   !! so): its title as a heading, kept on one page with its first lines
+   !! (keep_lines), then its lines; nothing for a table without lines.
+   subroutine listing_table(this, t)
+      class(listing_t), intent(inout) :: this
+      type(text_table_t), intent(in) :: t
+      type(string_t), allocatable :: lines(:)
+      integer :: i
+      allocate (lines(0))   ! (gfortran 12 -Wuninitialized: the assignment reads the descriptor)
+      lines = t%lines()
+      if (size(lines) == 0) return
+      call this%heading(t%title, t%keep_lines())
+      do i = 1, size(lines)
+         call this%put(lines(i)%s)
+      end do
+   end subroutine listing_table
 
    !> Open a new page unless n more lines fit on this one.
    subroutine listing_keep(this, n)

@@ -8,7 +8,7 @@ module output_calc
    use kinds, only: wp, deg, g_std
    use model, only: body_section_t, vehicle_section_t, n_dof, n_seg, n_joint, hip_x, hip_y
    use body_kinematics, only: point_state_t, segment_cg_state, joint_state, to_interior
-   use effect_base, only: body_state_t
+   use body_state, only: body_state_t
    use joint_coupling, only: relative_angle, joint_columns
    use output_series, only: output_series_t, output_column_t, series_new, column
    implicit none

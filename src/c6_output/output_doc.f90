@@ -6,8 +6,7 @@ module output_doc
    use strings, only: itoa
    use text_io, only: string_t, append_string
    use output_registry, only: output_registry_t
-   use effect_base, only: n_event_kinds, event_kind_name
-   use event_text, only: event_is_note
+   use event_text, only: event_kind_catalogue
    implicit none
    private
 
@@ -55,22 +54,25 @@ contains
                          //'of head and chest, the chest''s cumulative 3 ms clip; from the accelerations at ' &
                          //'accepted steps (docs/injury.md) |')
       call append_string(lines, '| `/events/time`, `/events/kind`, `/events/index`, `/events/text` | (k) | - | summary | ' &
-                         //'the events as they happened, by kind: '//event_kinds(.false.)//'; and notes, not injuries ' &
+                         //'the events as they happened, by kind (a code never renumbered; a new kind takes the next): ' &
+                         //event_kinds(.false.)//'; and notes, not injuries ' &
                          //'(their text begins "note:", the listing''s NOTES): '//event_kinds(.true.)//' |')
       call append_string(lines, '| `/input/deck` | (cards) | - | deck echo | the deck''s card images |')
    end function output_table_lines
 
-   !> The event kinds (effect_base) that are notes, or those that are not:
-   !! "1 dislocation (below limit), 2 ...".
+   !> The event kinds (event_text's catalogue) that are notes, or those that
+   !! are not: "1 dislocation (below limit), 2 ...".
    function event_kinds(notes) result(s)
       logical, intent(in) :: notes
       character(len=:), allocatable :: s
       integer :: k
       s = ''
-      do k = 1, n_event_kinds
-         if (event_is_note(k) .neqv. notes) cycle
-         if (len(s) > 0) s = s//', '
-         s = s//itoa(k)//' '//trim(event_kind_name(k))
+      do k = 1, size(event_kind_catalogue)
+         associate (kind => event_kind_catalogue(k))
+            if (kind%note .neqv. notes) cycle
+            if (len(s) > 0) s = s//', '
+            s = s//itoa(kind%code)//' '//trim(kind%name)
+         end associate
       end do
    end function event_kinds
 

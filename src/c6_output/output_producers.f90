@@ -7,8 +7,9 @@ module output_producers
    use kinds, only: wp
    use strings, only: itoa
    use model, only: model_t, vehicle_section_t, n_dof, n_seg, n_joint
-   use effect_base, only: body_state_t, energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, &
-      energy_kind_name, point_force_list_t
+   use body_state, only: body_state_t
+   use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
+   use point_forces, only: point_force_list_t
    use occupant, only: occupant_t, occupant_point_forces
    use joint_reactions, only: joint_reaction_forces, bone_components
    use joint_coupling, only: joint_columns

@@ -7,7 +7,7 @@
 module output_sink
    use error_handling, only: error_t
    use output_registry, only: output_registry_t, output_frame_t
-   use effect_base, only: event_t
+   use effect_events, only: event_t
    use run_summary, only: run_summary_t
    use equations_of_motion, only: crash_system_t
    implicit none

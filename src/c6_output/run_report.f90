@@ -1,41 +1,31 @@
 !> The listing of a run (C.6), written as the run goes: the deck echoed
-!! with card numbers, the parameter tables laid out like the report's
-!! Tables 1-6 and the preliminary constants of C.2 when the run begins; the
+!! with card numbers, the scene's parameter tables (each declared by its
+!! subsystem as a text_table, the report's Tables 1-11 as the run uses
+!! them) and the preliminary constants of C.2 when the run begins; the
 !! time-history tables of the output registry chosen by NOUT, a page of
 !! rows at a time for every table (so memory stays bounded whatever TMAX and
 !! DTPRINT are); the summary at the end (maxima and when they occurred,
 !! injuries, the end of the run, the energy balance, the cost).
 module run_report
-   use kinds, only: wp, deg, g_std, i8, pi
+   use kinds, only: wp, deg, g_std, i8
    use strings, only: itoa
-   use model, only: model_t, n_seg, n_joint, n_injury, n_arc, joint_partner, segment_name, &
-      joint_name, arc_name, form_name, form_table, integrator_name, end_option_name, nint_adams, &
-      astart_name, solver_name, material_name, seat_none, seat_springs, seat_rigid_beam, seat_beams, &
-      seat_form_name, n_belt_card, belt_card_lap2, coupling_name, nbelt_lap, nbelt_torso
+   use model, only: model_t, n_joint, n_injury, joint_name, integrator_name, nint_adams
    use deck_reader, only: deck_t, echo_bad, echo_header
-   use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text, g_seat, g_seatbeaminit, &
-      g_seatbeams
-   use deck_fields, only: group_given
-   use belt_geometry, only: belt_section_geometry_t, lap_belt_geometry
-   use seat_beam_statics, only: n_beam_quantities, beam_quantity_name, bq_a, bq_ap, bq_w0, bq_fhps0, &
-      bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
+   use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text
    use error_handling, only: error_t, error_set, exit_io
    use listing, only: listing_t
-   use loading_curves, only: curve_is_defined, curve_polynomial, curve_table
    use number_format, only: fixed, es11_3, f10_5, right_int
-   use output_series, only: output_series_t, max_listing_columns
+   use text_table, only: text_table_t
+   use output_series, only: max_listing_columns
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
-   use effect_base, only: event_t, event_kind_name, event_tension, event_compression, event_shear, event_undesired, &
-      event_shatter, event_cut
-   use contact_tables, only: surface_name, contact_pair_t, is_undesired
-   use contact_scene, only: scene_pairs, resolved_surface, surface_layers
-   use contact_geometry, only: contact_surface_t, surface_flat, surface_line, surface_circle
+   use effect_events, only: event_t
+   use effect_factory, only: scene_parameter_tables
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t
    use force_injuries, only: fc_defined, fs_defined, fc_name, fs_name
    use acceleration_criteria, only: hic_result_t
-   use event_text, only: event_description, event_is_note
+   use event_text, only: event_description
    use end_tests, only: end_reason_text, end_failure, end_energy
    implicit none
    private
@@ -274,532 +264,21 @@ contains
       s = name//':'//itoa(line)
    end function source_line
 
-   !> Tables 1-6 of the report, as the run uses them, with the seat's
-   !! parameters (C.1) and Table 2 for the belts.
+   !> The parameter tables of the scene (effect_factory's list: the model's
+   !! sections' and each subsystem's), each under its title.
    subroutine write_parameters(lst, m, deck)
       type(listing_t), intent(inout) :: lst
       type(model_t), intent(in) :: m
       type(deck_t), intent(in) :: deck
-      character(len=132) :: line
-      integer :: i
-
+      type(text_table_t), allocatable :: tables(:)
+      integer :: k
       call lst%new_page('PARAMETERS (C.1, TABLES 1-6)')
-      call lst%heading('OPTIONS AND TIME CONTROLS', 9)
-      associate (o => m%options, tc => m%time, nc => m%numerics)
-         write (line, '(a,i2,a,i2,a,i2,a,i2,a,i2,a,i2)') '  NBODY', o%nbody, '   NBELT', o%nbelt, &
-            '   NEND', o%nend, '   NLOAD', o%nload, '   NOUT', o%nout, '   NINT', o%nint
-         call lst%put(line)
-         call lst%put('  integrator: '//trim(integrator_name(o%nint))//'    end test: '//trim(end_option_name(o%nend)))
-         if (o%nint == nint_adams) call lst%put('  Adams-Moulton start: '//trim(astart_name(nc%am_start)))
-         write (line, '(a,es11.4,a,es11.4,a,es11.4,a)') '  TMAX', tc%t_max, ' s   DT', tc%dt, ' s   DTPRINT', &
-            tc%dt_print, ' s'
-         call lst%put(line)
-         write (line, '(a,es10.3,a,i4,a,es10.3,a,es10.3)') '  CTOL', tc%corrector_tol, '   CITER', &
-            tc%corrector_max_iter, '   RTOL', tc%rtol, '   ATOL', tc%atol
-         call lst%put(line)
-         write (line, '(a,a,a,es10.3,a)') '  solver of A z'''' = b: ', trim(solver_name(nc%solver)), &
-            '    energy balance tolerance', nc%energy_tol, merge(' (continue)', ' (stop)    ', nc%energy_continue)
-         call lst%put(line)
-         call lst%put('  G'//fixed(m%environment%gravity, 10, 4)//' in/s^2')
-      end associate
-
-      associate (b => m%body)
-         call lst%heading('TABLE 1 - BODY SEGMENTS (I AS IN TABLE 5)', 12)
-         call lst%put('   I  SEGMENT        MASS        WEIGHT     INERTIA     LENGTH L    CG DIST RHO')
-         call lst%put('                     lb*s^2/in   lb         lb*in*s^2   in          in')
-         do i = 1, n_seg
-            write (line, '(i4,2x,a12,5es12.4)') i, segment_name(i), b%mass(i), b%mass(i)*g_std, &
-               b%inertia(i), b%length(i), b%rho(i)
-            call lst%put(line)
-         end do
-         write (line, '(6x,a12,2es12.4)') 'total', sum(b%mass), sum(b%mass)*g_std
-         call lst%put(line)
-      end associate
-
-      call lst%heading('TABLE 1 - BODY JOINTS (TABLE 6: JOINT I COUPLES SEGMENTS I AND M)', 12)
-      call lst%put('   I  JOINT         M  K           C''          XI        OMEGA     BOMEGA    ' &
-                   //'T''          T-HAT''      FORM    DISLOCATION')
-      call lst%put('                       in*lb/rad   in*lb       deg/s     deg       deg       ' &
-                   //'in*lb/rad   in*lb/rad           deg      deg')
-      do i = 1, n_joint
-         associate (r => m%joints%restraint(i), jt => m%joints)
-            write (line, '(i4,2x,a12,i3,2es12.4,4a,2es12.4,2x,a6,2a)') i, joint_name(i), &
-               joint_partner(i), jt%k_elastic(i), jt%c_friction(i), fixed(jt%xi(i)/deg, 10, 4), &
-               fixed(r%lower/deg, 10, 2), fixed(r%upper/deg, 10, 2), '', r%coef_lower(1), r%coef_upper(1), &
-               form_name(r%form), fixed(r%dislocation_lower/deg, 9, 2), fixed(r%dislocation_upper/deg, 9, 2)
-         end associate
-         call lst%put(line)
+      allocate (tables(0))   ! (gfortran 12 -Wuninitialized: the assignment reads the descriptor)
+      tables = scene_parameter_tables(m, deck)
+      do k = 1, size(tables)
+         call lst%table(tables(k))
       end do
-      do i = 1, n_joint
-         associate (r => m%joints%restraint(i))
-            if (r%form == form_table) then
-               call lst%put('  joint '//itoa(i)//': tabulated stop torques, depth (deg) : torque (in*lb)')
-               call put_curve('    lower', r%curve_lower%depth, r%curve_lower%torque)
-               call put_curve('    upper', r%curve_upper%depth, r%curve_upper%torque)
-            else if (any(abs(r%coef_lower(2:3)) > 0.0_wp) .or. any(abs(r%coef_upper(2:3)) > 0.0_wp)) then
-               write (line, '(a,i2,a,2es11.3,a,2es11.3)') '  joint', i, ' cubic terms c2, c3: lower', &
-                  r%coef_lower(2:3), '   upper', r%coef_upper(2:3)
-               call lst%put(line)
-            end if
-         end associate
-      end do
-
-      call lst%heading('TABLE 1 - INJURY CRITERIA (TABLE 5 ROWS; 0 = NOT CHECKED)', 13)
-      call lst%put('   I  SHEAR FRACTURE FSF  COMPRESSION FCF  TENSION DISLOCATION FTD   (lb)')
-      do i = 1, n_injury
-         write (line, '(i4,3es18.4)') i, m%injury%f_shear(i), m%injury%f_compression(i), m%injury%f_tension(i)
-         call lst%put(line)
-      end do
-
-      if (any(m%materials%given)) then
-         call lst%heading('TABLE 4 - MATERIALS (THOSE THE DECK GIVES)', count(m%materials%given) + 2)
-         call lst%put('   L  MATERIAL      MU          XI (in/s)   G           R')
-         do i = 1, size(m%materials%given)
-            if (.not. m%materials%given(i)) cycle
-            write (line, '(i4,2x,a12,4es12.4)') i, material_name(i), m%materials%mu(i), m%materials%xi(i), &
-               m%materials%g(i), m%materials%r(i)
-            call lst%put(line)
-         end do
-      end if
-
-      call write_loading_curves(lst, m)
-      call write_seat(lst, m, deck)
-      call write_belts(lst, m)
-      call write_interior(lst, m)
-
-      associate (b => m%body)
-         call lst%heading('TABLE 1 - CONTACT ARCS', 13)
-         call lst%put('   I  ARC           RADIUS R    RHO''        GAMMA (deg)')
-         do i = 1, n_arc
-            write (line, '(i4,2x,a12,2es12.4,a)') i, arc_name(i), b%r_arc(i), b%rho_arc(i), fixed(b%gamma_arc(i)/deg, 10, 2)
-            call lst%put(line)
-         end do
-         write (line, '(i4,2x,a12,es12.4)') n_arc + 1, arc_name(n_arc + 1), b%r_arc(n_arc + 1)
-         call lst%put(line)
-
-         call lst%heading('INITIAL CONDITIONS (C.1) AND VEHICLE', 14)
-         call lst%put('   I  SEGMENT        THETA0 (deg)  THETADOT0 (deg/s)')
-         do i = 1, n_seg
-            write (line, '(i4,2x,a12,2a)') i, segment_name(i), fixed(b%theta0(i)/deg, 12, 3), &
-               fixed(b%theta_dot0(i)/deg, 16, 3)
-            call lst%put(line)
-         end do
-      end associate
-      associate (v => m%vehicle)
-         write (line, '(a,es12.4,a,es12.4,a)') '  vehicle mass', v%mass, ' lb*s^2/in   pitch inertia', &
-            v%inertia, ' lb*in*s^2'
-         call lst%put(line)
-         call lst%put('  XDOT0'//fixed(v%xc_dot0, 10, 3)//' in/s   YDOT0'//fixed(v%yc_dot0, 10, 3)//' in/s   PHI0' &
-                      //fixed(v%phi0/deg, 9, 3)//' deg   PHIDOT0'//fixed(v%phi_dot0/deg, 10, 3)//' deg/s')
-      end associate
-      call write_pulse(lst, m)
-   contains
-      subroutine put_curve(prefix, d, t)
-         character(len=*), intent(in) :: prefix
-         real(wp), intent(in) :: d(:), t(:)
-         integer :: k, j
-         do k = 1, size(d), 5
-            line = prefix
-            do j = k, min(k + 4, size(d))
-               line = trim(line)//fixed(d(j)/deg, 10, 3)//':'
-               write (line(len_trim(line) + 1:), '(es10.3)') t(j)
-            end do
-            call lst%put(line)
-         end do
-      end subroutine put_curve
    end subroutine write_parameters
-
-   !> The loading curves the deck gives (C.4.e, Tables 2 and 4;
-   !! docs/loading.md) and who uses them.
-   subroutine write_loading_curves(lst, m)
-      type(listing_t), intent(inout) :: lst
-      type(model_t), intent(in) :: m
-      character(len=132) :: line
-      integer :: k, j, n
-      n = count([(curve_is_defined(m%loading%curve(k)), k=1, size(m%loading%curve))])
-      if (n == 0) return
-      call lst%heading('LOADING CURVES (C.4.e, TABLES 2 AND 4; NLOAD = '//itoa(m%options%nload)//')', n + 2)
-      do k = 1, size(m%loading%curve)
-         associate (c => m%loading%curve(k))
-            select case (c%form)
-            case (curve_polynomial)
-               write (line, '(a,i3,a,i2,a,5es11.3)') '  curve', k, ': polynomial, N =', c%order, ', sigma', &
-                  c%sigma(1:c%order)
-               call lst%put(line)
-               if (any(c%sigma_rate > 0.0_wp)) then
-                  write (line, '(a,5es11.3)') '             rate terms', c%sigma_rate(1:c%order)
-                  call lst%put(line)
-               end if
-            case (curve_table)
-               write (line, '(a,i3,a)') '  curve', k, ': table of '//itoa(size(c%defl))//' points, deflection (in) : force (lb)'
-               call lst%put(line)
-               do j = 1, size(c%defl), 5
-                  write (line, '(9x,5(es10.3,a,es10.3,2x))') (c%defl(n), ':', c%force(n), n=j, min(j + 4, size(c%defl)))
-                  call lst%put(line)
-               end do
-               if (any(c%sigma_rate > 0.0_wp)) then
-                  write (line, '(a,5es11.3)') '             rate terms', c%sigma_rate
-                  call lst%put(line)
-               end if
-            end select
-         end associate
-      end do
-      do k = 1, size(m%loading%material_curve)
-         if (m%loading%material_curve(k) > 0) call lst%put('  material '//itoa(k)//' ('//trim(material_name(k)) &
-            //') uses curve '//itoa(m%loading%material_curve(k)))
-      end do
-      do k = 1, size(m%loading%belt_curve)
-         if (m%loading%belt_curve(k) > 0) call lst%put('  belt section '//itoa(k)//' uses curve ' &
-            //itoa(m%loading%belt_curve(k)))
-      end do
-   end subroutine write_loading_curves
-
-   !> The seat's parameters (C.1: "the present seat parameters are c_s, s,
-   !! beta_1, beta_2, beta_3, z_o, z-hat, gamma_o, W_o and F'_so"; C.4.d for
-   !! the beam seats; docs/seat.md), one a line: symbol, meaning, unit, value
-   !! and the card field it comes from. Nothing when the deck has no seat.
-   subroutine write_seat(lst, m, deck)
-      type(listing_t), intent(inout) :: lst
-      type(model_t), intent(in) :: m
-      type(deck_t), intent(in) :: deck
-      character(len=*), parameter :: form_text(3) = [character(len=48) :: &
-         'the present seat (figures 11-12)', 'a rigid beam on springs (figures 15-16)', &
-         'a pair of non-rigid beams (figures 13-14)']
-      real(wp) :: q(n_beam_quantities)
-      integer :: j, n
-      associate (p => m%seat)
-         if (p%form == seat_none) return
-         n = merge(16, merge(29, 14, p%form == seat_rigid_beam), p%form == seat_springs)
-         call lst%heading('SEAT (C.1, C.4.d) - FORM '//trim(seat_form_name(p%form))//': '// &
-                          trim(form_text(p%form)), n)
-         call lst%put('  SYMBOL    PARAMETER                                UNIT             VALUE   FROM')
-         select case (p%form)
-         case (seat_springs)
-            call put_value('z_o', 'hip to front edge', 'in', p%z0, '*SEAT Z0')
-            call put_value('z-hat', 'front region (linear hip spring)', 'in', p%z_hat, '*SEAT ZHAT')
-            call put_angle('gamma_o', 'undeflected cushion angle', p%gamma0, '*SEAT GAMMA0')
-            call put_check('W_o', 'static load at the hip', 'W0')
-            call put_check('F''_so', 'static load on the front edge', 'FPS0')
-            call put_value('c_s', 'hip damper', 'lb*s/in', p%c_s, '*SEATSPRINGS CS')
-            call put_value('s', 'front-edge spring', 'lb/in', p%s, '*SEATSPRINGS S')
-            call put_value('beta_1', 'hip spring, coefficient of d', 'lb/in', p%beta(1), '*SEATSPRINGS BETA1')
-            call put_value('beta_2', 'hip spring, coefficient of d^2', 'lb/in^2', p%beta(2), '*SEATSPRINGS BETA2')
-            call put_value('beta_3', 'hip spring, coefficient of d^3', 'lb/in^3', p%beta(3), '*SEATSPRINGS BETA3')
-         case (seat_rigid_beam)
-            call put_value('z_o', 'hip to front edge', 'in', p%z0, '*SEAT Z0')
-            call put_value('c_s', 'rear support damper', 'lb*s/in', p%c_s, '*SEATSPRINGS CS')
-            call put_value('s', 'front support spring', 'lb/in', p%s, '*SEATSPRINGS S')
-            call put_value('beta_1', 'rear support, coefficient of d', 'lb/in', p%beta(1), '*SEATSPRINGS BETA1')
-            call put_value('beta_2', 'rear support, coefficient of d^2', 'lb/in^2', p%beta(2), '*SEATSPRINGS BETA2')
-            call put_value('beta_3', 'rear support, coefficient of d^3', 'lb/in^3', p%beta(3), '*SEATSPRINGS BETA3')
-            call put_value('m_s', 'beam mass', 'lb*s^2/in', p%m_s, '*SEATBEAM MS')
-            call put_value('I_s', 'beam moment of inertia', 'lb*in*s^2', p%i_s, '*SEATBEAM IS')
-            call put_value('y_gu', 'unloaded height of the beam''s CG', 'in', p%y_gu, '*SEATBEAM YGU')
-            call put_angle('gamma_u', 'unloaded beam angle', p%gamma_u, '*SEATBEAM GAMMAU')
-            call put_value('k_hip', 'hip contact stiffness', 'lb/in', p%k_hip, '*SEATBEAM KHIP')
-            call put_value('k_edge', 'leg contact stiffness at the front edge', 'lb/in', p%k_edge, '*SEATBEAM KEDGE')
-            call lst%put('  the ten quantities at t = 0: four given, six solved from the six initial relations (C.4.d)')
-            q = 0.0_wp
-            q([bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0]) = &
-               [p%a, p%a_prime, p%w0, p%fhps0, p%fs0, p%fps0, p%ds0, p%dz0, p%yg0, p%gamma0/deg]
-            do j = 1, n_beam_quantities
-               call put_quantity(j, q(j))
-            end do
-         case (seat_beams)
-            call put_value('z_o', 'hip to front edge', 'in', p%z0, '*SEAT Z0')
-            call put_angle('gamma_o', 'undeflected cushion angle', p%gamma0, '*SEAT GAMMA0')
-            call put_value('l', 'hip beam length (built in at both ends)', 'in', p%ell, '*SEATBEAMS L')
-            call put_value('k', 'cantilever length / l', '-', p%k_ratio, '*SEATBEAMS K')
-            call put_value('e_1', 'hip beam 3 E I', 'lb*in^2', p%e1, '*SEATBEAMS E1')
-            call put_value('e_2', 'cantilever 3 E I', 'lb*in^2', p%e2, '*SEATBEAMS E2')
-            call put_value('x''''_sc', 'a point of the cushion line, x', 'in', p%x_sc, '*SEATBEAMS XSC')
-            if (group_given(deck, g_seatbeams, 'YSC')) then
-               call put_value('y''''_sc', 'a point of the cushion line, y', 'in', p%y_sc, '*SEATBEAMS YSC')
-            else
-               call put_value('y''''_sc', 'a point of the cushion line, y', 'in', p%y_sc, &
-                              'default: touches the hip arc at t = 0')
-            end if
-         end select
-         call put_value('mu', 'friction at the hip', '-', p%mu, '*MATERIALS 1 MU')
-         call put_value('xi', 'friction velocity limit', 'in/s', p%xi, '*MATERIALS 1 XI')
-      end associate
-   contains
-      subroutine put_value(symbol, meaning, unit, x, from)
-         character(len=*), intent(in) :: symbol, meaning, unit, from
-         real(wp), intent(in) :: x
-         character(len=12) :: value
-         write (value, '(es12.4)') x
-         call put_text(symbol, meaning, unit, value, from)
-      end subroutine put_value
-      subroutine put_angle(symbol, meaning, x, from)
-         character(len=*), intent(in) :: symbol, meaning, from
-         real(wp), intent(in) :: x
-         call put_text(symbol, meaning, 'deg', fixed(x/deg, 12, 3), from)
-      end subroutine put_angle
-      !> symbol (10 columns), meaning (41), unit (10), value (12), source.
-      subroutine put_text(symbol, meaning, unit, value, from)
-         character(len=*), intent(in) :: symbol, meaning, unit, value, from
-         character(len=10) :: c_symbol, c_unit
-         character(len=41) :: c_meaning
-         character(len=12) :: c_value
-         c_symbol = symbol
-         c_meaning = meaning
-         c_unit = unit
-         c_value = adjustr(value)
-         call lst%put('  '//c_symbol//c_meaning//c_unit//c_value//'   '//from)
-      end subroutine put_text
-      !> W_o or F'_so of the present seat: given on *SEAT as a check, or not.
-      subroutine put_check(symbol, meaning, field)
-         character(len=*), intent(in) :: symbol, meaning, field
-         if (group_given(deck, g_seat, field)) then
-            call put_value(symbol, meaning, 'lb', merge(m%seat%w0, m%seat%fps0, field == 'W0'), &
-                           '*SEAT '//field//' (a check: the statics are in C.2 below)')
-         else
-            call put_text(symbol, meaning, 'lb', 'not given', '*SEAT '//field//' (the statics are in C.2 below)')
-         end if
-      end subroutine put_check
-      !> One of the rigid beam's ten initial quantities, given or solved.
-      subroutine put_quantity(k, x)
-         integer, intent(in) :: k
-         real(wp), intent(in) :: x
-         character(len=*), parameter :: symbol(n_beam_quantities) = [character(len=10) :: &
-            'a', 'a''', 'W_o', 'F-hat''_so', 'F_so', 'F''_so', 'Delta_so', 'Delta_zo', 'y_go', 'gamma_o']
-         character(len=*), parameter :: meaning(n_beam_quantities) = [character(len=41) :: &
-            'front edge to rear support', 'front edge to beam CG', 'static load at the hip', &
-            'static leg load on the front edge', 'rear support force', 'front support force', &
-            'rear support deflection', 'front support deflection', 'height of the beam''s CG', 'beam angle']
-         character(len=*), parameter :: unit(n_beam_quantities) = [character(len=10) :: &
-            'in', 'in', 'lb', 'lb', 'lb', 'lb', 'in', 'in', 'in', 'deg']
-         integer :: gid
-         character(len=:), allocatable :: from
-         gid = g_seatbeaminit
-         if (any(k == [bq_w0, bq_fps0, bq_gamma0])) gid = g_seat
-         if (group_given(deck, gid, trim(beam_quantity_name(k)))) then
-            from = 'given: *'//trim(merge('SEAT        ', 'SEATBEAMINIT', gid == g_seat))//' '//trim(beam_quantity_name(k))
-         else
-            from = 'solved'
-         end if
-         if (k == bq_gamma0) then
-            call put_angle(symbol(k), meaning(k), x*deg, from)
-         else
-            call put_value(symbol(k), meaning(k), unit(k), x, from)
-         end if
-      end subroutine put_quantity
-   end subroutine write_seat
-
-   !> Table 2 of the report for the belts NBELT calls for: a column per
-   !! section j (1 lap belt, 2 lower torso, 3 upper torso; 4 the lap belt's
-   !! second side, LAPSIDES = 2), a row per parameter: h, l_o, phi_o, l'_o,
-   !! phi'_o, the slack, the loading (curve, G, R; the curves' sigma_n and
-   !! sigma_n+N are in the loading curves above) and the body surface under
-   !! the section; then how the sections share their tension.
-   subroutine write_belts(lst, m)
-      type(listing_t), intent(inout) :: lst
-      type(model_t), intent(in) :: m
-      character(len=*), parameter :: section_name(n_belt_card) = [character(len=16) :: &
-         '1. LAP BELT', '2. LOWER TORSO', '3. UPPER TORSO', '4. LAP, SIDE 2']
-      character(len=132) :: line
-      integer :: cols(n_belt_card), nc, j, k
-      logical :: used(n_belt_card)
-      real(wp) :: length10(n_belt_card), phi10(n_belt_card)
-      associate (b => m%belts, ld => m%loading, nbelt => m%options%nbelt)
-         if (nbelt == 0) return
-         used = [nbelt_lap(nbelt), nbelt_torso(nbelt), nbelt_torso(nbelt), nbelt_lap(nbelt) .and. b%lap_sides == 2]
-         nc = count(used)
-         cols(1:nc) = pack([(j, j=1, n_belt_card)], used)
-         ! the lap belt's length and angle at t = 0 (C.2 with errata C2-2, C2-3)
-         length10 = 0.0_wp
-         phi10 = 0.0_wp
-         do k = 1, nc
-            if (is_lap(cols(k))) call lap_initial(cols(k), length10(cols(k)), phi10(cols(k)))
-         end do
-         call lst%heading('TABLE 2 - BELTS (C.4.e, C.2): NBELT = '//itoa(nbelt), 17)
-         line = '  PARAMETER (SUBSCRIPT J)                             UNIT'
-         do k = 1, nc
-            line(col(k):col(k) + 13) = adjustr(section_name(cols(k))(1:14))
-         end do
-         call lst%put(line)
-         call put_row('h', 'wrap radius (lap); distance on the torso', 'in', b%h)
-         line = row_head('l_o', 'length at t = 0', 'in')
-         do k = 1, nc
-            j = cols(k)
-            if (is_lap(j)) then
-               write (line(col(k):), '(es14.4,a)') length10(j), ' c'
-            else
-               write (line(col(k):), '(es14.4)') b%length0(j)
-            end if
-         end do
-         call lst%put(line)
-         line = row_head('phi_o', 'angle at t = 0, anchor to belt', 'deg')
-         do k = 1, nc
-            j = cols(k)
-            if (is_lap(j)) then
-               line(col(k):) = fixed(phi10(j)/deg, 14, 3)//' c'
-            else
-               line(col(k):) = fixed(b%phi0(j)/deg, 14, 3)
-            end if
-         end do
-         call lst%put(line)
-         line = row_head('l''_o', 'lap anchor to the initial hip', 'in')
-         do k = 1, nc
-            j = cols(k)
-            if (is_lap(j)) then
-               write (line(col(k):), '(es14.4)') b%length_anchor(j)
-            else
-               line(col(k):) = '             -'
-            end if
-         end do
-         call lst%put(line)
-         line = row_head('phi''_o', 'lap, anchor to the initial hip', 'deg')
-         do k = 1, nc
-            j = cols(k)
-            if (is_lap(j)) then
-               line(col(k):) = fixed(b%phi_anchor(j)/deg, 14, 3)
-            else
-               line(col(k):) = '             -'
-            end if
-         end do
-         call lst%put(line)
-         call put_row('Delta', 'slack', 'in', b%slack)
-         line = row_head('k', 'loading curve (N: its order)', '-')
-         do k = 1, nc
-            j = cols(k)
-            line(col(k):) = curve_text(ld%belt_curve(section(j)), b%lap_sides == 2 .and. is_lap(j))
-         end do
-         call lst%put(line)
-         call put_row('G', 'residual / maximum deformation', '-', ld%belt_g([1, 2, 3, 1]))
-         call put_row('R', 'energy conserved / absorbed', '-', ld%belt_r([1, 2, 3, 1]))
-         line = row_head('', 'body under the section (Table 4)', '-')
-         do k = 1, nc
-            j = cols(k)
-            line(col(k):) = body_text(merge(11, 12, is_lap(j)))
-         end do
-         call lst%put(line)
-         call lst%put('  c: computed (C.2 with errata C2-2, C2-3); sigma_n, sigma_n+N: the loading curves above')
-         if (b%lap_sides == 2) call lst%put('  the lap belt''s two sides: each carries half of the lap belt''s curve' &
-                                            //' and of the abdomen''s (docs/belts.md 4)')
-         call lst%put('  coupling '//trim(coupling_name(b%coupling))//': '//trim(coupling_text(b%coupling)) &
-                      //'   lap sides '//itoa(b%lap_sides)//'   iteration limit '//itoa(b%max_iter))
-      end associate
-   contains
-      pure logical function is_lap(j)
-         integer, intent(in) :: j
-         is_lap = j == 1 .or. j == belt_card_lap2
-      end function is_lap
-      !> The loading section (1-3) of card j.
-      pure integer function section(j)
-         integer, intent(in) :: j
-         section = merge(1, j, j == belt_card_lap2)
-      end function section
-      !> The first column of section column k.
-      pure integer function col(k)
-         integer, intent(in) :: k
-         col = 63 + 16*(k - 1)
-      end function col
-      !> symbol (10 columns), meaning (42), unit (8).
-      function row_head(symbol, meaning, unit) result(h)
-         character(len=*), intent(in) :: symbol, meaning, unit
-         character(len=132) :: h
-         character(len=10) :: c_symbol
-         character(len=42) :: c_meaning
-         character(len=8) :: c_unit
-         c_symbol = symbol
-         c_meaning = meaning
-         c_unit = unit
-         h = '  '//c_symbol//c_meaning//c_unit
-      end function row_head
-      subroutine put_row(symbol, meaning, unit, x)
-         character(len=*), intent(in) :: symbol, meaning, unit
-         real(wp), intent(in) :: x(n_belt_card)
-         integer :: kk
-         line = row_head(symbol, meaning, unit)
-         do kk = 1, nc
-            write (line(col(kk):), '(es14.4)') x(cols(kk))
-         end do
-         call lst%put(line)
-      end subroutine put_row
-      !> C.2 for lap card j: the free length with its wrap, and phi_10 =
-      !! phi'_0 + asin(h / l'_0), from the initial hip (the interior origin).
-      subroutine lap_initial(j, length, phi)
-         integer, intent(in) :: j
-         real(wp), intent(out) :: length, phi
-         type(belt_section_geometry_t) :: g
-         g = lap_belt_geometry(m%belts%h(j), m%belts%length_anchor(j), m%belts%phi_anchor(j), [0.0_wp, 0.0_wp], &
-                               m%body%theta0(1))
-         length = g%length0
-         phi = m%belts%phi_anchor(j) + asin(m%belts%h(j)/m%belts%length_anchor(j))
-         phi = modulo(phi + pi, 2.0_wp*pi) - pi
-      end subroutine lap_initial
-      function curve_text(kc, half) result(t)
-         integer, intent(in) :: kc
-         logical, intent(in) :: half
-         character(len=14) :: t
-         character(len=14) :: order
-         order = 'table'
-         if (m%loading%curve(kc)%form == curve_polynomial) order = 'N = '//itoa(m%loading%curve(kc)%order)
-         t = merge('half ', '     ', half)//itoa(kc)//', '//trim(order)
-         t = adjustr(t)
-      end function curve_text
-      function body_text(l) result(t)
-         integer, intent(in) :: l
-         character(len=14) :: t
-         if (m%loading%material_curve(l) > 0) then
-            t = itoa(l)//' '//trim(material_name(l))
-         else
-            t = itoa(l)//' rigid'
-         end if
-         t = adjustr(t)
-      end function body_text
-      function coupling_text(c) result(t)
-         integer, intent(in) :: c
-         character(len=:), allocatable :: t
-         select case (c)
-         case (1)
-            t = 'every section its own tension (the report''s phase two)'
-         case (2)
-            t = 'the two torso sections one tension'
-         case default
-            t = 'the three sections one tension'
-         end select
-      end function coupling_text
-   end subroutine write_belts
-
-   subroutine write_pulse(lst, m)
-      type(listing_t), intent(inout) :: lst
-      type(model_t), intent(in) :: m
-      character(len=132) :: line
-      integer :: k, n
-      associate (v => m%vehicle)
-         n = size(v%pulse_acc%t)
-         call lst%heading('VEHICLE ACCELERATION TABLE (C.1): '//itoa(n)//' POINTS', min(n, 20) + 2)
-         call lst%put('   M    T_M (s)     XDDOT (g)   YDDOT (g)   PHIDDOT (deg/s^2)')
-         do k = 1, n
-            if (n > 40 .and. k > 20 .and. k < n - 9) then
-               if (k == 21) call lst%put('   ...')
-               cycle
-            end if
-            ! (the index widens from 100,000 rows: up to the table's limit)
-            line = right_int(k, 5)//fixed(v%pulse_acc%t(k), 12, 5)//fixed(v%pulse_acc%v(k, 1)/g_std, 12, 4) &
-                   //fixed(v%pulse_acc%v(k, 2)/g_std, 12, 4)//fixed(v%pulse_acc%v(k, 3)/deg, 16, 3)
-            call lst%put(line)
-         end do
-         if (allocated(v%pulse_vel%t)) call lst%put('  vehicle rates tabulated for: '//given_axes(v%pulse_vel%given) &
-                                                    //' ('//itoa(size(v%pulse_vel%t))//' points)')
-         if (allocated(v%pulse_pos%t)) call lst%put('  vehicle positions tabulated for: ' &
-                                                    //given_axes(v%pulse_pos%given)//' ('//itoa(size(v%pulse_pos%t)) &
-                                                    //' points)')
-      end associate
-   end subroutine write_pulse
-
-   function given_axes(given) result(s)
-      logical, intent(in) :: given(3)
-      character(len=:), allocatable :: s
-      s = ''
-      if (given(1)) s = s//'x '
-      if (given(2)) s = s//'y '
-      if (given(3)) s = s//'pitch'
-      if (len(s) == 0) s = 'none'
-   end function given_axes
 
    !> C.2: a_1..a_17, the scene, the initial state and accelerations.
    subroutine write_preliminary(lst, sys, reg, first)
@@ -905,7 +384,7 @@ contains
 
       call lst%heading('INJURY EVENTS (C.4.c FIGURE 10, C.4.f FIGURE 26)', 3)
       call put_events(.false.)
-      if (any([(event_is_note(res%events(i)%kind), i=1, res%n_events)])) then
+      if (any([(res%events(i)%note, i=1, res%n_events)])) then
          call lst%heading('NOTES (NOT INJURIES)', 3)
          call put_events(.true.)
       end if
@@ -975,7 +454,7 @@ contains
          n = 0
          do j = 1, res%n_events
             associate (e => res%events(j))
-               if (event_is_note(e%kind) .neqv. notes) cycle
+               if (e%note .neqv. notes) cycle
                n = n + 1
                head = '  t ='//fixed(e%t, 10, 5)//' s  '
                if (size(res%occ) > 1) head = head//'occupant '//itoa(e%occupant)
@@ -996,68 +475,6 @@ contains
          s = res%effect_titles(k, occupant)
       end function effect_label
    end subroutine write_summary
-
-   !> The interior (C.4.f, Table 3; docs/contacts.md): each surface as the
-   !! scene resolves it (both ends, direction, normal, padding), and the
-   !! position's pairs that the scene assembles with their materials, the
-   !! undesired ones (Table 9) marked.
-   subroutine write_interior(lst, m)
-      type(listing_t), intent(inout) :: lst
-      type(model_t), intent(in) :: m
-      type(contact_pair_t), allocatable :: pairs(:)
-      type(contact_surface_t) :: sf
-      character(len=132) :: line
-      logical :: ok
-      integer :: q, k, n, l, lb
-      if (.not. any(m%interior%given)) return
-      allocate (pairs(0))
-      pairs = scene_pairs(m)
-      n = 0
-      do k = 1, 32
-         call resolved_surface(m%interior, k, sf, ok)
-         if (ok) n = n + 1
-      end do
-      call lst%heading('INTERIOR SURFACES (C.4.f, TABLE 3; OCCUPANT''S INTERIOR FRAME)', n + 3)
-      call lst%put('   K  SURFACE                KIND       X''''         Y''''         PSI (deg)   D           D''''' &
-                   //'        FAR END X   FAR END Y')
-      do k = 1, 32
-         call resolved_surface(m%interior, k, sf, ok)
-         if (.not. ok) cycle
-         write (line, '(i4,2x,a22,1x,a10,7a)') k, name22(surface_name(k)), surface_kind(sf%kind), &
-            fixed(sf%s(1), 11, 3), fixed(sf%s(2), 11, 3), fixed(sf%psi/deg, 11, 2), fixed(sf%d, 11, 3), &
-            fixed(m%interior%dpp(merge(5, min(k, 32), k == 25)), 11, 3), &
-            fixed(sf%s(1) - sf%d*cos(sf%psi), 11, 3), fixed(sf%s(2) - sf%d*sin(sf%psi), 11, 3)
-         call lst%put(line)
-      end do
-      call lst%heading('CONTACT PAIRS OF NBODY '//itoa(m%options%nbody)//' ASSEMBLED (TABLES 7, 8, 9, 10)', &
-                       size(pairs) + 3)
-      call lst%put('   I  BODY POINT      K  SURFACE                MATERIAL  BACKING  UNDESIRED (TABLE 9)')
-      do q = 1, size(pairs)
-         call surface_layers(m%interior, pairs(q)%k, l, lb)
-         write (line, '(i4,2x,a12,i5,2x,a22,i6,i9,5x,a)') pairs(q)%i, arc_name(pairs(q)%i), pairs(q)%k, &
-            name22(surface_name(pairs(q)%k)), l, lb, &
-            trim(merge('yes', '   ', is_undesired(m%options%nbody, pairs(q)%i, pairs(q)%k)))
-         call lst%put(line)
-      end do
-   contains
-      !> a name left-justified in 22 columns
-      pure function name22(name) result(text)
-         character(len=*), intent(in) :: name
-         character(len=22) :: text
-         text = name
-      end function name22
-
-      pure function surface_kind(kind) result(text)
-         integer, intent(in) :: kind
-         character(len=10) :: text
-         select case (kind)
-         case (surface_flat); text = 'flat'
-         case (surface_line); text = 'line'
-         case (surface_circle); text = 'circle'
-         case default; text = 'edge point'
-         end select
-      end function surface_kind
-   end subroutine write_interior
 
    !> HIC15, HIC36, GSI and the chest's 3 ms clip (docs/injury.md): not the
    !! report's criteria, which predate them, but what users now expect.

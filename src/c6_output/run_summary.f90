@@ -6,7 +6,8 @@ module run_summary
    use kinds, only: wp, i8
    use model, only: n_joint, n_injury
    use ode_system, only: step_stats_t
-   use effect_base, only: event_t, effect_peak_t
+   use effect_events, only: event_t
+   use effect_peaks, only: effect_peak_t
    use acceleration_criteria, only: acceleration_criteria_t
    implicit none
    private

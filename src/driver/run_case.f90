@@ -18,7 +18,7 @@ module run_case_mod
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
-   use effect_base, only: event_t
+   use effect_events, only: event_t
    use run_report, only: listing_sink_t, listing_sink_start
    use history_sink, only: history_sink_t, history_sink_open
    use output_files, only: output_file_t, check_output_paths, deliver_outputs

@@ -9,7 +9,7 @@ module sink_list
    use error_handling, only: error_t
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
-   use effect_base, only: event_t
+   use effect_events, only: event_t
    use run_summary, only: run_summary_t
    use equations_of_motion, only: crash_system_t
    implicit none

@@ -15,9 +15,11 @@ module step_bookkeeping
    use equations_of_motion, only: crash_system_t, system_body_state, rhs_status_text, rhs_diverged, rhs_not_finite
    use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
    use ode_system, only: stepper_t, step_ok, step_rhs_failed, step_status_text
-   use effect_base, only: body_state_t, accept_result_t, event_t, event_tension, event_compression, event_shear, &
-      point_force_list_t, point_force_reserve, event_undesired
-   use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined
+   use effect_base, only: body_state_t
+   use effect_events, only: accept_result_t, event_t
+   use point_forces, only: point_force_list_t, point_force_reserve
+   use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined, force_injury_event, event_tension, &
+      event_compression, event_shear
    use joint_coupling, only: relative_angle
    use output_calc, only: head_chest_acceleration
    use output_producers, only: frame_energy, energy_balance_t
@@ -149,7 +151,7 @@ contains
                do j = 1, ar%n_events
                   ar%events(j)%occupant = o
                   this%injured(o) = this%injured(o) .or. ar%events(j)%injury
-                  undesired = undesired .or. ar%events(j)%kind == event_undesired
+                  undesired = undesired .or. ar%events(j)%undesired
                   call summary_add_event(summary, ar%events(j))
                   call sinks%event(ar%events(j))
                end do
@@ -247,7 +249,8 @@ contains
       if (.not. limit > 0.0_wp .or. summary%occ(o)%force_reported(c, index)) return
       if (.not. value > limit) return
       summary%occ(o)%force_reported(c, index) = .true.
-      e = event_t(t=t, kind=kind, index=index, value=value, limit=limit, injury=.true., occupant=o)
+      e = force_injury_event(kind, t, index, value, limit)
+      e%occupant = o
       this%injured(o) = .true.
       call summary_add_event(summary, e)
       call sinks%event(e)

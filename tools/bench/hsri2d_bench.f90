@@ -30,7 +30,8 @@ program hsri2d_bench
    use run_summary, only: run_summary_t
    use run_case_mod, only: run_request_t, run_case, read_case_deck
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y, system_body_state
-   use effect_base, only: body_state_t, accept_result_t
+   use body_state, only: body_state_t
+   use effect_events, only: accept_result_t
    use body_matrix, only: body_accelerations
    use model, only: n_dof
    use runge_kutta4, only: rk4_stepper_t
