@@ -583,10 +583,10 @@ contains
 
    !> Write the pending rows of every series, then have HDF5 write
    !! everything it holds for the file (metadata, chunk caches) to the
-   !! operating system. `failure` says what failed if that does.
-   subroutine flush_file(this, failure, err, rows)
+   !! operating system. `what` says what failed if that does.
+   subroutine flush_file(this, what, err, rows)
       class(history_file_t), intent(inout) :: this
-      character(len=*), intent(in) :: failure
+      character(len=*), intent(in) :: what
       type(error_t), intent(inout) :: err
       logical, intent(in), optional :: rows
       integer :: k, hdferr
@@ -604,7 +604,7 @@ contains
       end do
       call posix_clear_errno()
       call h5fflush_f(this%file, h5f_scope_global_f, hdferr)
-      if (hdferr < 0) call write_failed(this, failure, err)
+      if (hdferr < 0) call write_failed(this, what, err)
    end subroutine flush_file
 
    subroutine close_dataset(dset)
