@@ -19,7 +19,8 @@ contains
    !! (tests/cli/check_field_names.py) checks every name that every call of
    !! these accessors, and every field list of the builder's messages, can
    !! pass against the card table, whether a test runs that call or not, at
-   !! no cost to a run.
+   !! no cost to a run (docs/architecture.md, "Errors": why no run-time
+   !! check is added).
    pure integer function field_number(deck, gid, name) result(k)
       type(deck_t), intent(in) :: deck
       integer, intent(in) :: gid

@@ -160,7 +160,8 @@ contains
       type(string_t), allocatable, intent(inout) :: warnings(:)
       type(error_t), intent(inout) :: err
       type(card_t), allocatable :: cs(:)
-      character(len=:), allocatable :: where, message, selected
+      character(len=:), allocatable :: where, selected
+      type(error_t) :: law
       integer :: k, i, n
 
       selected = trim(merge('*LOADPOLY ', '*LOADTABLE', nload == 1))
@@ -205,8 +206,9 @@ contains
             i = cs(k)%index
             where = what//itoa(i)
             call check_reference(cs(k), curve(i))
-            message = recurrent_check(g(i), r(i))
-            if (len(message) > 0) call problem(orig, err, cs(k), where//': '//message, 'G R')
+            law = error_t()
+            call recurrent_check(g(i), r(i), law)
+            if (law%failed()) call problem(orig, err, cs(k), where//': '//law%message, 'G R')
          end do
       end subroutine check_laws
       !> A curve named on a card must exist in the selected form.
@@ -235,7 +237,8 @@ contains
       type(model_origin_t), intent(in) :: orig
       type(error_t), intent(inout) :: err
       type(card_t), allocatable :: cs(:)
-      character(len=:), allocatable :: where, message, fields
+      character(len=:), allocatable :: where, fields
+      type(error_t) :: curve
       integer :: k, i, n, point
       allocate (cs(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_loadpoly)
@@ -247,9 +250,10 @@ contains
                if (field_given(orig, g_loadpoly, cs(k), 'SIGMA'//digit(n))) call problem(orig, err, cs(k), &
                   where//': beyond the order N = '//itoa(cv%order)//'; leave it blank or raise N', 'N SIGMA'//digit(n))
             end do
-            call curve_check(cv, message, point)
-            if (len(message) > 0) then
-               if (index(message, 'order') > 0) then
+            curve = error_t()
+            call curve_check(cv, point, curve)
+            if (curve%failed()) then
+               if (index(curve%message, 'order') > 0) then
                   fields = 'N'
                else
                   fields = ''
@@ -257,7 +261,7 @@ contains
                      fields = fields//' SIGMA'//digit(n)
                   end do
                end if
-               call problem(orig, err, cs(k), where//': '//message, fields)
+               call problem(orig, err, cs(k), where//': '//curve%message, fields)
             end if
          end associate
       end do
@@ -270,22 +274,23 @@ contains
       type(model_origin_t), intent(in) :: orig
       type(error_t), intent(inout) :: err
       type(card_t), allocatable :: cs(:), points(:)
-      character(len=:), allocatable :: message
+      type(error_t) :: curve
       integer :: k, i, point
       allocate (cs(0), points(0))      ! (realloc on assignment: a descriptor set first)
       cs = cards(orig, g_loadtable)
       do i = 1, max_curves
          if (ld%curve(i)%form /= curve_table) cycle
          points = pack(cs, [(cs(k)%index == i, k=1, size(cs))])
-         call curve_check(ld%curve(i), message, point)
-         if (len(message) > 0) then
+         curve = error_t()
+         call curve_check(ld%curve(i), point, curve)
+         if (curve%failed()) then
             if (point < 1) point = size(points)
             if (point >= 1 .and. point <= size(points)) then
-               call problem(orig, err, points(point), 'curve '//itoa(i)//', point '//itoa(point)//': '//message, &
+               call problem(orig, err, points(point), 'curve '//itoa(i)//', point '//itoa(point)//': '//curve%message, &
                             'DEFL FORCE')
             else
                call problem(orig, err, header_of(orig, g_loadtable), 'curve '//itoa(i)//', point '//itoa(point) &
-                            //': '//message, 'DEFL FORCE')
+                            //': '//curve%message, 'DEFL FORCE')
             end if
          end if
       end do

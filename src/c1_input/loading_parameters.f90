@@ -8,6 +8,7 @@
 module loading_parameters
    use kinds, only: wp
    use strings, only: itoa, num
+   use error_handling, only: error_t, error_set, exit_deck
    implicit none
    private
 
@@ -44,35 +45,36 @@ contains
       curve_is_defined = c%form == curve_polynomial .or. c%form == curve_table
    end function curve_is_defined
 
-   !> What is wrong with a curve, or '' (docs/loading.md 2). point: the
-   !! table point (or, for a polynomial, the coefficient) concerned, 0 when
-   !! the whole curve is.
-   pure subroutine curve_check(c, message, point)
+   !> What is wrong with a curve (docs/loading.md 2): a deck error in err,
+   !! without location (the validator puts it at the curve's card and
+   !! fields). point: the table point (or, for a polynomial, the
+   !! coefficient) concerned, 0 when the whole curve is or none is wrong.
+   pure subroutine curve_check(c, point, err)
       type(loading_curve_t), intent(in) :: c
-      character(len=:), allocatable, intent(out) :: message
       integer, intent(out) :: point
+      type(error_t), intent(inout) :: err
       real(wp) :: dq(0:max_order - 1), q_min, at
       integer :: k, n
-      message = ''
       point = 0
       if (any(c%sigma_rate < 0.0_wp)) then
          point = minloc(c%sigma_rate, 1)
-         message = 'a rate coefficient is negative: the rate term would feed energy into the motion'
+         call error_set(err, exit_deck, 'a rate coefficient is negative: the rate term would feed energy into ' &
+                        //'the motion')
          return
       end if
       select case (c%form)
       case (curve_polynomial)
          if (c%order < 1 .or. c%order > max_order) then
-            message = 'the order N must be from 1 to '//itoa(max_order)
+            call error_set(err, exit_deck, 'the order N must be from 1 to '//itoa(max_order))
             return
          end if
          if (any(abs(c%sigma(c%order + 1:)) > 0.0_wp)) then
             point = c%order + findloc(abs(c%sigma(c%order + 1:)) > 0.0_wp, .true., 1)
-            message = 'coefficient '//itoa(point)//' lies beyond the order N = '//itoa(c%order)
+            call error_set(err, exit_deck, 'coefficient '//itoa(point)//' lies beyond the order N = '//itoa(c%order))
             return
          end if
          if (.not. any(abs(c%sigma) > 0.0_wp)) then
-            message = 'every coefficient is zero: the curve gives no force'
+            call error_set(err, exit_deck, 'every coefficient is zero: the curve gives no force')
             return
          end if
          ! F_e' = sum n sigma_n d**(n-1) >= 0 on d >= 0: F_e never decreases, and never pulls
@@ -82,45 +84,46 @@ contains
          end do
          call polynomial_minimum(dq(0:c%order - 1), q_min, at)
          if (at >= huge(1.0_wp)) then
-            message = 'the force decreases, and finally pulls, as the deformation grows ' &
-                      //'(the highest coefficient is negative)'
+            call error_set(err, exit_deck, 'the force decreases, and finally pulls, as the deformation grows ' &
+                           //'(the highest coefficient is negative)')
          else if (q_min < -1.0e-12_wp*maxval(abs(dq))*max(1.0_wp, at)**(c%order - 1)) then
             ! (the tolerance: rounding in F_e' at d = at)
-            message = 'the force decreases with the deformation near d = '//num(at, 6) &
-                      //' in (slope '//num(q_min, 6)//' lb/in); a loading curve must not decrease, ' &
-                      //'so that it never pulls'
+            call error_set(err, exit_deck, 'the force decreases with the deformation near d = '//num(at, 6) &
+                           //' in (slope '//num(q_min, 6)//' lb/in); a loading curve must not decrease, ' &
+                           //'so that it never pulls')
          end if
       case (curve_table)
          if (.not. (allocated(c%defl) .and. allocated(c%force))) then
-            message = 'the table has no points'
+            call error_set(err, exit_deck, 'the table has no points')
             return
          end if
          n = size(c%defl)
          if (n < 2 .or. size(c%force) /= n) then
             point = n
-            message = 'a table needs at least two points'
+            call error_set(err, exit_deck, 'a table needs at least two points')
             return
          end if
          if (abs(c%defl(1)) > 0.0_wp .or. abs(c%force(1)) > 0.0_wp) then
             point = 1
-            message = 'the first point must be (0, 0)'
+            call error_set(err, exit_deck, 'the first point must be (0, 0)')
             return
          end if
          do k = 2, n
             point = k
             if (.not. c%defl(k) > c%defl(k - 1)) then
-               message = 'the deformations must increase from point to point'
+               call error_set(err, exit_deck, 'the deformations must increase from point to point')
                return
             end if
             if (c%force(k) < c%force(k - 1)) then
-               message = 'the force must not decrease from point to point (a loading curve never pulls)'
+               call error_set(err, exit_deck, 'the force must not decrease from point to point (a loading curve ' &
+                              //'never pulls)')
                return
             end if
          end do
          point = 0
-         if (.not. c%force(n) > 0.0_wp) message = 'every force is zero: the curve gives no force'
+         if (.not. c%force(n) > 0.0_wp) call error_set(err, exit_deck, 'every force is zero: the curve gives no force')
       case default
-         message = 'the curve is not defined'
+         call error_set(err, exit_deck, 'the curve is not defined')
       end select
    end subroutine curve_check
 
@@ -238,28 +241,28 @@ contains
       end do
    end function horner
 
-   !> What is wrong with G and R, or '' (docs/loading.md 3): 0 <= G <= 1,
+   !> What is wrong with G and R (docs/loading.md 3), as a deck error in err
+   !! without location (the validator puts it at the card's G and R): 0 <= G <= 1,
    !! 0 <= R <= 1, R <= 1 - G, and G = 1 where R = 0. An unloading curve that ends at G d_max and
    !! does not rise above the loading curve returns at most (1 - G) times the
    !! loading work along the curves of docs/loading.md; more would need an
    !! unloading path above the loading path, which would create energy on the
    !! next reloading.
-   pure function recurrent_check(g, r) result(message)
+   pure subroutine recurrent_check(g, r, err)
       real(wp), intent(in) :: g, r
-      character(len=:), allocatable :: message
-      message = ''
+      type(error_t), intent(inout) :: err
       if (g < 0.0_wp .or. g > 1.0_wp) then
-         message = 'G = '//num(g)//' must lie from 0 to 1'
+         call error_set(err, exit_deck, 'G = '//num(g)//' must lie from 0 to 1')
       else if (r < 0.0_wp .or. r > 1.0_wp) then
-         message = 'R = '//num(r)//' must lie from 0 to 1'
+         call error_set(err, exit_deck, 'R = '//num(r)//' must lie from 0 to 1')
       else if (r <= 0.0_wp .and. g < 1.0_wp - ratio_slack) then
-         message = 'R = 0 needs G = 1 (here G = '//num(g)//'): an element that returns none of the energy ' &
-                   //'it absorbed falls straight to zero force at its maximum deformation and keeps all of it ' &
-                   //'(docs/loading.md 3)'
+         call error_set(err, exit_deck, 'R = 0 needs G = 1 (here G = '//num(g)//'): an element that returns ' &
+                        //'none of the energy it absorbed falls straight to zero force at its maximum deformation ' &
+                        //'and keeps all of it (docs/loading.md 3)')
       else if (r > 1.0_wp - g + ratio_slack) then
-         message = 'R = '//num(r)//' exceeds 1 - G = '//num(1.0_wp - g)//': an element that keeps G of ' &
-                   //'its maximum deformation cannot return more than 1 - G of the energy it absorbed ' &
-                   //'(docs/loading.md 3)'
+         call error_set(err, exit_deck, 'R = '//num(r)//' exceeds 1 - G = '//num(1.0_wp - g)//': an element ' &
+                        //'that keeps G of its maximum deformation cannot return more than 1 - G of the energy ' &
+                        //'it absorbed (docs/loading.md 3)')
       end if
-   end function recurrent_check
+   end subroutine recurrent_check
 end module loading_parameters

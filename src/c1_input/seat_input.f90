@@ -164,20 +164,20 @@ contains
    end subroutine check_seat
 
    !> Why the rigid beam's initial relations cannot be solved for the
-   !! quantities the deck does not give (message: seat_beam_statics'), at
-   !! the *SEATBEAMINIT card and the quantities it gives, or at the *SEAT
-   !! card when the deck has none.
-   subroutine rigid_beam_problem(p, orig, message, err)
+   !! quantities the deck does not give (why: seat_beam_statics' error,
+   !! without location), at the *SEATBEAMINIT card and the quantities it
+   !! gives, or at the *SEAT card when the deck has none.
+   subroutine rigid_beam_problem(p, orig, why, err)
       type(seat_section_t), intent(in) :: p
       type(model_origin_t), intent(in) :: orig
-      character(len=*), intent(in) :: message
+      type(error_t), intent(in) :: why
       type(error_t), intent(inout) :: err
       ! the ten quantities are fields of *SEATBEAMINIT and of *SEAT (W0, FPS0, GAMMA0)
       if (has_card(orig, g_seatbeaminit)) then
-         call problem(orig, err, first_card(orig, g_seatbeaminit), message//' (with W0, FPS0 and GAMMA0 of ' &
+         call problem(orig, err, first_card(orig, g_seatbeaminit), why%message//' (with W0, FPS0 and GAMMA0 of ' &
                       //card_ref(orig, first_card(orig, g_seat))//')', given_names())
       else
-         call problem(orig, err, first_card(orig, g_seat), 'FORM = RIGIDBEAM: '//message//' (the deck has ' &
+         call problem(orig, err, first_card(orig, g_seat), 'FORM = RIGIDBEAM: '//why%message//' (the deck has ' &
                       //'no *SEATBEAMINIT card)', 'FORM')
       end if
    contains

@@ -23,7 +23,7 @@ module model_builder
    use vehicle_input, only: build_vehicle, check_vehicle, check_vehicle_tables, build_environment
    use seat_input, only: build_seat, check_seat, rigid_beam_problem
    use interior_input, only: build_interior, check_interior, check_scene
-   use seat_beam_statics, only: rigid_beam_statics, statics_ok
+   use seat_beam_statics, only: rigid_beam_statics
    implicit none
    private
 
@@ -38,8 +38,7 @@ contains
       type(model_t), intent(out) :: m
       type(error_t), intent(inout) :: err
       type(model_origin_t) :: orig
-      integer :: status
-      character(len=:), allocatable :: message
+      type(error_t) :: statics
 
       orig = deck_origin(deck)
       m%warnings = deck%warnings
@@ -70,8 +69,8 @@ contains
       call check_seat(m%seat, m%body, orig, err)
       if (m%seat%form == seat_rigid_beam) then
          ! C.2: under the apparent gravity at t = 0 in the interior frame
-         call rigid_beam_statics(m%seat, m%environment%gravity*cos(m%vehicle%phi0), status, message)
-         if (status /= statics_ok) call rigid_beam_problem(m%seat, orig, message, err)
+         call rigid_beam_statics(m%seat, m%environment%gravity*cos(m%vehicle%phi0), statics)
+         if (statics%failed()) call rigid_beam_problem(m%seat, orig, statics, err)
       end if
       call build_interior(deck, m%interior)
       call check_interior(m%interior, m%options%nbody, orig, err)

@@ -6,10 +6,13 @@
 !! support law, F'_so and Delta_zo too); such a choice is found before any
 !! arithmetic, by a one-to-one assignment of relations to unknowns, and
 !! refused with a message. The model builder calls this (rigid_beam_statics)
-!! once the seat's section is built and checked; nothing here stops the
-!! program.
+!! once the seat's section is built and checked: a choice that does not
+!! determine the rest, or has no physical solution, is a deck error (an
+!! error_t, exit_deck, without location: the seat's validator adds the
+!! card and fields).
 module seat_beam_statics
    use kinds, only: wp, pi
+   use error_handling, only: error_t, error_set, exit_deck
    use model, only: seat_section_t, n_beam_quantities, beam_quantity_name, bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, &
       bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
    implicit none
@@ -18,7 +21,6 @@ module seat_beam_statics
    public :: beam_statics_t, beam_statics_solve, beam_residuals
    public :: n_beam_quantities, n_beam_relations, beam_quantity_name, beam_relation_text
    public :: bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
-   public :: statics_ok, statics_not_four, statics_undetermined, statics_no_solution
    public :: poly_force, rigid_beam_statics
 
    integer, parameter :: n_beam_relations = 6
@@ -44,8 +46,6 @@ module seat_beam_statics
       .false., .false., .false., .false., .true., .true.], &    ! gamma_o
       [n_beam_relations, n_beam_quantities])
 
-   integer, parameter :: statics_ok = 0, statics_not_four = 1, statics_undetermined = 2, statics_no_solution = 3
-
    !> What is measured (C.4.d: z_o, m_s, y_gu, gamma_u, s and the beta_m) and
    !! the apparent gravity g cos(Phi_o) in the interior frame.
    type :: beam_statics_t
@@ -64,18 +64,17 @@ contains
    !> The rigid-beam seat at t = 0 (C.4.d, A-RB): the four of the ten
    !! quantities that seat section p gives (beam_given), the other six
    !! solved for and set in p, under the apparent gravity g (g cos(Phi_o)
-   !! in the interior frame). status and message as beam_statics_solve's;
-   !! p is unchanged unless status is statics_ok.
-   pure subroutine rigid_beam_statics(p, g, status, message)
+   !! in the interior frame). err as beam_statics_solve's; p is unchanged
+   !! when it fails (err comes in with nothing recorded).
+   pure subroutine rigid_beam_statics(p, g, err)
       type(seat_section_t), intent(inout) :: p
       real(wp), intent(in) :: g
-      integer, intent(out) :: status
-      character(len=:), allocatable, intent(out) :: message
+      type(error_t), intent(inout) :: err
       real(wp) :: q(n_beam_quantities)
       q = merge([p%a, p%a_prime, p%w0, p%fhps0, p%fs0, p%fps0, p%ds0, p%dz0, p%yg0, p%gamma0], 0.0_wp, p%beam_given)
       call beam_statics_solve(beam_statics_t(z0=p%z0, m_s=p%m_s, g=g, y_gu=p%y_gu, gamma_u=p%gamma_u, s=p%s, &
-                                             beta=p%beta), p%beam_given, q, status, message)
-      if (status /= statics_ok) return
+                                             beta=p%beta), p%beam_given, q, err)
+      if (err%failed()) return
       p%a = q(bq_a)
       p%a_prime = q(bq_ap)
       p%w0 = q(bq_w0)
@@ -113,22 +112,21 @@ contains
    end subroutine beam_residuals
 
    !> Solve for the quantities not given. q holds the given ones on entry and
-   !! all ten on success; status says why not otherwise, message in words.
-   pure subroutine beam_statics_solve(p, given, q, status, message)
+   !! all ten when solved; otherwise err (a deck error) says why: not four
+   !! given, four that do not determine the other six, or no physical
+   !! solution (q then unchanged).
+   pure subroutine beam_statics_solve(p, given, q, err)
       type(beam_statics_t), intent(in) :: p
       logical, intent(in) :: given(n_beam_quantities)
       real(wp), intent(inout) :: q(n_beam_quantities)
-      integer, intent(out) :: status
-      character(len=:), allocatable, intent(out) :: message
+      type(error_t), intent(inout) :: err
       integer :: unknown(n_beam_relations), n, j, start
       real(wp) :: trial(n_beam_quantities)
       logical :: converged
 
-      message = ''
       if (count(given) /= 4) then
-         status = statics_not_four
-         message = 'give exactly four of the ten quantities '//names_of(spread(.true., 1, n_beam_quantities)) &
-                   //' (found '//names_of(given)//')'
+         call error_set(err, exit_deck, 'give exactly four of the ten quantities ' &
+                        //names_of(spread(.true., 1, n_beam_quantities))//' (found '//names_of(given)//')')
          return
       end if
       n = 0
@@ -139,9 +137,8 @@ contains
          end if
       end do
       if (.not. assignable(unknown)) then
-         status = statics_undetermined
-         message = 'the four given ('//names_of(given)//') do not determine the other six ('// &
-                   names_of(.not. given)//')'//tied_text()
+         call error_set(err, exit_deck, 'the four given ('//names_of(given)//') do not determine the other six (' &
+                        //names_of(.not. given)//')'//tied_text())
          return
       end if
       ! Newton from a few starting points; the first solution that is physical wins
@@ -152,14 +149,13 @@ contains
          if (converged) then
             if (physical(trial)) then
                q = trial
-               status = statics_ok
                return
             end if
          end if
       end do
-      status = statics_no_solution
-      message = 'no physical solution of the six relations for '//names_of(.not. given)//' from the four ' &
-                //'given ('//names_of(given)//'): a, a'' > 0, forces and deflections >= 0, |gamma_o| <= 45 deg'
+      call error_set(err, exit_deck, 'no physical solution of the six relations for '//names_of(.not. given) &
+                     //' from the four given ('//names_of(given)//'): a, a'' > 0, forces and deflections >= 0, ' &
+                     //'|gamma_o| <= 45 deg')
    contains
       !> A relation among given quantities only makes the rest undetermined.
       pure function tied_text() result(t)

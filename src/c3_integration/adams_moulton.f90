@@ -22,8 +22,9 @@
 module adams_moulton
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
-   use ode_system, only: ode_system_t, stepper_t, step_ok, step_rhs_failed, step_not_finite, &
-      step_beyond_limit, step_bad_setting
+   use error_handling, only: error_t, error_set, exit_numerical
+   use strings, only: num, itoa
+   use ode_system, only: ode_system_t, stepper_t
    implicit none
    private
 
@@ -74,69 +75,61 @@ contains
       y_new = y + (h/24.0_wp)*(9.0_wp*f_new + 19.0_wp*f0 - 5.0_wp*f1 + f2)
    end function am_corrector
 
-   subroutine am_init(this, sys, t0, y0, status)
+   subroutine am_init(this, sys, t0, y0, err)
       class(am_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t0
       real(wp), intent(in), contiguous :: y0(:)
-      integer, intent(out) :: status
+      type(error_t), intent(inout) :: err
       integer :: n
       n = size(y0)
       if (allocated(this%f)) deallocate (this%f, this%f1, this%f2, this%f3, this%ynew, &
-                                         this%yold, this%fnew, this%ytmp)
+                                         this%yold, this%fnew, this%ytmp, this%y_failed)
       allocate (this%f(n), this%f1(n), this%f2(n), this%f3(n), this%ynew(n), this%yold(n), &
-                this%fnew(n), this%ytmp(n))
-      call am_begin(this, sys, t0, y0, status)
+                this%fnew(n), this%ytmp(n), this%y_failed(n))
+      call am_begin(this, sys, t0, y0, err)
    end subroutine am_init
 
    !> See stepper_t: the back values f1..f3 and f at the accepted point were
    !! computed with the old right-hand side, so the method starts again
    !! from (t, y) with its starter, on a new grid t0 = t.
-   subroutine am_restart(this, sys, t, y, status)
+   subroutine am_restart(this, sys, t, y, err)
       class(am_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
-      integer, intent(out) :: status
-      status = step_bad_setting
-      if (.not. allocated(this%f)) return
-      if (size(y) /= size(this%f)) return
-      if (.not. valid_start(this%start)) return
+      type(error_t), intent(inout) :: err
+      if (.not. this%restartable(y, err)) return
       this%stats%restarts = this%stats%restarts + 1
-      call am_begin(this, sys, t, y, status)
+      call am_begin(this, sys, t, y, err)
    end subroutine am_restart
 
    !> Start (or start again) from (t, y): n = 0 puts the next three steps
    !! in the start phase, which refills f1..f3 before they are read.
-   subroutine am_begin(this, sys, t, y, status)
+   subroutine am_begin(this, sys, t, y, err)
       class(am_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
-      integer, intent(out) :: status
+      type(error_t), intent(inout) :: err
       this%t0 = t
       this%n = 0
-      if (.not. valid_start(this%start)) then
-         status = step_bad_setting
+      if (.not. (this%start == am_start_euler .or. this%start == am_start_rk4)) then
+         call error_set(err, exit_numerical, 'an integrator setting is invalid: the Adams-Moulton start is ' &
+                        //itoa(this%start)//', neither modified Euler ('//itoa(am_start_euler)//') nor RK4 (' &
+                        //itoa(am_start_rk4)//')')
          return
       end if
-      call sys%rhs(t, y, this%f, this%rhs_status)
-      this%stats%evaluations = this%stats%evaluations + 1
-      status = merge(step_ok, step_rhs_failed, this%rhs_status == 0)
+      if (.not. this%evaluate(sys, t, y, this%f)) call this%give_up_rhs(sys, err)
    end subroutine am_begin
 
-   pure logical function valid_start(start)
-      integer, intent(in) :: start
-      valid_start = start == am_start_euler .or. start == am_start_rk4
-   end function valid_start
-
-   subroutine am_advance(this, sys, t, y, t_limit, status)
+   subroutine am_advance(this, sys, t, y, t_limit, err)
       class(am_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(inout) :: t
       real(wp), intent(inout), contiguous :: y(:)
       real(wp), intent(in) :: t_limit
-      integer, intent(out) :: status
+      type(error_t), intent(inout) :: err
       real(wp) :: h, t_new
       logical :: starting
 
@@ -145,11 +138,11 @@ contains
       ! a multistep method cannot shorten a step; the deck check keeps TMAX
       ! and DTPRINT whole multiples of DT, so this only guards the driver
       if (t_new > t_limit + 0.5_wp*h) then
-         status = step_beyond_limit
+         call error_set(err, exit_numerical, 'a fixed step would pass the requested end time (the step to t = ' &
+                        //num(t_new)//' s, the end at t = '//num(t_limit)//' s)')
          return
       end if
       starting = this%n < start_steps
-      status = step_rhs_failed
       associate (f0 => this%f, f1 => this%f1, f2 => this%f2, f3 => this%f3, &
                  ynew => this%ynew, yold => this%yold, fnew => this%fnew, yt => this%ytmp)
          if (starting .and. this%start == am_start_rk4) then
@@ -168,7 +161,7 @@ contains
             if (.not. evaluate(t_new, yt, fnew)) return
             ynew = ynew + (h/6.0_wp)*fnew
             if (.not. all(ieee_is_finite(ynew))) then
-               status = step_not_finite
+               call this%give_up_not_finite(err)
                return
             end if
          else
@@ -192,10 +185,9 @@ contains
       this%stats%steps = this%stats%steps + 1
       this%stats%h_min = min(this%stats%h_min, h)
       this%stats%h_max = max(this%stats%h_max, h)
-      status = step_ok
    contains
       !> C.3: iterate the corrector until successive approximations agree
-      !! within tol or max_iter passes were made; sets status on failure.
+      !! within tol or max_iter passes were made; sets err on failure.
       logical function correct() result(ok)
          integer :: iter
          logical :: converged
@@ -213,7 +205,7 @@ contains
                end if
                this%stats%corrector_iterations = this%stats%corrector_iterations + 1
                if (.not. all(ieee_is_finite(ynew))) then
-                  status = step_not_finite
+                  call this%give_up_not_finite(err)
                   return
                end if
                if (all(abs(ynew - yold) <= this%tol*max(1.0_wp, abs(ynew)))) then
@@ -226,13 +218,14 @@ contains
          ok = .true.
       end function correct
 
+      !> f(te, ye); a failure ends the step (a multistep method cannot
+      !! shorten it): err says why.
       logical function evaluate(te, ye, fe)
          real(wp), intent(in) :: te
          real(wp), intent(in), contiguous :: ye(:)
          real(wp), intent(out), contiguous :: fe(:)
-         call sys%rhs(te, ye, fe, this%rhs_status)
-         this%stats%evaluations = this%stats%evaluations + 1
-         evaluate = this%rhs_status == 0
+         evaluate = this%evaluate(sys, te, ye, fe)
+         if (.not. evaluate) call this%give_up_rhs(sys, err)
       end function evaluate
    end subroutine am_advance
 end module adams_moulton

@@ -7,8 +7,8 @@
 module dormand_prince
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
-   use ode_system, only: ode_system_t, stepper_t, step_ok, step_rhs_failed, step_too_small, &
-      step_not_finite, step_bad_setting
+   use error_handling, only: error_t, error_set, exit_numerical
+   use ode_system, only: ode_system_t, stepper_t
    implicit none
    private
 
@@ -51,61 +51,61 @@ module dormand_prince
 
 contains
 
-   subroutine dopri_init(this, sys, t0, y0, status)
+   subroutine dopri_init(this, sys, t0, y0, err)
       class(dopri_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t0
       real(wp), intent(in), contiguous :: y0(:)
-      integer, intent(out) :: status
+      type(error_t), intent(inout) :: err
       integer :: n, i
       n = size(y0)
       if (allocated(this%f)) deallocate (this%f, this%k2, this%k3, this%k4, this%k5, this%k6, &
-                                         this%k7, this%yt, this%ynew, this%e)
+                                         this%k7, this%yt, this%ynew, this%e, this%y_failed)
       allocate (this%f(n), this%k2(n), this%k3(n), this%k4(n), this%k5(n), this%k6(n), this%k7(n), &
-                this%yt(n), this%ynew(n), this%e(n))
+                this%yt(n), this%ynew(n), this%e(n), this%y_failed(n))
       this%controlled = pack([(i, i=1, n)], sys%error_controlled(n))
-      call dopri_begin(this, sys, t0, y0, status)
+      call dopri_begin(this, sys, t0, y0, err)
    end subroutine dopri_init
 
    !> See stepper_t: the first-same-as-last stage and the previous error
    !! belong to the old right-hand side. h, the next step to try, is kept:
    !! y is continuous at a restart, and a step too long is rejected.
-   subroutine dopri_restart(this, sys, t, y, status)
+   subroutine dopri_restart(this, sys, t, y, err)
       class(dopri_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
-      integer, intent(out) :: status
-      status = step_bad_setting
-      if (.not. allocated(this%f)) return
-      if (size(y) /= size(this%f)) return
+      type(error_t), intent(inout) :: err
+      if (.not. this%restartable(y, err)) return
       this%stats%restarts = this%stats%restarts + 1
-      call dopri_begin(this, sys, t, y, status)
+      call dopri_begin(this, sys, t, y, err)
    end subroutine dopri_restart
 
    !> Start (or start again) from (t, y): the first stage f(t, y) and a
    !! controller with no past.
-   subroutine dopri_begin(this, sys, t, y, status)
+   subroutine dopri_begin(this, sys, t, y, err)
       class(dopri_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
-      integer, intent(out) :: status
+      type(error_t), intent(inout) :: err
       this%err_old = dopri_err_old_initial
-      call sys%rhs(t, y, this%f, this%rhs_status)
-      this%stats%evaluations = this%stats%evaluations + 1
-      status = merge(step_ok, step_rhs_failed, this%rhs_status == 0)
+      if (.not. this%evaluate(sys, t, y, this%f)) call this%give_up_rhs(sys, err)
    end subroutine dopri_begin
 
-   !> Try steps until one is accepted (or the step collapses).
-   subroutine dopri_advance(this, sys, t, y, t_limit, status)
+   !> Try steps until one is accepted (or the step collapses). A trial
+   !! whose evaluation fails is an outcome answered here, by a shorter
+   !! step; only when the step falls below its floor (or too many trials in
+   !! a row were rejected) does err say why: the last trial's evaluation
+   !! failed (the system's reason), or its error stayed too large.
+   subroutine dopri_advance(this, sys, t, y, t_limit, err)
       class(dopri_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(inout) :: t
       real(wp), intent(inout), contiguous :: y(:)
       real(wp), intent(in) :: t_limit
-      integer, intent(out) :: status
-      real(wp) :: h, err, fac, h_floor
+      type(error_t), intent(inout) :: err
+      real(wp) :: h, err_norm, fac, h_floor
       logical :: clipped, stages_ok
       integer :: rejections
 
@@ -115,29 +115,34 @@ contains
          h = this%h
          clipped = t + h >= t_limit
          if (clipped) h = t_limit - t
-         call try_step(h, stages_ok, err)
-         if (stages_ok .and. err <= 1.0_wp) exit
+         call try_step(h, stages_ok, err_norm)
+         if (stages_ok .and. err_norm <= 1.0_wp) exit
          ! rejected: shrink, without growth until a step is accepted
          this%stats%rejected = this%stats%rejected + 1
          rejections = rejections + 1
          if (stages_ok) then
-            fac = max(fac_min, safety*err**(-0.2_wp))
+            fac = max(fac_min, safety*err_norm**(-0.2_wp))
          else
             fac = 0.25_wp    ! the trial state could not be evaluated: back off hard
          end if
          this%h = h*fac
          if (this%h < h_floor .or. rejections > max_rejections_in_row) then
-            status = merge(step_too_small, step_rhs_failed, stages_ok)
+            if (stages_ok) then
+               call error_set(err, exit_numerical, 'the step size fell below its floor (the problem is too stiff ' &
+                              //'or discontinuous for the tolerances)')
+            else
+               call this%give_up_rhs(sys, err)
+            end if
             return
          end if
       end do
 
       ! accepted: PI controller for the next step
-      err = max(err, 1.0e-10_wp)
-      fac = safety*err**(-alpha)*this%err_old**beta
+      err_norm = max(err_norm, 1.0e-10_wp)
+      fac = safety*err_norm**(-alpha)*this%err_old**beta
       fac = min(fac_max, max(fac_min, fac))
       if (rejections > 0) fac = min(fac, 1.0_wp)
-      this%err_old = max(err, dopri_err_old_initial)
+      this%err_old = max(err_norm, dopri_err_old_initial)
       if (clipped) then
          ! a step shortened to meet t_limit does not shrink the next one
          this%h = max(this%h, h*fac)
@@ -151,62 +156,53 @@ contains
       this%stats%steps = this%stats%steps + 1
       this%stats%h_min = min(this%stats%h_min, h)
       this%stats%h_max = max(this%stats%h_max, h)
-      status = step_ok
    contains
       !> The seven stages and the scaled error norm of one trial step.
-      subroutine try_step(h, ok, err)
+      subroutine try_step(h, ok, err_norm)
          real(wp), intent(in) :: h
          logical, intent(out) :: ok
-         real(wp), intent(out) :: err
+         real(wp), intent(out) :: err_norm
          real(wp) :: sc
          integer :: i, j
-         err = huge(1.0_wp)
+         err_norm = huge(1.0_wp)
          associate (k1 => this%f, k2 => this%k2, k3 => this%k3, k4 => this%k4, k5 => this%k5, &
                     k6 => this%k6, k7 => this%k7, yt => this%yt, ynew => this%ynew, e => this%e)
             ok = .false.
             yt = y + h*a21*k1
-            if (.not. evaluate(t + c2*h, yt, k2)) return
+            if (.not. this%evaluate(sys, t + c2*h, yt, k2)) return
             yt = y + h*(a31*k1 + a32*k2)
-            if (.not. evaluate(t + c3*h, yt, k3)) return
+            if (.not. this%evaluate(sys, t + c3*h, yt, k3)) return
             yt = y + h*(a41*k1 + a42*k2 + a43*k3)
-            if (.not. evaluate(t + c4*h, yt, k4)) return
+            if (.not. this%evaluate(sys, t + c4*h, yt, k4)) return
             yt = y + h*(a51*k1 + a52*k2 + a53*k3 + a54*k4)
-            if (.not. evaluate(t + c5*h, yt, k5)) return
+            if (.not. this%evaluate(sys, t + c5*h, yt, k5)) return
             yt = y + h*(a61*k1 + a62*k2 + a63*k3 + a64*k4 + a65*k5)
-            if (.not. evaluate(t + h, yt, k6)) return
+            if (.not. this%evaluate(sys, t + h, yt, k6)) return
             ynew = y + h*(a71*k1 + a73*k3 + a74*k4 + a75*k5 + a76*k6)
             ! a state that is not finite is a step far too long: rejected
-            ! (err stays huge), not a failure of the right-hand side
+            ! (err_norm stays huge), not a failure of the right-hand side
             ok = .true.
             if (.not. all(ieee_is_finite(ynew))) return
             ok = .false.
-            if (.not. evaluate(t + h, ynew, k7)) return
+            if (.not. this%evaluate(sys, t + h, ynew, k7)) return
             ok = .true.
             e = h*(e1*k1 + e3*k3 + e4*k4 + e5*k5 + e6*k6 + e7*k7)
             ! the scaled RMS norm over the error-controlled entries, without
             ! overflow whatever the tolerances:
             ! a component beyond 1e150 of its scale rejects the step at once
-            err = 0.0_wp
+            err_norm = 0.0_wp
             do j = 1, size(this%controlled)
                i = this%controlled(j)
                sc = this%atol + this%rtol*max(abs(y(i)), abs(ynew(i)))
                if (.not. abs(e(i)) <= 1.0e150_wp*sc) then
-                  err = huge(1.0_wp)
+                  err_norm = huge(1.0_wp)
                   return
                end if
-               err = err + (e(i)/sc)**2
+               err_norm = err_norm + (e(i)/sc)**2
             end do
-            err = sqrt(err/real(max(size(this%controlled), 1), wp))
+            err_norm = sqrt(err_norm/real(max(size(this%controlled), 1), wp))
          end associate
       end subroutine try_step
 
-      logical function evaluate(te, ye, fe)
-         real(wp), intent(in) :: te
-         real(wp), intent(in), contiguous :: ye(:)
-         real(wp), intent(out), contiguous :: fe(:)
-         call sys%rhs(te, ye, fe, this%rhs_status)
-         this%stats%evaluations = this%stats%evaluations + 1
-         evaluate = this%rhs_status == 0
-      end function evaluate
    end subroutine dopri_advance
 end module dormand_prince

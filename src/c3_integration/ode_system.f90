@@ -1,22 +1,24 @@
 !> The interface between the integrators (C.3) and what they integrate:
 !! an ODE system y' = f(t, y) and the abstract stepper that advances it.
+!!
+!! Errors (docs/architecture.md, "Errors"): an evaluation of the right-hand
+!! side that cannot be completed is an outcome, not an error: rhs answers
+!! with the system's own code (0: evaluated), allocates nothing and builds
+!! no message, and a stepper may answer it by itself (Dormand-Prince shrinks
+!! the step). When a stepper gives up - init, advance or restart cannot go
+!! on - it returns an error_t (exit_numerical) that says what failed, when,
+!! and why: for an evaluation, the system's failure_text at the evaluation
+!! that failed, asked then and only then (the cold path). No code above the
+!! steppers sees a status code.
 module ode_system
    use kinds, only: wp, i8
+   use error_handling, only: error_t, error_set, exit_numerical
+   use strings, only: num, itoa
    implicit none
    private
 
    public :: ode_system_t, stepper_t, step_stats_t
-   public :: step_ok, step_rhs_failed, step_too_small, step_not_finite, step_beyond_limit
-   public :: step_bad_setting
-   public :: step_status_text
-
-   !> Status codes of an integration step.
-   integer, parameter :: step_ok = 0
-   integer, parameter :: step_rhs_failed = 1   !< the right-hand side could not be evaluated
-   integer, parameter :: step_too_small = 2    !< the adaptive step fell below its floor
-   integer, parameter :: step_not_finite = 3   !< the state became NaN or infinite
-   integer, parameter :: step_beyond_limit = 4 !< a fixed step would pass the time limit
-   integer, parameter :: step_bad_setting = 5  !< a stepper setting has no meaning (init, restart)
+   public :: evaluate_outside_step
 
    !> A system y' = f(t, y). rhs may update diagnostics held in the system
    !! (evaluation counters) but no physical state: integrators call it for
@@ -25,10 +27,13 @@ module ode_system
    contains
       procedure(rhs_interface), deferred :: rhs
       procedure :: error_controlled => system_error_controlled
+      procedure :: failure_text => system_failure_text
    end type ode_system_t
 
    abstract interface
-      !> status: 0 when f could be evaluated, otherwise a code the system explains.
+      !> status: 0 when f could be evaluated, otherwise a code of the
+      !! system's own, which only its failure_text explains (an outcome:
+      !! an adaptive stepper answers it by shrinking the step).
       !! y and dydt are contiguous (as every integrator's arrays are; the
       !! steppers' y too): the system passes its effects' slices of them
       !! with a stride of one (docs/performance.md, fourth round).
@@ -58,34 +63,46 @@ module ode_system
    type, abstract :: stepper_t
       real(wp), allocatable :: f(:)
       type(step_stats_t) :: stats
-      integer :: rhs_status = 0             !< the system's code when step_rhs_failed
+      !> the last evaluation that failed: its time, the system's code and
+      !! its state, kept (a copy, no allocation after the first) for the
+      !! message should the stepper give up
+      real(wp) :: t_failed = 0.0_wp
+      integer :: code_failed = 0
+      real(wp), allocatable :: y_failed(:)
    contains
       procedure(init_interface), deferred :: init
       procedure(advance_interface), deferred :: advance
       procedure(restart_interface), deferred :: restart
+      procedure, non_overridable :: evaluate => stepper_evaluate
+      procedure, non_overridable :: restartable => stepper_restartable
+      procedure, non_overridable :: give_up_rhs => stepper_give_up_rhs
+      procedure, non_overridable :: give_up_not_finite => stepper_give_up_not_finite
    end type stepper_t
 
    abstract interface
-      !> Prepare to integrate from (t0, y0); evaluates f there.
-      subroutine init_interface(this, sys, t0, y0, status)
-         import :: stepper_t, ode_system_t, wp
+      !> Prepare to integrate from (t0, y0); evaluates f there. err: the
+      !! evaluation failed, or a setting is invalid.
+      subroutine init_interface(this, sys, t0, y0, err)
+         import :: stepper_t, ode_system_t, wp, error_t
          class(stepper_t), intent(inout) :: this
          class(ode_system_t), intent(inout) :: sys
          real(wp), intent(in) :: t0
          real(wp), intent(in), contiguous :: y0(:)
-         integer, intent(out) :: status
+         type(error_t), intent(inout) :: err
       end subroutine init_interface
 
       !> Take one accepted step, ending no later than t_limit; t and y are
-      !! updated only when status is step_ok.
-      subroutine advance_interface(this, sys, t, y, t_limit, status)
-         import :: stepper_t, ode_system_t, wp
+      !! updated only when it succeeds. err: no step could be taken (an
+      !! evaluation failed, the step fell below its floor, the state became
+      !! infinite, a fixed step would pass t_limit), and why.
+      subroutine advance_interface(this, sys, t, y, t_limit, err)
+         import :: stepper_t, ode_system_t, wp, error_t
          class(stepper_t), intent(inout) :: this
          class(ode_system_t), intent(inout) :: sys
          real(wp), intent(inout) :: t
          real(wp), intent(inout), contiguous :: y(:)
          real(wp), intent(in) :: t_limit
-         integer, intent(out) :: status
+         type(error_t), intent(inout) :: err
       end subroutine advance_interface
 
       !> The right-hand side has just changed at the accepted point (t, y)
@@ -95,34 +112,120 @@ module ode_system
       !! memory), evaluate f at (t, y) (counted in stats%evaluations) and
       !! continue from there as after init. Must follow init; the workspace
       !! is kept (no allocation). stats accumulate; stats%restarts counts
-      !! the calls. status: step_ok, step_rhs_failed or step_bad_setting.
-      subroutine restart_interface(this, sys, t, y, status)
-         import :: stepper_t, ode_system_t, wp
+      !! the calls. err: the evaluation failed, restart came before init or
+      !! with a state of another size, or a setting is invalid.
+      subroutine restart_interface(this, sys, t, y, err)
+         import :: stepper_t, ode_system_t, wp, error_t
          class(stepper_t), intent(inout) :: this
          class(ode_system_t), intent(inout) :: sys
          real(wp), intent(in) :: t
          real(wp), intent(in), contiguous :: y(:)
-         integer, intent(out) :: status
+         type(error_t), intent(inout) :: err
       end subroutine restart_interface
    end interface
 
 contains
 
-   pure function step_status_text(status) result(text)
-      integer, intent(in) :: status
+   !> f(t, y) for a step of this stepper, counted in its statistics: true
+   !! when the system could evaluate it. A failure is an outcome here (the
+   !! caller may answer it with a shorter step); only its time, code and
+   !! state are kept, for give_up_rhs.
+   logical function stepper_evaluate(this, sys, t, y, f) result(ok)
+      class(stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out), contiguous :: f(:)
+      integer :: code
+      call sys%rhs(t, y, f, code)
+      this%stats%evaluations = this%stats%evaluations + 1
+      ok = code == 0
+      if (.not. ok) then
+         this%t_failed = t
+         this%code_failed = code
+         this%y_failed = y
+      end if
+   end function stepper_evaluate
+
+   !> The stepper gives up because its last evaluation failed: err says
+   !! when and, through the system's failure_text at that evaluation, why.
+   subroutine stepper_give_up_rhs(this, sys, err)
+      class(stepper_t), intent(in) :: this
+      class(ode_system_t), intent(in) :: sys
+      type(error_t), intent(inout) :: err
+      call rhs_failed(sys, this%t_failed, this%y_failed, this%code_failed, err)
+   end subroutine stepper_give_up_rhs
+
+   !> The stepper gives up because the state of its step is not finite
+   !! (the right-hand side was, but the step's combination of it overflowed).
+   subroutine stepper_give_up_not_finite(this, err)
+      class(stepper_t), intent(in) :: this
+      type(error_t), intent(inout) :: err
+      associate (unused => this)
+      end associate
+      call error_set(err, exit_numerical, 'the state became infinite or NaN')
+   end subroutine stepper_give_up_not_finite
+
+   !> restart may follow: init has been called, with a state of y's size;
+   !! if not, err says which.
+   logical function stepper_restartable(this, y, err) result(ok)
+      class(stepper_t), intent(in) :: this
+      real(wp), intent(in) :: y(:)
+      type(error_t), intent(inout) :: err
+      ok = .false.
+      if (.not. allocated(this%f)) then
+         call error_set(err, exit_numerical, 'restart was called before init')
+      else if (size(y) /= size(this%f)) then
+         call error_set(err, exit_numerical, 'restart was called with a state of '//itoa(size(y)) &
+                        //' entries, init with '//itoa(size(this%f)))
+      else
+         ok = .true.
+      end if
+   end function stepper_restartable
+
+   !> f(t, y) outside any step (the derivative at an accepted point after
+   !! the right-hand side jumped, when no step follows): not a stepper's
+   !! evaluation (not in its statistics); err when it fails, as a
+   !! stepper's.
+   subroutine evaluate_outside_step(sys, t, y, f, err)
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out), contiguous :: f(:)
+      type(error_t), intent(inout) :: err
+      integer :: code
+      call sys%rhs(t, y, f, code)
+      if (code /= 0) call rhs_failed(sys, t, y, code, err)
+   end subroutine evaluate_outside_step
+
+   !> The evaluation at (t, y) failed with the system's code: err says
+   !! when, and why when the system says (its failure_text).
+   subroutine rhs_failed(sys, t, y, code, err)
+      class(ode_system_t), intent(in) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      integer, intent(in) :: code
+      type(error_t), intent(inout) :: err
+      character(len=:), allocatable :: why
+      why = sys%failure_text(t, y, code)
+      if (len(why) > 0) why = ': '//why
+      call error_set(err, exit_numerical, 'the right-hand side could not be evaluated at t = '//num(t)//' s'//why)
+   end subroutine rhs_failed
+
+   !> Why the evaluation at (t, y) failed with the system's code (rhs's
+   !! status): asked only when a stepper gives up, never at a trial, so it
+   !! may take its time (evaluate again, build a message). The default
+   !! system does not say ('').
+   function system_failure_text(this, t, y, code) result(text)
+      class(ode_system_t), intent(in) :: this
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      integer, intent(in) :: code
       character(len=:), allocatable :: text
-      select case (status)
-      case (step_ok);         text = 'ok'
-      case (step_rhs_failed); text = 'the right-hand side could not be evaluated'
-      case (step_too_small);  text = 'the step size fell below its floor (the problem is too stiff ' &
-                                     //'or discontinuous for the tolerances)'
-      case (step_not_finite); text = 'the state became infinite or NaN'
-      case (step_beyond_limit); text = 'a fixed step would pass the requested end time'
-      case (step_bad_setting); text = 'an integrator setting is invalid, or restart was called ' &
-                                      //'before init or with a state of another size'
-      case default;           text = 'unknown integration status'
-      end select
-   end function step_status_text
+      associate (unused => this, u2 => t, u3 => size(y), u4 => code)
+      end associate
+      text = ''
+   end function system_failure_text
 
    !> For each of the n entries of y, whether an adaptive stepper's error
    !! norm includes it: all of them unless the system says otherwise.

@@ -7,8 +7,8 @@
 module runge_kutta4
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
-   use ode_system, only: ode_system_t, stepper_t, step_ok, step_rhs_failed, step_not_finite, &
-      step_bad_setting
+   use error_handling, only: error_t
+   use ode_system, only: ode_system_t, stepper_t
    implicit none
    private
 
@@ -27,58 +27,54 @@ module runge_kutta4
 
 contains
 
-   subroutine rk4_init(this, sys, t0, y0, status)
+   subroutine rk4_init(this, sys, t0, y0, err)
       class(rk4_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t0
       real(wp), intent(in), contiguous :: y0(:)
-      integer, intent(out) :: status
+      type(error_t), intent(inout) :: err
       integer :: n
       n = size(y0)
-      if (allocated(this%f)) deallocate (this%f, this%k2, this%k3, this%k4, this%ytmp)
-      allocate (this%f(n), this%k2(n), this%k3(n), this%k4(n), this%ytmp(n))
-      call rk4_begin(this, sys, t0, y0, status)
+      if (allocated(this%f)) deallocate (this%f, this%k2, this%k3, this%k4, this%ytmp, this%y_failed)
+      allocate (this%f(n), this%k2(n), this%k3(n), this%k4(n), this%ytmp(n), this%y_failed(n))
+      call rk4_begin(this, sys, t0, y0, err)
    end subroutine rk4_init
 
    !> See stepper_t: the first stage kept from the last step assumed the old
    !! right-hand side, so it is evaluated again; the grid restarts at t.
-   subroutine rk4_restart(this, sys, t, y, status)
+   subroutine rk4_restart(this, sys, t, y, err)
       class(rk4_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
-      integer, intent(out) :: status
-      status = step_bad_setting
-      if (.not. allocated(this%f)) return
-      if (size(y) /= size(this%f)) return
+      type(error_t), intent(inout) :: err
+      if (.not. this%restartable(y, err)) return
       this%stats%restarts = this%stats%restarts + 1
-      call rk4_begin(this, sys, t, y, status)
+      call rk4_begin(this, sys, t, y, err)
    end subroutine rk4_restart
 
    !> Start (or start again) from (t, y): a new grid t0 = t and the first
    !! stage f(t, y).
-   subroutine rk4_begin(this, sys, t, y, status)
+   subroutine rk4_begin(this, sys, t, y, err)
       class(rk4_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
-      integer, intent(out) :: status
+      type(error_t), intent(inout) :: err
       this%t0 = t
       this%n = 0
-      call sys%rhs(t, y, this%f, this%rhs_status)
-      this%stats%evaluations = this%stats%evaluations + 1
-      status = merge(step_ok, step_rhs_failed, this%rhs_status == 0)
+      if (.not. this%evaluate(sys, t, y, this%f)) call this%give_up_rhs(sys, err)
    end subroutine rk4_begin
 
    !> One step of size h, or shorter if t_limit comes first (a single-step
    !! method can shorten a step without disturbing the next).
-   subroutine rk4_advance(this, sys, t, y, t_limit, status)
+   subroutine rk4_advance(this, sys, t, y, t_limit, err)
       class(rk4_stepper_t), intent(inout) :: this
       class(ode_system_t), intent(inout) :: sys
       real(wp), intent(inout) :: t
       real(wp), intent(inout), contiguous :: y(:)
       real(wp), intent(in) :: t_limit
-      integer, intent(out) :: status
+      type(error_t), intent(inout) :: err
       real(wp) :: h, t_new
       logical :: full
       full = t_limit - t >= this%h*(1.0_wp - 1.0e-9_wp)
@@ -89,7 +85,6 @@ contains
          h = t_limit - t
          t_new = t_limit
       end if
-      status = step_rhs_failed
       associate (k1 => this%f, k2 => this%k2, k3 => this%k3, k4 => this%k4, yt => this%ytmp)
          yt = y + 0.5_wp*h*k1
          if (.not. evaluate(t + 0.5_wp*h, yt, k2)) return
@@ -99,7 +94,7 @@ contains
          if (.not. evaluate(t_new, yt, k4)) return
          yt = y + (h/6.0_wp)*(k1 + 2.0_wp*(k2 + k3) + k4)
          if (.not. all(ieee_is_finite(yt))) then
-            status = step_not_finite
+            call this%give_up_not_finite(err)
             return
          end if
          ! derivative at the new point: the first stage of the next step
@@ -117,15 +112,15 @@ contains
       this%stats%steps = this%stats%steps + 1
       this%stats%h_min = min(this%stats%h_min, h)
       this%stats%h_max = max(this%stats%h_max, h)
-      status = step_ok
    contains
+      !> f(te, ye); a failure ends the step (a fixed step is not shortened
+      !! on its account): err says why.
       logical function evaluate(te, ye, fe)
          real(wp), intent(in) :: te
          real(wp), intent(in), contiguous :: ye(:)
          real(wp), intent(out), contiguous :: fe(:)
-         call sys%rhs(te, ye, fe, this%rhs_status)
-         this%stats%evaluations = this%stats%evaluations + 1
-         evaluate = this%rhs_status == 0
+         evaluate = this%evaluate(sys, te, ye, fe)
+         if (.not. evaluate) call this%give_up_rhs(sys, err)
       end function evaluate
    end subroutine rk4_advance
 end module runge_kutta4

@@ -125,12 +125,15 @@ contains
       body_structure_matches = all(coupled .or. abs(bc%coupling) <= 0.0_wp)
    end function body_structure_matches
 
-   !> Solve A z'' = b. info /= 0 means A was not positive definite (the
-   !! caller reports a numerical failure) and z'' is set to zero: the
-   !! structured solve returns the coordinate whose pivot was not positive
-   !! and finite, the dense one LAPACK's column index. solver (default
-   !! solver_structured) picks the method; an unknown one gives info = -7,
-   !! LAPACK's convention for an invalid argument (the seventh).
+   !> Solve A z'' = b. info /= 0 means A was not positive definite and z''
+   !! is set to zero: the structured solve returns the coordinate whose
+   !! pivot was not positive and finite, the dense one LAPACK's column index
+   !! (dpotf2's info, mapped here). An outcome of the right-hand side's
+   !! evaluation, not an error: the system answers the stepper with it, and
+   !! explains it only if the stepper gives up (docs/architecture.md,
+   !! "Errors"). solver (default solver_structured) picks the method; an
+   !! unknown one gives info = -7, LAPACK's convention for an invalid
+   !! argument (the seventh; occupant_build sets only the two known).
    pure subroutine body_accelerations(bc, c, s, b, zdd, info, solver)
       type(body_constants_t), intent(in) :: bc
       real(wp), intent(in) :: c(n_seg), s(n_seg), b(n_dof)

@@ -4,6 +4,13 @@
 !! quantities (state_layout); f = (z', z'', ...) with z'' from A z'' = b
 !! (C.4, C.5). The vehicle's motion comes from its tables (C.3), evaluated
 !! only when an effect needs it.
+!!
+!! An evaluation that cannot be completed (A not positive definite, rates
+!! that are not finite, a state beyond any physical motion) is an outcome
+!! for the stepper (rhs's status, a code of this module's own): nothing is
+!! allocated or written for it at the time. Why it failed is told only when
+!! a stepper gives up (failure_text, the cold path), from the state of the
+!! evaluation that failed.
 module equations_of_motion
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp, i8
@@ -21,9 +28,9 @@ module equations_of_motion
 
    public :: crash_system_t, system_build, system_add_occupant, system_add_effect, system_initial_y
    public :: system_body_state
-   public :: rhs_status_text, rhs_not_positive_definite, rhs_not_finite, rhs_diverged
    public :: max_angle, max_position, max_rate, max_speed
 
+   !> rhs's outcomes (its status) other than 0, explained by failure_text
    integer, parameter :: rhs_not_positive_definite = 1
    integer, parameter :: rhs_not_finite = 2
    integer, parameter :: rhs_diverged = 3
@@ -38,7 +45,7 @@ module equations_of_motion
    real(wp), parameter :: max_rate = 1.0e7_wp, max_speed = 1.0e9_wp
 
    !> The occupants in their vehicle. Read-only during a run except the
-   !! evaluation counters and the diagnostics of a failure.
+   !! evaluation counters.
    type, extends(ode_system_t) :: crash_system_t
       type(occupant_t), allocatable :: occupants(:)
       type(vehicle_motion_t) :: vm
@@ -47,11 +54,10 @@ module equations_of_motion
       !> evaluations of each effect (effect, occupant)
       integer(i8), allocatable :: counts(:, :)
       integer(i8) :: evaluations = 0
-      real(wp) :: last_t = 0.0_wp             !< time of the last evaluation (for messages)
-      character(len=:), allocatable :: failure_detail
    contains
       procedure :: rhs => system_rhs
       procedure :: error_controlled => system_error_controlled
+      procedure :: failure_text => system_failure_text
    end type crash_system_t
 
 contains
@@ -143,11 +149,10 @@ contains
       integer :: o, info
 
       this%evaluations = this%evaluations + 1
-      this%last_t = t
       status = 0
       do o = 1, size(this%occupants)
          associate (occ => this%occupants(o))
-            if (.not. in_range(this, occ, y)) then
+            if (.not. in_range(occ, y)) then
                status = rhs_diverged
                return
             end if
@@ -161,51 +166,71 @@ contains
          end associate
       end do
       ! every rate: z'', and the effects' extra and auxiliary quantities
-      if (.not. all(ieee_is_finite(dydt))) then
-         status = rhs_not_finite
-         call explain_not_finite(this, t, y)
-      end if
+      if (.not. all(ieee_is_finite(dydt))) status = rhs_not_finite
    end subroutine system_rhs
 
-   !> After an evaluation that gave rates that are not finite: the first
-   !! effect that can say why (effect_t%failure_text) sets failure_detail.
-   subroutine explain_not_finite(sys, t, y)
-      type(crash_system_t), intent(inout) :: sys
-      real(wp), intent(in) :: t, y(:)
-      type(body_state_t) :: st
-      character(len=:), allocatable :: why
-      integer :: o, k, xo, ao
-      if (allocated(sys%failure_detail)) deallocate (sys%failure_detail)
-      do o = 1, size(sys%occupants)
-         associate (occ => sys%occupants(o))
-            call occupant_state(occ, t, y, st)
-            call occupant_vehicle(occ, sys%vm, t, st)
-            do k = 1, size(occ%effects)
-               xo = occ%extra_offset(k)
-               ao = occ%aux_offset(k)
-               associate (e => occ%effects(k)%e)
-                  why = e%failure_text(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux))
-               end associate
-               if (len(why) > 0) then
-                  sys%failure_detail = trim(occ%label)//': '//why
-                  return
-               end if
-            end do
+   !> Why the evaluation at (t, y) failed with code (system_rhs's status),
+   !! when a stepper gives up: the code's reason and, for a state out of
+   !! range, which coordinate or rate left it; for rates that are not
+   !! finite, the first effect that can say why (effect_t%failure_text).
+   function system_failure_text(this, t, y, code) result(text)
+      class(crash_system_t), intent(in) :: this
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      integer, intent(in) :: code
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: detail
+      integer :: o
+      text = rhs_status_text(code)
+      detail = ''
+      do o = 1, size(this%occupants)
+         associate (occ => this%occupants(o))
+            if (code == rhs_diverged .and. .not. in_range(occ, y)) then
+               detail = out_of_range(occ%label, y(occ%z_offset + 1:occ%z_offset + n_dof), &
+                                     y(occ%zdot_offset + 1:occ%zdot_offset + n_dof))
+            else if (code == rhs_not_finite) then
+               detail = effect_failure(this, o, t, y)
+            end if
          end associate
+         if (len(detail) > 0) exit
       end do
-   end subroutine explain_not_finite
+      if (len(detail) > 0) text = text//' ('//detail//')'
+   end function system_failure_text
+
+   !> Why occupant o's rates at (t, y) are not finite, when one of its
+   !! effects can say (effect_t%failure_text: the first that does), or ''.
+   function effect_failure(sys, o, t, y) result(why)
+      type(crash_system_t), intent(in) :: sys
+      integer, intent(in) :: o
+      real(wp), intent(in) :: t, y(:)
+      character(len=:), allocatable :: why
+      type(body_state_t) :: st
+      integer :: k, xo, ao
+      why = ''
+      st = system_body_state(sys, o, t, y)
+      associate (occ => sys%occupants(o))
+         do k = 1, size(occ%effects)
+            xo = occ%extra_offset(k)
+            ao = occ%aux_offset(k)
+            associate (e => occ%effects(k)%e)
+               why = e%failure_text(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux))
+            end associate
+            if (len(why) > 0) then
+               why = trim(occ%label)//': '//why
+               return
+            end if
+         end do
+      end associate
+   end function effect_failure
 
    !> The occupant's coordinates and rates are finite and within the bounds
-   !! of any physical state (NaN fails every comparison); if not, say which
-   !! one left them.
-   logical function in_range(sys, occ, y) result(ok)
-      type(crash_system_t), intent(inout) :: sys
+   !! of any physical state (NaN fails every comparison).
+   pure logical function in_range(occ, y) result(ok)
       type(occupant_t), intent(in) :: occ
       real(wp), intent(in) :: y(:)
       associate (z => y(occ%z_offset + 1:occ%z_offset + n_dof), zd => y(occ%zdot_offset + 1:occ%zdot_offset + n_dof))
          ok = all(abs(z(1:n_seg)) <= max_angle) .and. all(abs(z(n_seg + 1:)) <= max_position) .and. &
               all(abs(zd(1:n_seg)) <= max_rate) .and. all(abs(zd(n_seg + 1:)) <= max_speed)
-         if (.not. ok) sys%failure_detail = out_of_range(occ%label, z, zd)
       end associate
    end function in_range
 
@@ -243,6 +268,7 @@ contains
       end do
    end function out_of_range
 
+   !> The reason of each of system_rhs's codes.
    pure function rhs_status_text(status) result(text)
       integer, intent(in) :: status
       character(len=:), allocatable :: text

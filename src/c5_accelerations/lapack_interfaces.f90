@@ -1,5 +1,8 @@
 !> Explicit interfaces to the LAPACK and BLAS routines hsri2d calls, so
-!! that every call is checked at compile time.
+!! that every call is checked at compile time. LAPACK's info stays at this
+!! interface: its one caller (body_matrix's body_accelerations) maps a
+!! non-zero info to its outcome there (A not positive definite, an outcome
+!! of the right-hand side's evaluation; docs/architecture.md, "Errors").
 module lapack_interfaces
    implicit none
    private

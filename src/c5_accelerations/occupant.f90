@@ -258,7 +258,8 @@ contains
 
    !> The occupant's part of f(t, y): z' and z'' from A z'' = b (C.5), and
    !! the rates of its effects' quantities. info /= 0: A is not positive
-   !! definite.
+   !! definite (body_accelerations' outcome, which system_rhs answers the
+   !! stepper with).
    pure subroutine occupant_rhs(occ, st, y, dydt, counts, info)
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st

@@ -133,8 +133,9 @@ module history_h5
       type(series_t), allocatable :: series(:)
       integer(hid_t) :: ev_time = no_id, ev_kind = no_id, ev_index = no_id, ev_text = no_id
       integer(hsize_t) :: nevents = 0
-      !> The first write failure; once set, the file is abandoned (see above).
-      character(len=:), allocatable :: failure
+      !> The first write failure; once set, the file is abandoned (see above)
+      !! and every later call returns it.
+      type(error_t) :: failure
    contains
       !> Create (truncate) the file: root attributes, /input/deck, /events.
       procedure :: open => history_file_open
@@ -173,7 +174,7 @@ contains
          return
       end if
       this%path = path
-      if (allocated(this%failure)) deallocate (this%failure)
+      this%failure = error_t()
 
       call init_hdf5(hdferr)
       if (hdferr < 0) then
@@ -303,8 +304,8 @@ contains
                         ': rank 1 takes one column, and the rank is 1 or 2')
          return
       end if
-      if (allocated(this%failure)) then
-         call error_set(err, exit_io, this%failure)
+      if (this%failure%failed()) then
+         err = this%failure
          return
       end if
 
@@ -380,8 +381,8 @@ contains
                            ' in '//this%path//': it has '//trim(want)//' columns')
             return
          end if
-         if (allocated(this%failure)) then
-            call error_set(err, exit_io, this%failure)
+         if (this%failure%failed()) then
+            err = this%failure
             return
          end if
          s%nbuf = s%nbuf + 1
@@ -408,8 +409,8 @@ contains
          call error_set(err, exit_io, 'cannot add an event: no HDF5 file is open')
          return
       end if
-      if (allocated(this%failure)) then
-         call error_set(err, exit_io, this%failure)
+      if (this%failure%failed()) then
+         err = this%failure
          return
       end if
       start = this%nevents
@@ -510,8 +511,8 @@ contains
       class(history_file_t), intent(inout) :: this
       character(len=*), intent(in) :: message
       type(error_t), intent(inout) :: err
-      if (.not. allocated(this%failure)) this%failure = message//system_reason()
-      call error_set(err, exit_io, this%failure)
+      if (.not. this%failure%failed()) call error_set(this%failure, exit_io, message//system_reason())
+      err = this%failure
    end subroutine write_failed
 
    !> ": No space left on device" when errno says why an HDF5 call that
@@ -534,10 +535,10 @@ contains
       type(error_t) :: local
       integer :: k, ignore, hdferr
 
-      if (this%file > 0 .and. .not. allocated(this%failure)) &
+      if (this%file > 0 .and. .not. this%failure%failed()) &
          call flush_file(this, 'cannot close HDF5 file '//this%path, local)
-      if (allocated(this%failure)) then
-         if (present(err)) call error_set(err, exit_io, this%failure)
+      if (this%failure%failed()) then
+         if (present(err)) err = this%failure
       else
          do k = 1, this%nseries
             if (this%series(k)%dset > 0) call h5dclose_f(this%series(k)%dset, ignore)
@@ -582,16 +583,16 @@ contains
 
    !> Write the pending rows of every series, then have HDF5 write
    !! everything it holds for the file (metadata, chunk caches) to the
-   !! operating system. `failure` says what failed if that does.
-   subroutine flush_file(this, failure, err, rows)
+   !! operating system. `what` says what failed if that does.
+   subroutine flush_file(this, what, err, rows)
       class(history_file_t), intent(inout) :: this
-      character(len=*), intent(in) :: failure
+      character(len=*), intent(in) :: what
       type(error_t), intent(inout) :: err
       logical, intent(in), optional :: rows
       integer :: k, hdferr
 
-      if (allocated(this%failure)) then
-         call error_set(err, exit_io, this%failure)
+      if (this%failure%failed()) then
+         err = this%failure
          return
       end if
       do k = 1, this%nseries
@@ -599,11 +600,11 @@ contains
             if (.not. rows) exit                ! (the pending rows stay pending)
          end if
          call write_block(this, this%series(k), err)
-         if (allocated(this%failure)) return
+         if (this%failure%failed()) return
       end do
       call posix_clear_errno()
       call h5fflush_f(this%file, h5f_scope_global_f, hdferr)
-      if (hdferr < 0) call write_failed(this, failure, err)
+      if (hdferr < 0) call write_failed(this, what, err)
    end subroutine flush_file
 
    subroutine close_dataset(dset)
@@ -624,8 +625,8 @@ contains
       integer :: hdferr
 
       if (s%nbuf == 0) return
-      if (allocated(this%failure)) then
-         call error_set(err, exit_io, this%failure)
+      if (this%failure%failed()) then
+         err = this%failure
          return
       end if
       if (s%rank == 1) then

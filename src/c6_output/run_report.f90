@@ -356,7 +356,7 @@ contains
       call lst%new_page('SUMMARY (C.6, C.7)')
       call lst%heading('END OF RUN', 3)
       call lst%put('  ended at t ='//fixed(res%t_end, 10, 5)//' s: '//end_reason_text(res%end_reason))
-      if (res%end_reason == end_failure .or. res%end_reason == end_energy) call lst%put('  '//res%failure, indent=4)
+      if (res%end_reason == end_failure .or. res%end_reason == end_energy) call lst%put('  '//res%failure%message, indent=4)
 
       do o = 1, size(res%occ)
          associate (os => res%occ(o))

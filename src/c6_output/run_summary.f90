@@ -4,6 +4,7 @@
 !! with the length of the run (except for events, which are few).
 module run_summary
    use kinds, only: wp, i8
+   use error_handling, only: error_t
    use model, only: n_joint, n_injury
    use ode_system, only: step_stats_t
    use effect_events, only: event_t
@@ -44,7 +45,9 @@ module run_summary
 
    type :: run_summary_t
       integer :: end_reason = 0
-      character(len=:), allocatable :: failure
+      !> the numerical failure that ended the run (end_failure, end_energy):
+      !! the run's error, as its finish returns it
+      type(error_t) :: failure
       real(wp) :: t_end = 0.0_wp
       type(occupant_summary_t), allocatable :: occ(:)
       type(event_t), allocatable :: events(:)

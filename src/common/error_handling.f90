@@ -1,11 +1,17 @@
-!> Errors returned by library code. Library code never stops the program:
-!! it fills an error_t and returns; only the main program prints the
-!! message and chooses the exit status from the error's category.
+!> Errors returned by library code (docs/architecture.md, "Errors"). Library
+!! code never prints or stops the program: a procedure that can fail in a
+!! way a user must hear of takes `type(error_t), intent(inout) :: err` as
+!! its last argument and fills it where the failure is decided; its
+!! callers add context (error_prefix, or a message of their own around it)
+!! and pass it up; only the main program prints the message and chooses
+!! the exit status from the error's category. An outcome that is not a
+!! failure (a query, a trial the caller answers itself) is an answer, not
+!! an error_t.
 module error_handling
    implicit none
    private
 
-   public :: error_t, error_set, error_append
+   public :: error_t, error_set, error_append, error_prefix
    public :: exit_ok, exit_usage, exit_deck, exit_numerical, exit_io
    public :: error_category_name
 
@@ -55,6 +61,16 @@ contains
          err%message = err%message//new_line('a')//message
       end if
    end subroutine error_append
+
+   !> Give an error the context its caller knows (where, when), before its
+   !! message: "integration stopped after t = 0.05 s: " and the stepper's
+   !! why. Nothing when no error is recorded.
+   pure subroutine error_prefix(err, context)
+      type(error_t), intent(inout) :: err
+      character(len=*), intent(in) :: context
+      if (err%code == exit_ok .or. .not. allocated(err%message)) return
+      err%message = context//err%message
+   end subroutine error_prefix
 
    !> A short name for an error category, for the first line of a report.
    pure function error_category_name(code) result(name)

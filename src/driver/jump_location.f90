@@ -6,8 +6,9 @@
 !! (nothing was accepted at the states it passes over).
 module jump_location
    use kinds, only: wp
+   use error_handling, only: error_t
    use equations_of_motion, only: crash_system_t, system_body_state
-   use ode_system, only: stepper_t, step_ok, step_stats_t
+   use ode_system, only: stepper_t, step_stats_t
    use effect_base, only: body_state_t
    implicit none
    private
@@ -81,20 +82,20 @@ contains
    !! (t, y) is now inside the step, t_step_end its end. A step taken again
    !! that fails gives the step as first taken back (the jump then at its
    !! end, as without location), and only if that fails too does the run
-   !! fail (stat).
-   subroutine locator_locate(this, sys, stepper, t, y, done, stat)
+   !! fail (err: the stepper's why).
+   subroutine locator_locate(this, sys, stepper, t, y, done, err)
       class(jump_locator_t), intent(inout) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
       real(wp), intent(inout) :: t
       real(wp), intent(inout), contiguous :: y(:)
       logical, intent(out) :: done
-      integer, intent(out) :: stat
+      type(error_t), intent(inout) :: err
+      type(error_t) :: retry
       real(wp) :: theta, t_to, t_lo, t_hi
       logical :: short
       integer :: k
       done = .false.
-      stat = step_ok
       this%t_step_end = t
       this%y_end = y
       call fraction_asked(sys, t, y, theta, short)
@@ -116,14 +117,14 @@ contains
          stepper%stats%rejected = stepper%stats%rejected + 1
          stepper%stats%h_min = this%stats_prev%h_min
          stepper%stats%h_max = this%stats_prev%h_max
-         call stepper%restart(sys, t, y, stat)
+         call stepper%restart(sys, t, y, retry)
          stepper%stats%restarts = stepper%stats%restarts - 1
-         if (stat == step_ok) call stepper%advance(sys, t, y, t_to, stat)
-         if (stat /= step_ok) then
+         if (.not. retry%failed()) call stepper%advance(sys, t, y, t_to, retry)
+         if (retry%failed()) then
             ! back to the step as first taken (memory untouched since: the
             ! same derivative), kept with the jump at its end
             stepper%stats%steps = stepper%stats%steps + 1
-            call keep_try(this, sys, stepper, this%t_step_end, this%y_end, t, y, stat)
+            call keep_try(this, sys, stepper, this%t_step_end, this%y_end, t, y, err)
             done = .false.
             return
          end if
@@ -141,30 +142,30 @@ contains
       end do
       ! the tries spent: the earliest state past the jump, where it happens
       if (.not. t_hi < this%t_step_end) then
-         call keep_try(this, sys, stepper, this%t_step_end, this%y_end, t, y, stat)      ! (none before the step's end)
+         call keep_try(this, sys, stepper, this%t_step_end, this%y_end, t, y, err)      ! (none before the step's end)
          done = .false.
       else if (t < t_hi) then
-         call keep_try(this, sys, stepper, t_hi, this%y_hi, t, y, stat)
+         call keep_try(this, sys, stepper, t_hi, this%y_hi, t, y, err)
       end if
    end subroutine locator_locate
 
    !> Keep the step from t_prev to t_keep taken earlier (y_keep) rather
    !! than the last one taken: (t, y) set to it, its size among the
    !! accepted ones, the stepper restarted there (not counted as a restart
-   !! after a jump).
-   subroutine keep_try(this, sys, stepper, t_keep, y_keep, t, y, stat)
+   !! after a jump); err when that restart fails.
+   subroutine keep_try(this, sys, stepper, t_keep, y_keep, t, y, err)
       type(jump_locator_t), intent(in) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
       real(wp), intent(in) :: t_keep, y_keep(:)
       real(wp), intent(out) :: t
       real(wp), intent(out), contiguous :: y(:)
-      integer, intent(out) :: stat
+      type(error_t), intent(inout) :: err
       y = y_keep
       t = t_keep
       stepper%stats%h_min = min(this%stats_prev%h_min, t_keep - this%t_prev)
       stepper%stats%h_max = max(this%stats_prev%h_max, t_keep - this%t_prev)
-      call stepper%restart(sys, t, y, stat)
+      call stepper%restart(sys, t, y, err)
       stepper%stats%restarts = stepper%stats%restarts - 1
    end subroutine keep_try
 

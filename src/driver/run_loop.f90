@@ -22,7 +22,7 @@ module run_loop
    use error_handling, only: error_t, error_set
    use model, only: model_t
    use equations_of_motion, only: crash_system_t, system_build, system_initial_y
-   use ode_system, only: stepper_t, step_ok
+   use ode_system, only: stepper_t
    use run_summary, only: run_summary_t
    use end_tests, only: end_none, end_time, end_failure, end_energy
    use stepper_factory, only: stepper_traits_t, stepper_from_model, stepper_traits
@@ -46,7 +46,7 @@ module run_loop
       type(print_schedule_t) :: schedule     !< print times and frames
       type(jump_locator_t) :: locator        !< jumps located inside a step (D-C24b)
       type(sink_list_t) :: sinks
-      type(error_t) :: err                   !< a numerical failure
+      type(error_t) :: err                   !< a numerical failure (the summary's failure at finish)
       integer :: reason = end_none           !< why the run ended (end_none: it goes on)
       logical :: finished = .false.
    contains
@@ -74,7 +74,7 @@ contains
       type(sink_list_t), intent(in), optional :: sinks
       type(stepper_traits_t) :: tr
       real(wp), allocatable :: total0(:)
-      integer :: status
+      type(error_t) :: why
       if (present(system)) then
          this%sys = system
       else
@@ -92,10 +92,10 @@ contains
       call this%books%init(this%sys, this%t, this%y, m%numerics, m%vehicle, this%summary)
       total0 = this%summary%occ%e_total0    ! (the energy totals the balances are measured from)
       call this%schedule%init(m%time, tr, m%vehicle, this%sys, total0)
-      call this%stepper%init(this%sys, this%t, this%y, status)
-      if (status /= step_ok) then
+      call this%stepper%init(this%sys, this%t, this%y, why)
+      if (why%failed()) then
          ! no derivative at t = 0: the outputs say so and hold no time history
-         call record_failure(this%summary, this%err, status, this%t, this%sys, this%stepper)
+         call record_failure(why, this%t, this%summary, this%err)
          call this%schedule%blank_frame()
          call this%sinks%begin(this%sys, this%schedule%reg, this%schedule%frame)
          this%reason = end_failure
@@ -104,8 +104,8 @@ contains
       call make_frame(this)
       call this%sinks%begin(this%sys, this%schedule%reg, this%schedule%frame)
       call this%sinks%record(this%schedule%frame)
-      call this%books%accept(this%sys, this%stepper, this%t, this%y, .false., this%summary, this%sinks, this%err, &
-                             this%reason)
+      call this%books%accept(this%sys, this%stepper, this%t, this%y, .false., this%summary, this%sinks, this%reason, &
+                             this%err)
       call this%locator%init(this%sys, tr%relocates, size(this%y))
    end subroutine run_init
 
@@ -117,18 +117,19 @@ contains
       class(run_t), intent(inout) :: this
       real(wp) :: t_limit
       logical :: located, at_end, print_now
-      integer :: status, reason
+      integer :: reason
+      type(error_t) :: why
       if (this%is_done()) return
       call this%schedule%next_limit(this%t, t_limit)
       if (this%locator%on) call this%locator%mark(this%t, this%y, this%stepper%stats)
-      call this%stepper%advance(this%sys, this%t, this%y, t_limit, status)
+      call this%stepper%advance(this%sys, this%t, this%y, t_limit, why)
       located = .false.
-      if (status == step_ok .and. this%locator%on) &
-         call this%locator%locate(this%sys, this%stepper, this%t, this%y, located, status)
-      if (status /= step_ok) then
+      if (.not. why%failed() .and. this%locator%on) &
+         call this%locator%locate(this%sys, this%stepper, this%t, this%y, located, why)
+      if (why%failed()) then
          ! keep the last accepted state in the output, then stop
          if (this%t > this%schedule%t_frame) call output_frame(this)
-         call record_failure(this%summary, this%err, status, this%t, this%sys, this%stepper)
+         call record_failure(why, this%t, this%summary, this%err)
          this%reason = end_failure
          return
       end if
@@ -136,7 +137,7 @@ contains
          ! an accepted state inside the step, not a step of the grid nor a
          ! print time (unless the run ends there); the step goes on from it
          call this%books%accept(this%sys, this%stepper, this%t, this%y, .false., this%summary, this%sinks, &
-                                this%err, reason)
+                                reason, this%err)
          call this%schedule%resume_at(this%locator%t_step_end)
          if (reason /= end_none) call output_frame(this)
       else
@@ -144,7 +145,7 @@ contains
          ! updates, so that no restart is made for a step that ends the run
          call this%schedule%step_taken(this%t, t_limit, at_end, print_now)
          call this%books%accept(this%sys, this%stepper, this%t, this%y, at_end, this%summary, this%sinks, &
-                                this%err, reason)
+                                reason, this%err)
          if (at_end .and. reason == end_none) reason = end_time
          if (print_now .or. reason /= end_none) call output_frame(this)
       end if
@@ -180,6 +181,8 @@ contains
          this%finished = .true.
          associate (s => this%summary, sys => this%sys)
             if (this%reason /= end_none .and. s%end_reason == end_none) s%end_reason = this%reason
+            ! the run's failure, as the listing's summary and the caller see it
+            if (this%err%failed()) s%failure = this%err
             n_occ = size(sys%occupants)
             s%t_end = this%t
             s%stats = this%stepper%stats

@@ -9,12 +9,12 @@
 module step_bookkeeping
    use kinds, only: wp, g_std
    use acceleration_criteria, only: criteria_new
-   use error_handling, only: error_t, error_set, exit_numerical
+   use error_handling, only: error_t, error_set, error_prefix, exit_numerical
    use strings, only: num
    use model, only: n_dof, n_seg, n_joint, n_injury, joint_partner, nend_rest, numerics_section_t, vehicle_section_t
-   use equations_of_motion, only: crash_system_t, system_body_state, rhs_status_text, rhs_diverged, rhs_not_finite
+   use equations_of_motion, only: crash_system_t, system_body_state
    use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
-   use ode_system, only: stepper_t, step_ok, step_rhs_failed, step_status_text
+   use ode_system, only: stepper_t, evaluate_outside_step
    use effect_base, only: body_state_t
    use effect_events, only: accept_result_t, event_t
    use point_forces, only: point_force_list_t, point_force_reserve
@@ -107,9 +107,9 @@ contains
    !! the run ends at this step (TMAX), so no restart. The run ends
    !! (reason) at the first injury or undesired contact of an occupant
    !! whose NEND asks for it, or when every occupant whose NEND asks for
-   !! rest has rested for its THOLD; end_failure when the restart fails.
-   !! Events go to the summary and the sinks.
-   subroutine books_accept(this, sys, stepper, t, y, last, summary, sinks, err, reason)
+   !! rest has rested for its THOLD; end_failure when the restart fails
+   !! (err: why). Events go to the summary and the sinks.
+   subroutine books_accept(this, sys, stepper, t, y, last, summary, sinks, reason, err)
       class(step_books_t), intent(inout) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
@@ -118,11 +118,12 @@ contains
       logical, intent(in) :: last
       type(run_summary_t), intent(inout) :: summary
       type(sink_list_t), intent(inout) :: sinks
-      type(error_t), intent(inout) :: err
       integer, intent(out) :: reason
+      type(error_t), intent(inout) :: err
       type(accept_result_t) :: ar
+      type(error_t) :: why
       real(wp) :: a_head, a_chest, delta
-      integer :: k, q, j, o, xo, ao, restart_status, rhs_code, reason_o
+      integer :: k, q, j, o, xo, ao, reason_o
       logical :: restart, undesired, at_rest, any_rest, all_rested
 
       restart = .false.
@@ -186,20 +187,15 @@ contains
          ! restart that fails
          this%f_accepted = stepper%f
          if (reason == end_none .and. .not. last) then
-            call stepper%restart(sys, t, y, restart_status)
+            call stepper%restart(sys, t, y, why)
          else
             ! the run ends here: no restart, but the last record holds one
             ! state's values, so its z'' is the new memory's (issue 14, 6)
-            call sys%rhs(t, y, stepper%f, rhs_code)
-            restart_status = step_ok
-            if (rhs_code /= 0) then
-               stepper%rhs_status = rhs_code
-               restart_status = step_rhs_failed
-            end if
+            call evaluate_outside_step(sys, t, y, stepper%f, why)
          end if
-         if (restart_status /= step_ok) then
+         if (why%failed()) then
             stepper%f = this%f_accepted
-            call record_failure(summary, err, restart_status, t, sys, stepper)
+            call record_failure(why, t, summary, err)
             reason = end_failure
          end if
       end if
@@ -259,7 +255,7 @@ contains
    !> The energy balance of C.6 at a print time t (each occupant's, from
    !! its frame) against its tolerance (*NUMERICS EBTOL): a run whose
    !! balance fails is flagged and, unless the deck says to continue, ends
-   !! as a numerical failure (summary%end_reason = end_energy, err set).
+   !! as a numerical failure (summary%end_reason = end_energy, err: why).
    subroutine books_check_energy(this, sys, balance, t, summary, err)
       class(step_books_t), intent(in) :: this
       type(crash_system_t), intent(in) :: sys
@@ -267,7 +263,7 @@ contains
       real(wp), intent(in) :: t
       type(run_summary_t), intent(inout) :: summary
       type(error_t), intent(inout) :: err
-      character(len=:), allocatable :: who
+      character(len=:), allocatable :: who, why
       integer :: o
       do o = 1, size(balance)
          associate (os => summary%occ(o), eb => balance(o))
@@ -283,40 +279,31 @@ contains
                   who = ''
                   if (size(balance) > 1) who = trim(sys%occupants(o)%label)//': '
                   summary%end_reason = end_energy
-                  summary%failure = who//'the energy balance error '//num(eb%error, 6)//' in*lb at t = '//num(t) &
+                  why = who//'the energy balance error '//num(eb%error, 6)//' in*lb at t = '//num(t) &
                      //' s exceeds EBTOL = '//num(this%numerics%energy_tol)//' of the largest body kinetic energy (' &
                      //num(os%ke_max, 6)//' in*lb): the results are not trustworthy. A smaller DT (or NINT = 3 ' &
                      //'with tighter RTOL) should help; *NUMERICS EBFAIL = CONTINUE runs on regardless'
                   if (this%pulse_tabulated) &
-                     summary%failure = summary%failure//'. Tabulated vehicle rates or positions that are not ' &
-                                       //'the integrals of its accelerations (C.3) make such an error whatever DT: ' &
-                                       //'see the deck''s warnings'
-                  call error_set(err, exit_numerical, summary%failure)
+                     why = why//'. Tabulated vehicle rates or positions that are not ' &
+                           //'the integrals of its accelerations (C.3) make such an error whatever DT: ' &
+                           //'see the deck''s warnings'
+                  call error_set(err, exit_numerical, why)
                end if
             end if
          end associate
       end do
    end subroutine books_check_energy
 
-   !> The run failed numerically at time t (status code of a step, a
-   !! restart or the first evaluation): why, in the summary and in err.
-   subroutine record_failure(summary, err, code, t, sys, stepper)
+   !> The run failed numerically after the accepted point t: why (the
+   !! stepper's error: what failed, when and why) with that context in err,
+   !! the summary's end reason end_failure.
+   subroutine record_failure(why, t, summary, err)
+      type(error_t), intent(in) :: why
+      real(wp), intent(in) :: t
       type(run_summary_t), intent(inout) :: summary
       type(error_t), intent(inout) :: err
-      integer, intent(in) :: code
-      real(wp), intent(in) :: t
-      type(crash_system_t), intent(in) :: sys
-      class(stepper_t), intent(in) :: stepper
-      character(len=:), allocatable :: why
-      why = step_status_text(code)
-      if (code == step_rhs_failed) then
-         why = why//' at t = '//num(sys%last_t)//' s: '//rhs_status_text(stepper%rhs_status)
-         if ((stepper%rhs_status == rhs_diverged .or. stepper%rhs_status == rhs_not_finite) &
-             .and. allocated(sys%failure_detail)) &
-            why = why//' ('//sys%failure_detail//')'
-      end if
-      summary%failure = 'integration stopped after t = '//num(t)//' s: '//why
+      call error_set(err, why%code, why%message)
+      call error_prefix(err, 'integration stopped after t = '//num(t)//' s: ')
       summary%end_reason = end_failure
-      call error_set(err, exit_numerical, summary%failure)
    end subroutine record_failure
 end module step_bookkeeping

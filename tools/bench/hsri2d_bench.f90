@@ -35,7 +35,6 @@ program hsri2d_bench
    use body_matrix, only: body_accelerations
    use model, only: n_dof
    use runge_kutta4, only: rk4_stepper_t
-   use ode_system, only: step_ok
    implicit none
 
    integer, parameter :: n_parts = 4, p_read = 1, p_run = 2, p_lst = 3, p_h5 = 4
@@ -256,12 +255,13 @@ contains
       type(rk4_stepper_t) :: rk
       type(accept_result_t) :: ar
       type(body_state_t) :: st
-      integer :: status, q, k, xo, ao
+      type(error_t) :: err
+      integer :: q, k, xo, ao
       rk%h = h
-      call rk%init(sys, t, y, status)
-      do while (t < t_end .and. status == step_ok)
-         call rk%advance(sys, t, y, t_end, status)
-         if (status /= step_ok) exit
+      call rk%init(sys, t, y, err)
+      do while (t < t_end .and. .not. err%failed())
+         call rk%advance(sys, t, y, t_end, err)
+         if (err%failed()) exit
          st = system_body_state(sys, 1, t, y)
          ar%restart = .false.
          associate (occ => sys%occupants(1))
@@ -275,9 +275,9 @@ contains
                end associate
             end do
          end associate
-         if (ar%restart) call rk%restart(sys, t, y, status)
+         if (ar%restart) call rk%restart(sys, t, y, err)
       end do
-      if (status /= step_ok) line = line//' (stopped at t = '//number(t)//' s)'
+      if (err%failed()) line = line//' (stopped at t = '//number(t)//' s)'
    end subroutine advance_to
 
    function number(x) result(s)
