@@ -29,7 +29,9 @@ cannot, since it matches each line as a whole against a regular expression:
     is wider than the 132 columns the tests are compiled with; likewise the
     line pFUnit writes to register a test, and the suite function's name
     (`<module>_suite`), which must be a Fortran name (63 characters at most);
-  - a comment on the `module` statement (pFUnit then does not see the module).
+  - a comment on the `module` statement (pFUnit then does not see the module);
+  - a procedure named as one of the names pFUnit's funit module exports
+    (FUNIT_NAMES: `starts_with`, `is`, `run`, ...), which then does not compile.
 
 Standard library only.
 """
@@ -57,6 +59,36 @@ ASSERTIONS = {
 # @test options that change which tests exist or how they run; the stand-in
 # cannot honour them, so it refuses them rather than ignore them.
 UNSUPPORTED_TEST_OPTIONS = ("npes", "ifdef", "ifndef", "type", "cases", "testparameters")
+
+# The names pFUnit 4.14's `funit` module makes public (its generic interfaces and
+# its symbol tree, read from the funit.mod gfortran writes when pFUnit is built:
+# tools/pfunit_lite/funit_names.py PREFIX/PFUNIT-4.14/include/funit.mod). A test
+# module that uses funit and defines a procedure of one of these names does not
+# compile under pFUnit ("Cannot change attributes of USE-associated symbol"),
+# whatever the stand-in's own funit exports.
+FUNIT_NAMES = frozenset((
+    "abstractmatcher", "abstracttestparameter", "all_of", "allof", "any_of", "anyexceptions",
+    "anyof", "array_with_size", "assertall", "assertany", "assertexceptionraised",
+    "assertfalse", "assertgreaterthanorequal", "assertisnan", "assertlessthanorequal",
+    "assertnone", "assertnotall", "assertnotequal", "assertrelativelyequal", "assertsameshape",
+    "basetestrunner", "catch", "catchnext", "contains_string", "debuglistener", "disable",
+    "empty_array", "equal_to", "every", "every_item", "expectation", "fhamcrest", "finalize",
+    "funit", "get_context", "ignore_all", "initialize", "is", "isarraywithsize", "isequal",
+    "isnear", "isnot", "isrelativelynear", "istrueorfalse", "listenerpointer",
+    "loadtests_interface", "matchable", "matcherdescription", "namefilter", "near", "not",
+    "parallelcontext", "parameterizedtestcase", "predicate", "relatively_near", "remoterunner",
+    "resultprinter", "robustrunner", "run", "serialcontext", "sourcelocation", "starts_with",
+    "stringcontains", "stringendswith", "stringstartswith", "stub", "subject", "taplistener",
+    "test", "testannotation", "testcase", "testlistener", "testlistenervector", "testmethod",
+    "testresult", "testrunner", "testsuite", "throw", "timeoutannotation", "trim_all",
+    "wascalled", "wascalledonce", "whitespaceoptions", "xmlprinter",
+))
+
+PROCEDURE_RE = re.compile(
+    r"\s*(?:(?:pure|impure|elemental|recursive|module)\s+)*"
+    r"(?:(?:integer|real|logical|character|complex|double\s+precision|type\s*\([^)]*\)|class\s*\([^)]*\))"
+    r"(?:\s*\([^)]*\))?\s+)?(?:(?:pure|impure|elemental|recursive)\s+)*"
+    r"(?:subroutine|function)\s+(\w+)", re.IGNORECASE)
 
 MODULE_RE = re.compile(r"\s*module\s+(\w+)\s*$", re.IGNORECASE)
 SUBROUTINE_RE = re.compile(r"\s*subroutine\s+(\w+)\s*(\((.*)\))?\s*$", re.IGNORECASE)
@@ -281,8 +313,13 @@ class Parser:
                                          f"{width} columns, more than {PFUNIT_LINE_LIMIT}")
 
     def statement(self, line, number):
-        """A Fortran line: the module statement, or the subroutine a pending
+        """A Fortran line: the module statement, a procedure of the module (its
+        name must not be one funit exports), or the subroutine a pending
         @test, @before or @after applies to."""
+        procedure = PROCEDURE_RE.match(strip_comment(line, None)[0])
+        if procedure and procedure.group(1).lower() in FUNIT_NAMES:
+            raise self.error(number, f"procedure '{procedure.group(1)}': pFUnit's funit module exports this "
+                                     "name, so the module does not compile under pFUnit 4.14 (rename it)")
         if self.pending:
             self.subroutine(line, number)
             return
