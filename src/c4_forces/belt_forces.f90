@@ -345,11 +345,12 @@ contains
    end subroutine chain_deformation
 
    !> After an accepted step: every element's memory from its deformation
-   !! and rate at the accepted state (figure 18; series_chain's chain_accept,
-   !! which also recovers a slack chain's rate-dependent body); a changed law
-   !! restarts the stepper. A chain that is slack and holds no rate-dependent
-   !! element still loaded, or whose elements are all elastic and stateless,
-   !! keeps its memories and needs no split.
+   !! and rate at the accepted state (figure 18; series_chain's chain_accept;
+   !! a slack chain's rate-dependent body still recovering, its state
+   !! moving, still turns); a changed law restarts the stepper. A chain that
+   !! is slack and holds no rate-dependent element still loaded, or whose
+   !! elements are all elastic and stateless, keeps its memories and needs no
+   !! split.
    subroutine belt_accept(this, st, extra, aux, result)
       class(belt_effect_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st

@@ -36,7 +36,7 @@ module contact_forces
       arc_segment, front_side, shin_side_now, surface_flat, surface_line, surface_circle, surface_point
    use recurrent_loading, only: recurrent_law_t
    use series_chain, only: series_chain_t, chain_split_t, chain_split, split_ok, chain_split_text, chain_new, &
-      chain_accept, chain_energies, chain_n_aux, chain_set_initial, chain_relaxing, max_chain
+      chain_accept, chain_energies, chain_n_aux, chain_set_initial, chain_relaxing, chain_stateful_any, max_chain
    use dead_band, only: ramp_of
    implicit none
    private
@@ -259,6 +259,9 @@ contains
       end if
       if (e%shattered) g%kind = guard_always
       if (.not. g%radius >= 0.0_wp) g%kind = guard_none
+      ! a rate-dependent element's state moves out of contact too, while it
+      ! recovers (series_chain): the pair's rates are not all zero there
+      if (chain_stateful_any(e%chain)) g%kind = guard_none
    end function pair_guard
 
    !> The contact's geometry (figure 22), force split and friction at st
@@ -478,12 +481,30 @@ contains
       end associate
       if (this%exit_far) then
          if (pair_far(this, st)) then
-            aux_rate = 0.0_wp            ! what the full path gives a slack pair
+            ! what the full path gives a slack pair: no force, no work; a
+            ! rate-dependent element recovering at its damper's rate
+            aux_rate = 0.0_wp
+            if (chain_relaxing(this%chain, aux)) call slack_rates(this, aux, aux_rate)
             return
          end if
       end if
       call pair_add_full(this, st, aux, b, aux_rate)
    end subroutine pair_add_forces
+
+   !> The rates of a slack pair's auxiliary quantities (pair_eval's split
+   !! with no contact): its rate-dependent elements' states recovering.
+   pure subroutine slack_rates(this, aux, aux_rate)
+      class(contact_pair_effect_t), intent(in) :: this
+      real(wp), intent(in) :: aux(:)
+      real(wp), intent(inout) :: aux_rate(:)
+      type(chain_split_t) :: sp
+      call chain_split(this%chain, -1.0_wp, 0.0_wp, aux, sp)
+      if (sp%status /= split_ok) then
+         aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)
+         return
+      end if
+      aux_rate(1:this%aux_friction - 1) = sp%aux_rate(1:this%aux_friction - 1)
+   end subroutine slack_rates
 
    !> add_forces' full path (its own procedure: the pair's state is not
    !! set up on the early exit).
@@ -666,8 +687,8 @@ contains
          ! slack for certain (pair_far) with its side decided: what the full
          ! path below does at no force, without the full geometry
          call far_check(this, st, far, side)
-         ! (a rate-dependent element still loaded takes the full path: a slack
-         ! chain's accept recovers it, series_chain)
+         ! (a rate-dependent element still loaded takes the full path: it
+         ! recovers out of contact, its memory follows it, series_chain)
          if (far .and. side /= side_unknown .and. .not. chain_relaxing(this%chain, aux)) then
             if (side /= 0) call set_behind(this, side < 0)   ! D-C16a, as front_side
             if (this%undesired) then                     ! D-C28: not loaded
@@ -734,7 +755,7 @@ contains
          this%peak_delta = ps%cs%delta
       end if
       ! out of contact the memory stays (as a slack belt's, belt_accept), but a
-      ! rate-dependent element recovers (series_chain's chain_accept)
+      ! rate-dependent element still recovering moves, and its memory with it
       if (ps%split%status /= split_ok) return
       if (.not. ps%cs%delta > 0.0_wp .and. .not. chain_relaxing(this%chain, aux)) return
       if (this%shattered) return

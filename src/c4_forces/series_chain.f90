@@ -25,12 +25,12 @@
 !! rate-dependent, the last one takes what the others leave (the absorber):
 !! T = F_b,a(x_a) + F_v,a(x_a') with x_a' = s' - sum x_d'(T), one equation in
 !! T. A single element is the law of loading_curves: T = max(0, F_b + F_v)
-!! while F_b > 0. The chain never pulls: while it is slack (T = 0) its
-!! states do not move, and at an accepted slack state a rate-dependent
-!! element recovers towards where it carries nothing, as far as it can
-!! without touching the others again (accept; the energy it held is
-!! dissipated). Rate terms of an element that bottoms out, is gated or is
-!! plastic are not used in a chain of several: its rigid pieces have no
+!! while F_b > 0. The chain never pulls: while it is slack (T = 0) a
+!! rate-dependent element recovers at its damper's rate, F_b,d + F_v,d(x_d')
+!! = 0 - the law above at T = 0, so that its rate is continuous where the
+!! chain goes slack or is taken up again; its damper dissipates what its
+!! spring gives up. Rate terms of an element that bottoms out, is gated or
+!! is plastic are not used in a chain of several: its rigid pieces have no
 !! rate.
 !!
 !! Energies (docs/loading.md 4): each element's stored energy is a function
@@ -38,14 +38,17 @@
 !! adds gate * (x - x_hold) while it is pushed beyond its hold). A
 !! rate-independent element dissipates only where its law changes at an
 !! accepted step (its stored energy's drops, booked in its memory: a
-!! turning point, the gate's work once the column stops, a recovery); a
-!! rate-dependent one dissipates the work done on it, T x' integrated,
-!! less its stored energy, at the rate (T - F_b) x' >= 0. The chain
-!! integrates its whole work T s' too: what that holds beyond its elements'
-!! energies - where the chain's deformation jumps (a contact's geometry
-!! switching), the energy released without work, and the integration's
-!! error - is dissipated, with the first rate-independent element's. So the
-!! elements' energies add up to the chain's work exactly.
+!! turning point, the gate's work once the column stops); a rate-dependent
+!! one dissipates the work done on it, T x', less its stored energy, at the
+!! rate (T - F_b) x' >= 0. The chain integrates its whole work T s': what
+!! that holds beyond its elements' energies is dissipated by its last
+!! rate-dependent element (the others integrate T x'), or where there is
+!! none with the first rate-independent one's - so the elements' energies
+!! add up to the chain's work exactly, and that element's own work, whose
+!! rate follows its state's fast relaxation (docs/loading.md 5, "Cost"), is
+!! not integrated. The rest also holds the energy released without work
+!! where the chain's deformation jumps (a contact's geometry switching) and
+!! the integration's error.
 module series_chain
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
@@ -64,6 +67,7 @@ module series_chain
 
    public :: max_chain, series_chain_t, chain_split_t, chain_new, chain_split, chain_accept, chain_energies
    public :: chain_set_initial, chain_relaxing, chain_split_text, chain_gates, chain_n_aux, chain_stateful
+   public :: chain_stateful_any
    public :: split_ok, split_no_convergence, split_not_finite
    public :: path_none, path_pair, path_newton, path_search, region_slack, region_unloaded, region_loaded
 
@@ -88,6 +92,10 @@ module series_chain
       integer :: absorber = 0
       !> its rate terms act (a single element; a stateful one; the absorber)
       logical :: rated(max_chain) = .false.
+      !> the last rated element (0: none): its dissipated energy is what the
+      !! chain's work holds beyond every other energy, not an integral of its
+      !! own (chain_energies)
+      integer :: rest = 0
       real(wp) :: x_offset(max_chain) = 0.0_wp
       !> the work done on each element before t = 0 (D-C26: an initial
       !! deformation counts as a loading before the run; its stored energy),
@@ -135,6 +143,7 @@ contains
       if (present(max_iter)) ch%max_iter = max_iter
       if (ch%n == 1) then
          ch%rated(1) = ch%law(1)%n_rate > 0
+         if (ch%rated(1)) ch%rest = 1
          return
       end if
       do i = 1, ch%n
@@ -142,6 +151,7 @@ contains
                      .and. .not. ch%law(i)%plastic .and. .not. ch%cap(i) > 0.0_wp
       end do
       ch%rated(1:ch%n) = usable(1:ch%n)
+      ch%rest = findloc(usable(1:ch%n), .true., 1, back=.true.)
       if (all(usable(1:ch%n))) ch%absorber = ch%n
       ! a rate-dependent element's state cannot follow a chain that is rigid -
       ! a padding at its cap with the column held by its gate: the states
@@ -174,6 +184,12 @@ contains
       integer, intent(in) :: i
       chain_stateful = ch%stateful(i)
    end function chain_stateful
+
+   !> Whether any element's deformation is a state of the chain.
+   pure logical function chain_stateful_any(ch)
+      type(series_chain_t), intent(in) :: ch
+      chain_stateful_any = ch%n_states > 0
+   end function chain_stateful_any
 
    !> The gates (D-C19): a gated element's, the branch force of the element
    !! before it at that one's cap, with its memory; 0 for the others.
@@ -228,7 +244,6 @@ contains
          sp%rate(1) = s_dot
          sp%force = pt%force
          sp%region = merge(region_loaded, region_unloaded, pt%branch > 0.0_wp)
-         if (ch%rated(1)) sp%aux_rate(1) = pt%force*s_dot
          sp%aux_rate(2) = pt%force*s_dot
          sp%iterations = 1
          return
@@ -268,11 +283,11 @@ contains
       end if
       sp%force = t
       ! the states' rates: each rate-dependent element carries T with its own
-      ! rate term; none while the chain is slack
+      ! rate term - slack too (T = 0: it recovers at its damper's rate)
       r_dot = s_dot
       do i = 1, n
          if (.not. ch%stateful(i)) cycle
-         if (t > 0.0_wp) sp%rate(i) = rate_inverse(ch%law(i), t - fb(i))
+         sp%rate(i) = rate_inverse(ch%law(i), t - fb(i))
          r_dot = r_dot - sp%rate(i)
          sp%aux_rate(n + 1 + ch%state(i)) = sp%rate(i)
       end do
@@ -316,7 +331,7 @@ contains
       ! those of a pair's early exit, D-C29)
       do i = 1, n
          if (.not. ch%stateful(i) .and. w(i) > 0.0_wp) sp%rate(i) = w(i)*r_dot
-         if (t > 0.0_wp .and. ch%rated(i)) sp%aux_rate(i) = t*sp%rate(i)
+         if (t > 0.0_wp .and. ch%rated(i) .and. i /= ch%rest) sp%aux_rate(i) = t*sp%rate(i)
       end do
       if (t > 0.0_wp) sp%aux_rate(n + 1) = t*s_dot
       ! the search's start and its rate: x of the first free element, or the force
@@ -392,9 +407,10 @@ contains
    !! (chain_split's; aux the chain's auxiliary quantities): its stored
    !! energy a function of its deformation and memory; its dissipated energy,
    !! a rate-independent element's what its memory booked, a rate-dependent
-   !! one's the work done on it less its stored energy; what the chain's work
-   !! holds beyond them with the first rate-independent element's (the
-   !! module's note). They add up to the chain's work.
+   !! one's the work done on it less its stored energy - for the last one
+   !! (rest), and where none is rated the first rate-independent one, what
+   !! the chain's work holds beyond every other energy (the module's note).
+   !! They add up to the chain's work.
    pure subroutine chain_energies(ch, sp, aux, stored, dissipated)
       type(series_chain_t), intent(in) :: ch
       type(chain_split_t), intent(in) :: sp
@@ -403,13 +419,16 @@ contains
       integer :: i, first
       do i = 1, ch%n
          stored(i) = element_stored(ch, i, sp%x(i), sp%gate(i))
-         if (ch%rated(i)) then
+         if (i == ch%rest) then
+            dissipated(i) = 0.0_wp
+         else if (ch%rated(i)) then
             dissipated(i) = ch%w_initial(i) + aux(i) - stored(i)
          else
             dissipated(i) = ch%mem(i)%e_dissipated
          end if
       end do
-      first = findloc(ch%rated(1:ch%n), .false., 1)
+      first = ch%rest
+      if (first == 0) first = findloc(ch%rated(1:ch%n), .false., 1)
       if (first == 0) first = 1
       dissipated(first) = dissipated(first) + (ch%w_initial_chain + aux(ch%n + 1) &
                                                - sum(stored(1:ch%n)) - sum(dissipated(1:ch%n)))
@@ -444,10 +463,10 @@ contains
    !> After an ACCEPTED step: every element's memory from its deformation
    !! and rate at the accepted state (figure 18; recurrent_accept books the
    !! energy its law's change dissipates), the gates' work past a hold that
-   !! moved dissipated, and where the chain is slack the rate-dependent
-   !! elements recovered (chain_split's note; the energy they held
-   !! dissipated). changed: the right-hand side is a different function from
-   !! here on (the stepper restarts).
+   !! moved dissipated. (A rate-dependent element recovering while the chain
+   !! is slack moves with the motion, chain_split: nothing jumps here.)
+   !! changed: the right-hand side is a different function from here on (the
+   !! stepper restarts).
    pure subroutine chain_accept(ch, s, s_dot, aux, changed, guess, split)
       type(series_chain_t), intent(inout) :: ch
       real(wp), intent(in) :: s, s_dot
@@ -457,7 +476,7 @@ contains
       !> the chain's split at this state, when the caller has it (chain_split's)
       type(chain_split_t), intent(in), optional :: split
       type(chain_split_t) :: sp
-      real(wp) :: gate_work(max_chain), g_new(max_chain), gap, target, e0, zd, r, zsum
+      real(wp) :: gate_work(max_chain), g_new(max_chain), e0
       logical :: c
       integer :: i, n
       changed = .false.
@@ -488,36 +507,6 @@ contains
          e0 = gate_work(i) - g_new(i)*max(0.0_wp, sp%x(i) - hold(i))
          ch%mem(i)%e_dissipated = ch%mem(i)%e_dissipated + e0
       end do
-      if (ch%n_states == 0 .or. sp%force > 0.0_wp) return
-      ! slack: the rate-dependent elements recover, as far as they can without
-      ! loading the others (the gap before the rest is taken up again)
-      if (ch%absorber > 0) then
-         gap = zero_extent(ch%law(ch%absorber), ch%mem(ch%absorber)) - sp%x(ch%absorber)
-      else
-         r = s
-         zsum = 0.0_wp
-         do i = 1, n
-            if (ch%stateful(i)) then
-               r = r - sp%x(i)
-            else
-               zsum = zsum + zero_extent(ch%law(i), ch%mem(i))
-            end if
-         end do
-         gap = zsum - r
-      end if
-      do i = 1, n
-         if (.not. (ch%stateful(i) .and. gap > 0.0_wp)) cycle
-         ! (a turning point first, where it was loading)
-         call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), -1.0_wp, c)
-         changed = changed .or. c
-         zd = zero_extent(ch%law(i), ch%mem(i))
-         target = max(zd, sp%x(i) - gap)
-         if (.not. target < sp%x(i)) cycle
-         ! (a rate-dependent element: its dissipated energy follows from its work)
-         ch%x_offset(i) = ch%x_offset(i) - (sp%x(i) - target)
-         gap = gap - (sp%x(i) - target)
-         changed = .true.
-      end do
    contains
       !> Where the gate of element k holds it (series_split's x_h).
       pure real(wp) function hold(k)
@@ -527,7 +516,8 @@ contains
    end subroutine chain_accept
 
    !> Whether a rate-dependent element of the chain still carries load on its
-   !! branch (a slack chain's accept then recovers it: chain_accept).
+   !! branch: slack, it still recovers (its state moves, chain_split; a
+   !! slack chain's accept must still follow its memory).
    pure logical function chain_relaxing(ch, aux) result(relaxing)
       type(series_chain_t), intent(in) :: ch
       real(wp), intent(in) :: aux(:)
