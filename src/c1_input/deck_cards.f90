@@ -394,8 +394,11 @@ contains
       t(g_pulserates)%max_cards = 1000000
       t(g_pulserates)%note = 'A column left blank on every card is not available and is integrated from the ' &
          //'accelerations; a column given replaces that integration (linear between the t_m). The inertial ' &
-         //'forces still come from the accelerations, so a column should be their integral: one that differs ' &
-         //'by more than 1 % of its largest value is warned about (the energy balance shows the difference).'
+         //'forces still come from the accelerations, so a column should be their integral; at its knots it is ' &
+         //'compared with the integral of the tables below it, against the largest speed of the tables and ' &
+         //'integrals (for PHIDOT the largest pitch rate): a difference beyond 1 % is warned about with the ' &
+         //'figures, one beyond 10 % (a unit, a column or a digit wrong) is a deck error. The energy balance ' &
+         //'need not show such a difference.'
       call set_fields(t(g_pulserates), [ &
          real_field('T', 's', one, blank_required, zero, zero, 1.0e3_wp, 'time t_m'), &
          real_field('XDOT', 'in/s', one, blank_absent, zero, -1.0e5_wp, 1.0e5_wp, 'horizontal velocity'), &

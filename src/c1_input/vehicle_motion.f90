@@ -122,9 +122,10 @@ contains
    !! should be the integrals of the tables below them; measured data never
    !! quite are, and where they disagree the vehicle's inertial forces (from
    !! the accelerations) and its pitch, rates and anchorage motion (from the
-   !! tables) describe different motions: the energy balance shows the
-   !! difference. Per axis (x, y, pitch), the largest |difference| at the
-   !! knots of the rate table against the integral of the accelerations, and
+   !! tables) describe different motions, which the energy balance need not
+   !! show (vehicle_input checks the tables against these integrals). Per
+   !! axis (x, y, pitch), the largest |difference| at the knots of the rate
+   !! table against the integral of the accelerations, and
    !! at the knots of the position table against the integral of the rates
    !! (tabulated or integrated), with the time of each (0 where not given).
    pure subroutine vehicle_table_differences(v, rate_diff, rate_time, pos_diff, pos_time)
