@@ -130,4 +130,9 @@ if p.returncode != 0 or not os.path.islink(dangling) or not os.path.isfile(drawn
     fail(f"-o a dangling link: status {p.returncode}, the link {'kept' if os.path.islink(dangling) else 'replaced'}")
 if [n for n in os.listdir(work) if n.endswith(".part")]:
     fail("a temporary file was left")
+# -o - writes the drawing on standard output, not a file named "-"
+p = subprocess.run([sys.executable, tool, "--hsri2d", hsri2d, deck, "-o", "-"], capture_output=True, text=True,
+                   cwd=work)
+if p.returncode != 0 or not p.stdout.startswith("<svg") or os.path.exists(os.path.join(work, "-")):
+    fail(f"-o -: status {p.returncode}, stdout {'an SVG' if p.stdout.startswith('<svg') else 'not an SVG'}")
 print(f"{NAME}: PASS ({len(labels)} surfaces, {len(joints)} joints, {len(arcs)} arcs)")
