@@ -19,6 +19,9 @@
 !! Option start = am_start_rk4 takes the three start steps by classic RK4
 !! instead, and the method converges with order 4 (docs/validation.md).
 !! restart begins a new start phase after a change of the right-hand side.
+!! A step of the start phase may be shorter than h (to a located switch,
+!! or back to the grid after one): the start phase then begins again
+!! there, on a grid from that point.
 module adams_moulton
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
@@ -131,18 +134,25 @@ contains
       real(wp), intent(in) :: t_limit
       type(error_t), intent(inout) :: err
       real(wp) :: h, t_new
-      logical :: starting
+      logical :: starting, short
 
       h = this%h
       t_new = this%t0 + real(this%n + 1, wp)*h
-      ! a multistep method cannot shorten a step; the deck check keeps TMAX
-      ! and DTPRINT whole multiples of DT, so this only guards the driver
-      if (t_new > t_limit + 0.5_wp*h) then
+      starting = this%n < start_steps
+      ! a start step is a one-step method's, which may end anywhere: a step
+      ! to a located switch, or back to the grid after one (issue 15); a new
+      ! grid starts there
+      short = starting .and. t_limit < t_new - 1.0e-6_wp*h
+      if (short) then
+         h = t_limit - t
+         t_new = t_limit
+      else if (t_new > t_limit + 0.5_wp*h) then
+         ! a multistep step cannot be shortened; the deck check keeps TMAX
+         ! and DTPRINT whole multiples of DT, so this only guards the driver
          call error_set(err, exit_numerical, 'a fixed step would pass the requested end time (the step to t = ' &
                         //num(t_new)//' s, the end at t = '//num(t_limit)//' s)')
          return
       end if
-      starting = this%n < start_steps
       associate (f0 => this%f, f1 => this%f1, f2 => this%f2, f3 => this%f3, &
                  ynew => this%ynew, yold => this%yold, fnew => this%fnew, yt => this%ytmp)
          if (starting .and. this%start == am_start_rk4) then
@@ -181,6 +191,10 @@ contains
          y = ynew
       end associate
       this%n = this%n + 1
+      if (short) then
+         this%t0 = t_new
+         this%n = 0
+      end if
       t = t_new
       this%stats%steps = this%stats%steps + 1
       this%stats%h_min = min(this%stats%h_min, h)

@@ -55,6 +55,8 @@ module ode_system
       integer(i8) :: corrector_iterations = 0 !< corrector passes (Adams-Moulton, modified Euler)
       integer(i8) :: corrector_at_limit = 0 !< steps whose corrector reached the iteration limit
       integer(i8) :: restarts = 0           !< calls of restart (init is not counted)
+      integer(i8) :: switches_located = 0   !< accepted states placed just past a switch (issue 15)
+      integer(i8) :: switch_evaluations = 0 !< evaluations of the effects' switching functions
       real(wp) :: h_min = huge(1.0_wp), h_max = 0.0_wp   !< accepted step sizes
    end type step_stats_t
 

@@ -21,6 +21,10 @@
 !! Evaluations are counted by the system, not by the effect (which is
 !! read-only while it is evaluated).
 !!
+!! An effect whose force or slope changes discontinuously at a threshold
+!! of the state declares switching functions (n_switch, `switches`), which
+!! the driver locates inside steps (issue 15).
+!!
 !! An effect may declare a proximity guard (proximity_guard): a region
 !! where it is inert for certain, tested before each dispatch (D-C29).
 !!
@@ -61,6 +65,9 @@ module effect_base
       !> a jump of its right-hand side can be located inside a step (locate;
       !! only such are asked)
       logical :: locates = .false.
+      !> switching functions (`switches`): where the force or its slope
+      !! changes discontinuously (issue 15); none by default
+      integer :: n_switch = 0
       logical :: has_energy(n_energy_kinds) = .false.
       !> applies forces from outside the body, which `point_forces` reports
       logical :: external = .false.
@@ -78,6 +85,7 @@ module effect_base
       procedure :: point_forces => effect_point_forces
       procedure :: peaks => effect_peaks
       procedure :: locate => effect_locate
+      procedure :: switches => effect_switches
       procedure :: initial_notes => effect_initial_notes
    end type effect_t
 
@@ -136,6 +144,27 @@ contains
       end associate
       theta = 0.0_wp
    end function effect_locate
+
+   !> The effect's switching functions at state st (n_switch of them, in
+   !! g): each continuous in the state for the memory the effect holds, and
+   !! changing sign exactly where the effect's force, or the force's slope,
+   !! changes discontinuously - a threshold of the state (a contact's
+   !! onset), or where its memory should change (a friction direction, a
+   !! loading branch). Read-only, as add_forces. After every step the driver
+   !! compares their signs with those at the last accepted state and, when
+   !! one changed, takes the step again to the first change, and accepts
+   !! just past it (switch_location, docs/architecture.md "Switches"): the
+   !! memory changes there, and the next step starts on the other side.
+   !! The default effect has none.
+   pure subroutine effect_switches(this, st, extra, aux, g)
+      class(effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: g(:)
+      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux))
+      end associate
+      g = 1.0_wp
+   end subroutine effect_switches
 
    !> What the user should know of the effect at the initial state st (a
    !! warning each, for the listing and standard error): nothing by default.

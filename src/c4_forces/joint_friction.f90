@@ -37,6 +37,7 @@ module joint_friction
    contains
       procedure :: add_forces => friction_add_forces
       procedure :: accept => friction_accept
+      procedure :: switches => friction_switches
       procedure :: energy => friction_energy
       procedure :: outputs => friction_outputs
       procedure :: output_values => friction_output_values
@@ -61,6 +62,7 @@ contains
       e%n_aux = size(e%joints)
       e%has_energy(energy_dissipated) = .true.
       e%has_memory = size(e%joints) > 0
+      e%n_switch = 0   ! (2*size(e%joints): on when the sliding mode lands)
       if (present(zdot0)) e%slip = slips(e, zdot0)
    end function joint_friction_effect
 
@@ -94,6 +96,26 @@ contains
       if (any(slip /= this%slip)) result%restart = .true.
       this%slip = slip
    end subroutine friction_accept
+
+   !> Issue 15: each joint's sliding direction changes where its relative
+   !! rate w crosses +xi or -xi (slip_of): w - xi and w + xi. (With xi = 0
+   !! both are w, which changes sign where the direction reverses.)
+   pure subroutine friction_switches(this, st, extra, aux, g)
+      class(joint_friction_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: g(:)
+      integer :: n, i
+      real(wp) :: w
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      do n = 1, size(this%joints)
+         i = this%joints(n)
+         w = st%zdot(i) - st%zdot(joint_partner(i))
+         g(2*n - 1) = w - this%xi(i)
+         g(2*n) = w + this%xi(i)
+      end do
+   end subroutine friction_switches
 
    pure subroutine friction_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
       class(joint_friction_t), intent(in) :: this

@@ -427,6 +427,10 @@ contains
          call count_line('  rejected steps             ', st%rejected)
          call count_line('  right-hand-side evaluations', st%evaluations)
          call count_line('  restarts after a jump      ', st%restarts)
+         if (st%switch_evaluations > 0) then
+            call count_line('  switches located           ', st%switches_located)
+            call count_line('  switch-function evaluations', st%switch_evaluations)
+         end if
          if (m%options%nint == nint_adams) then
             call count_line('  corrector iterations       ', st%corrector_iterations)
             call count_line('  steps at the iteration limit', st%corrector_at_limit)

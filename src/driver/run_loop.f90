@@ -30,6 +30,7 @@ module run_loop
    use step_bookkeeping, only: step_books_t, record_failure
    use print_schedule, only: print_schedule_t
    use jump_location, only: jump_locator_t
+   use switch_location, only: switch_locator_t
    implicit none
    private
 
@@ -45,6 +46,7 @@ module run_loop
       type(step_books_t) :: books            !< what each accepted step updates
       type(print_schedule_t) :: schedule     !< print times and frames
       type(jump_locator_t) :: locator        !< jumps located inside a step (D-C24b)
+      type(switch_locator_t) :: switches     !< switches located inside a step (issue 15)
       type(sink_list_t) :: sinks
       type(error_t) :: err                   !< a numerical failure (the summary's failure at finish)
       integer :: reason = end_none           !< why the run ended (end_none: it goes on)
@@ -107,6 +109,7 @@ contains
       call this%books%accept(this%sys, this%stepper, this%t, this%y, .false., this%summary, this%sinks, this%reason, &
                              this%err)
       call this%locator%init(this%sys, tr%relocates, size(this%y))
+      call this%switches%init(this%sys, tr%relocates, this%t, this%y, this%stepper%stats)
    end subroutine run_init
 
    !> One accepted step: a step of the integrator, or the state inside it
@@ -115,17 +118,24 @@ contains
    !! the end. Nothing when the run is done.
    subroutine run_advance(this)
       class(run_t), intent(inout) :: this
-      real(wp) :: t_limit
-      logical :: located, at_end, print_now
+      real(wp) :: t_limit, t_step_end
+      logical :: located, switched, at_end, print_now
       integer :: reason
       type(error_t) :: why
       if (this%is_done()) return
       call this%schedule%next_limit(this%t, t_limit)
       if (this%locator%on) call this%locator%mark(this%t, this%y, this%stepper%stats)
+      if (this%switches%on) call this%switches%mark(this%t, this%y, this%stepper%stats)
       call this%stepper%advance(this%sys, this%t, this%y, t_limit, why)
+      t_step_end = this%t
       located = .false.
+      switched = .false.
       if (.not. why%failed() .and. this%locator%on) &
          call this%locator%locate(this%sys, this%stepper, this%t, this%y, located, why)
+      ! a switch inside the step (or inside the part of it a jump left)
+      if (.not. why%failed() .and. this%switches%on) &
+         call this%switches%locate(this%sys, this%stepper, this%t, this%y, switched, why)
+      located = located .or. switched
       if (why%failed()) then
          ! keep the last accepted state in the output, then stop
          if (this%t > this%schedule%t_frame) call output_frame(this)
@@ -138,7 +148,7 @@ contains
          ! print time (unless the run ends there); the step goes on from it
          call this%books%accept(this%sys, this%stepper, this%t, this%y, .false., this%summary, this%sinks, &
                                 reason, this%err)
-         call this%schedule%resume_at(this%locator%t_step_end)
+         call this%schedule%resume_at(t_step_end)
          if (reason /= end_none) call output_frame(this)
       else
          ! whether TMAX is reached here is known before the step's memory
@@ -151,6 +161,8 @@ contains
       end if
       if (this%summary%end_reason == end_energy) reason = end_energy
       this%reason = reason
+      ! the signs the next step is compared with, with the memory just updated
+      if (reason == end_none) call this%switches%accepted(this%sys, this%t, this%y, this%stepper%stats)
    end subroutine run_advance
 
    !> The run has ended: TMAX, an end test (C.7), a numerical failure, or

@@ -21,9 +21,9 @@ module stepper_factory
       !! (adaptive) the run asks for steps that end at the print times
       logical :: fixed_step = .false.
       real(wp) :: h = 0.0_wp
-      !> it can take a step again to a fraction of it (RK4, Dormand-Prince):
-      !! a jump an effect locates inside a step is stepped to (D-C24b);
-      !! Adams-Moulton cannot shorten its step
+      !> it can take a step again to a fraction of it (RK4, Dormand-Prince;
+      !! Adams-Moulton by its starter, after a restart): a jump or switch an
+      !! effect locates inside a step is stepped to (D-C24b, issue 15)
       logical :: relocates = .false.
    end type stepper_traits_t
 
@@ -64,7 +64,7 @@ contains
       type(stepper_traits_t) :: tr
       select type (s => stepper)
       type is (am_stepper_t)
-         tr = stepper_traits_t(fixed_step=.true., h=s%h, relocates=.false.)
+         tr = stepper_traits_t(fixed_step=.true., h=s%h, relocates=.true.)
       type is (rk4_stepper_t)
          tr = stepper_traits_t(fixed_step=.true., h=s%h, relocates=.true.)
       type is (dopri_stepper_t)
