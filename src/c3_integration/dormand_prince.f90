@@ -47,6 +47,7 @@ module dormand_prince
       procedure :: init => dopri_init
       procedure :: advance => dopri_advance
       procedure :: restart => dopri_restart
+      procedure :: retake => dopri_retake
    end type dopri_stepper_t
 
 contains
@@ -80,6 +81,19 @@ contains
       this%stats%restarts = this%stats%restarts + 1
       call dopri_begin(this, sys, t, y, err)
    end subroutine dopri_restart
+
+   !> See stepper_t: the step to t_to at once (its part of a step the
+   !! controller accepted), not the controller's next step size.
+   subroutine dopri_retake(this, sys, t, y, t_to, err)
+      class(dopri_stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(inout) :: t
+      real(wp), intent(inout), contiguous :: y(:)
+      real(wp), intent(in) :: t_to
+      type(error_t), intent(inout) :: err
+      this%h = max(this%h, t_to - t)
+      call this%advance(sys, t, y, t_to, err)
+   end subroutine dopri_retake
 
    !> Start (or start again) from (t, y): the first stage f(t, y) and a
    !! controller with no past.

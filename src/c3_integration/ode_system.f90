@@ -56,6 +56,9 @@ module ode_system
       integer(i8) :: corrector_at_limit = 0 !< steps whose corrector reached the iteration limit
       integer(i8) :: restarts = 0           !< calls of restart (init is not counted)
       integer(i8) :: switches_located = 0   !< accepted states placed just past a switch (issue 15)
+      integer(i8) :: retaken = 0            !< steps taken again to locate a switch (not rejected ones)
+      !> switches found at once after the last, taken at the step's end (chatter)
+      integer(i8) :: switches_unlocated = 0
       integer(i8) :: switch_evaluations = 0 !< evaluations of the effects' switching functions
       real(wp) :: h_min = huge(1.0_wp), h_max = 0.0_wp   !< accepted step sizes
    end type step_stats_t
@@ -75,6 +78,7 @@ module ode_system
       procedure(init_interface), deferred :: init
       procedure(advance_interface), deferred :: advance
       procedure(restart_interface), deferred :: restart
+      procedure :: retake => stepper_retake
       procedure, non_overridable :: evaluate => stepper_evaluate
       procedure, non_overridable :: restartable => stepper_restartable
       procedure, non_overridable :: give_up_rhs => stepper_give_up_rhs
@@ -127,6 +131,20 @@ module ode_system
    end interface
 
 contains
+
+   !> One step from the accepted point (t, y) (after init or restart) that
+   !! ends at t_to exactly, inside a step already taken and accepted (to
+   !! locate a switch in it, issue 15). By default advance with t_to as
+   !! its limit: a fixed step at least as long ends there.
+   subroutine stepper_retake(this, sys, t, y, t_to, err)
+      class(stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(inout) :: t
+      real(wp), intent(inout), contiguous :: y(:)
+      real(wp), intent(in) :: t_to
+      type(error_t), intent(inout) :: err
+      call this%advance(sys, t, y, t_to, err)
+   end subroutine stepper_retake
 
    !> f(t, y) for a step of this stepper, counted in its statistics: true
    !! when the system could evaluate it. A failure is an outcome here (the

@@ -68,6 +68,9 @@ module effect_base
       !> switching functions (`switches`): where the force or its slope
       !! changes discontinuously (issue 15); none by default
       integer :: n_switch = 0
+      !> sliding constraints it may hold (`slides`, `release`): Filippov's
+      !! sliding on a surface where its force is discontinuous (issue 15)
+      integer :: n_slide = 0
       logical :: has_energy(n_energy_kinds) = .false.
       !> applies forces from outside the body, which `point_forces` reports
       logical :: external = .false.
@@ -86,6 +89,8 @@ module effect_base
       procedure :: peaks => effect_peaks
       procedure :: locate => effect_locate
       procedure :: switches => effect_switches
+      procedure :: slides => effect_slides
+      procedure :: release => effect_release
       procedure :: initial_notes => effect_initial_notes
    end type effect_t
 
@@ -165,6 +170,47 @@ contains
       end associate
       g = 1.0_wp
    end subroutine effect_switches
+
+   !> The effect's sliding constraints at st (n_slide of them; issue 15).
+   !! Where a force that is discontinuous across a surface of the state
+   !! (friction's +-xi) points into the surface from both sides, the
+   !! motion slides on it (Filippov): a generalized force lambda*d, d a
+   !! direction in z, keeps the rate d.z' constant (d.z'' = 0; d does not
+   !! depend on the state where this is used), with lambda in [lo, hi],
+   !! the range the law's force spans across the surface. The effect holds
+   !! whether each is active (memory: entered in its accept, left by
+   !! `release`) and adds no force of its own for an active one; the
+   !! occupant's solve finds lambda (c5, sliding_constraints). The power
+   !! lambda*d.z' goes to the effect's auxiliary quantity aux_index (its
+   !! work; 0: none), with the sign the effect's own power has there
+   !! (dissipated = -lambda*d.z'). None by default.
+   pure subroutine effect_slides(this, st, extra, aux, active, d, lo, hi, aux_index)
+      class(effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      logical, intent(out) :: active(:)
+      real(wp), intent(out) :: d(:, :)          !< (n_dof, n_slide)
+      real(wp), intent(out) :: lo(:), hi(:)
+      integer, intent(out) :: aux_index(:)
+      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux))
+      end associate
+      active = .false.
+      d = 0.0_wp
+      lo = 0.0_wp
+      hi = 0.0_wp
+      aux_index = 0
+   end subroutine effect_slides
+
+   !> Sliding constraint k leaves the surface: its multiplier reached hi
+   !! (at_upper) or lo, and the law's force on that side takes over
+   !! (memory: called on an accepted state, issue 15). Nothing by default.
+   subroutine effect_release(this, k, at_upper)
+      class(effect_t), intent(inout) :: this
+      integer, intent(in) :: k
+      logical, intent(in) :: at_upper
+      associate (unused => this%name, u2 => k, u3 => at_upper)
+      end associate
+   end subroutine effect_release
 
    !> What the user should know of the effect at the initial state st (a
    !! warning each, for the listing and standard error): nothing by default.

@@ -34,10 +34,15 @@ module joint_friction
       !> each joint's sliding direction, sgn(alpha-dot_i - alpha-dot_m) beyond
       !! the dead band, else 0 (memory: decided in accept, D-4a)
       integer :: slip(n_joint) = 0
+      !> each joint held on an edge of its dead band (issue 15, D-4b): 0
+      !! not, +1 at w = +xi, -1 at w = -xi (both at w = 0 when xi = 0)
+      integer :: edge(n_joint) = 0
    contains
       procedure :: add_forces => friction_add_forces
       procedure :: accept => friction_accept
       procedure :: switches => friction_switches
+      procedure :: slides => friction_slides
+      procedure :: release => friction_release
       procedure :: energy => friction_energy
       procedure :: outputs => friction_outputs
       procedure :: output_values => friction_output_values
@@ -62,7 +67,8 @@ contains
       e%n_aux = size(e%joints)
       e%has_energy(energy_dissipated) = .true.
       e%has_memory = size(e%joints) > 0
-      e%n_switch = 0   ! (2*size(e%joints): on when the sliding mode lands)
+      e%n_switch = 2*size(e%joints)
+      e%n_slide = size(e%joints)
       if (present(zdot0)) e%slip = slips(e, zdot0)
    end function joint_friction_effect
 
@@ -90,12 +96,91 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
       integer :: slip(n_joint)
+      integer :: n, i, edge
+      real(wp) :: w
       associate (u1 => size(extra) + size(aux))
       end associate
       slip = slips(this, st%zdot)
-      if (any(slip /= this%slip)) result%restart = .true.
-      this%slip = slip
+      do n = 1, size(this%joints)
+         i = this%joints(n)
+         if (this%edge(i) /= 0 .or. slip(i) == this%slip(i)) cycle
+         result%restart = .true.
+         w = st%zdot(i) - st%zdot(joint_partner(i))
+         edge = edge_at(this%xi(i), w)
+         if (edge /= 0) then
+            ! on an edge of the dead band (a located switch): held there,
+            ! the torque the motion needs found by the solve; the release
+            ! decides the side it leaves by (D-4b)
+            this%edge(i) = edge
+            this%slip(i) = 0
+         else
+            this%slip(i) = slip(i)      ! (a switch not located: the direction at the accepted state)
+         end if
+      end do
    end subroutine friction_accept
+
+   !> The edge of the dead band the relative rate w sits on, to within a
+   !! located switch's tolerance: +1 at +xi, -1 at -xi, 0 at neither.
+   pure integer function edge_at(xi, w) result(edge)
+      real(wp), intent(in) :: xi, w
+      real(wp) :: tol
+      tol = 1.0e-6_wp*max(xi, 1.0_wp)       ! (rad/s: a located switch leaves w within ~1e-10)
+      edge = 0
+      if (abs(w - xi) <= tol) then
+         edge = 1
+      else if (abs(w + xi) <= tol) then
+         edge = -1
+      end if
+   end function edge_at
+
+   !> D-4b (issue 15): a joint held on an edge of its dead band slides
+   !! there, its relative rate constant; the torque lies between the
+   !! law's on the two sides: [-C', 0] at +xi, [0, C'] at -xi, [-C', C']
+   !! at xi = 0 (Coulomb's sticking). Its power is dissipated (aux n).
+   pure subroutine friction_slides(this, st, extra, aux, active, d, lo, hi, aux_index)
+      class(joint_friction_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      logical, intent(out) :: active(:)
+      real(wp), intent(out) :: d(:, :)
+      real(wp), intent(out) :: lo(:), hi(:)
+      integer, intent(out) :: aux_index(:)
+      integer :: n, i
+      associate (u1 => size(extra) + size(aux), u2 => st%t)
+      end associate
+      do n = 1, size(this%joints)
+         i = this%joints(n)
+         active(n) = this%edge(i) /= 0
+         d(:, n) = 0.0_wp
+         d(i, n) = 1.0_wp
+         d(joint_partner(i), n) = -1.0_wp
+         aux_index(n) = n
+         lo(n) = -this%c_friction(i)
+         hi(n) = this%c_friction(i)
+         if (this%xi(i) > 0.0_wp) then
+            if (this%edge(i) > 0) hi(n) = 0.0_wp
+            if (this%edge(i) < 0) lo(n) = 0.0_wp
+         end if
+      end do
+   end subroutine friction_slides
+
+   !> Joint n leaves its edge: the torque the motion needed reached the
+   !! law's on one side (D-4b): -C' (at_upper false) is sliding forward,
+   !! +C' sliding backward, 0 the dead band.
+   subroutine friction_release(this, k, at_upper)
+      class(joint_friction_t), intent(inout) :: this
+      integer, intent(in) :: k
+      logical, intent(in) :: at_upper
+      integer :: i
+      i = this%joints(k)
+      if (this%xi(i) > 0.0_wp) then
+         if (this%edge(i) > 0) this%slip(i) = merge(0, 1, at_upper)
+         if (this%edge(i) < 0) this%slip(i) = merge(-1, 0, at_upper)
+      else
+         this%slip(i) = merge(-1, 1, at_upper)
+      end if
+      this%edge(i) = 0
+   end subroutine friction_release
 
    !> Issue 15: each joint's sliding direction changes where its relative
    !! rate w crosses +xi or -xi (slip_of): w - xi and w + xi. (With xi = 0
@@ -114,6 +199,9 @@ contains
          w = st%zdot(i) - st%zdot(joint_partner(i))
          g(2*n - 1) = w - this%xi(i)
          g(2*n) = w + this%xi(i)
+         ! held on an edge: it leaves by its torque's range (the occupant's
+         ! sliding switches), not by w, which stays on the edge
+         if (this%edge(i) /= 0) g(2*n - 1:2*n) = 1.0_wp
       end do
    end subroutine friction_switches
 
@@ -131,7 +219,8 @@ contains
          i = this%joints(n)
          m = joint_partner(i)
          w = st%zdot(i) - st%zdot(m)
-         ! the direction held since the last accepted step (D-4a)
+         ! the direction held since the last accepted step (D-4a); a joint
+         ! held on an edge has slip 0 here, its torque the solve's (D-4b)
          tau = -this%c_friction(i)*real(this%slip(i), wp)
          b(i) = b(i) + tau
          b(m) = b(m) - tau

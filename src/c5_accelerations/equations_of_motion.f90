@@ -21,13 +21,13 @@ module equations_of_motion
    use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init
    use body_state, only: body_state_t
    use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_initial_y, &
-      occupant_add_effect, occupant_vehicle
+      occupant_add_effect, occupant_vehicle, occupant_settle
    use effect_base, only: effect_t
    implicit none
    private
 
    public :: crash_system_t, system_build, system_add_occupant, system_add_effect, system_initial_y
-   public :: system_body_state
+   public :: system_body_state, system_settle
    public :: max_angle, max_position, max_rate, max_speed
 
    !> rhs's outcomes (its status) other than 0, explained by failure_text
@@ -138,6 +138,29 @@ contains
       call occupant_state(sys%occupants(o), t, y, st)
       call occupant_vehicle(sys%occupants(o), sys%vm, t, st)
    end function system_body_state
+
+   !> On the accepted state (t, y), after the effects' accept: each
+   !! occupant's sliding constraints whose multipliers left their ranges
+   !! leave their surfaces (occupant_settle, issue 15); changed: the
+   !! right-hand side jumped (the stepper must restart).
+   subroutine system_settle(sys, t, y, changed, rates, counts)
+      type(crash_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      logical, intent(out) :: changed
+      real(wp), intent(inout), contiguous :: rates(:)    !< workspace: y's size
+      integer(i8), intent(inout) :: counts(:)            !< workspace: the effects of any occupant
+      type(body_state_t) :: st
+      logical :: changed_o
+      integer :: o
+      changed = .false.
+      do o = 1, size(sys%occupants)
+         if (sys%occupants(o)%n_slide == 0) cycle
+         st = system_body_state(sys, o, t, y)
+         call occupant_settle(sys%occupants(o), st, y, changed_o, rates, counts)
+         changed = changed .or. changed_o
+      end do
+   end subroutine system_settle
 
    subroutine system_rhs(this, t, y, dydt, status)
       class(crash_system_t), intent(inout) :: this

@@ -16,6 +16,7 @@ module occupant
    use body_kinematics, only: joint_positions
    use vehicle_motion, only: vehicle_motion_t, vehicle_state_at
    use state_layout, only: state_layout_t
+   use sliding_constraints, only: sliding_multipliers, max_slides
    use body_matrix, only: body_accelerations, body_structure_matches, matrix_structured => solver_structured, &
       matrix_dense => solver_dense
    implicit none
@@ -24,6 +25,7 @@ module occupant
    public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces, occupant_frame
    public :: occupant_vehicle
    public :: occupant_initial_y, occupant_add_effect, occupant_point_forces
+   public :: occupant_slide_switches, occupant_settle, occupant_slide_forces
 
    type :: occupant_t
       character(len=16) :: label = 'occupant'
@@ -34,6 +36,10 @@ module occupant
       !! integrating quantities of their own), and those with memory (whose
       !! accept is called after each accepted step)
       integer, allocatable :: evaluated(:), remembering(:)
+      !> the effects that may hold sliding constraints (issue 15), and how
+      !! many constraints they may hold in all
+      integer, allocatable :: sliding(:)
+      integer :: n_slide = 0
       !> how A z'' = b is solved (C.5): the L D L**T written for figure 27's
       !! structure, or LAPACK's dense one (*NUMERICS SOLVER, and always for a
       !! body coupled otherwise)
@@ -51,6 +57,18 @@ module occupant
       type(end_tests_section_t) :: end_tests
       type(injury_section_t) :: injury
    end type occupant_t
+
+   !> Active sliding constraints, packed (gather_slides): direction d,
+   !! range [lo, hi], the y index of the work their power goes to (0:
+   !! none), their effect and its slot, their place among all the
+   !! occupant's slots; the multipliers and A^-1 d once solved.
+   type :: slide_set_t
+      integer :: n = 0
+      real(wp) :: d(n_dof, max_slides) = 0.0_wp, y_cols(n_dof, max_slides) = 0.0_wp
+      real(wp) :: lo(max_slides) = 0.0_wp, hi(max_slides) = 0.0_wp
+      real(wp) :: lam(max_slides) = 0.0_wp, lam_clipped(max_slides) = 0.0_wp
+      integer :: aux_at(max_slides) = 0, owner(max_slides) = 0, slot(max_slides) = 0, pos(max_slides) = 0
+   end type slide_set_t
 
 contains
 
@@ -76,7 +94,7 @@ contains
       n_eff = size(occ%effects)
       call layout%reserve(label//': z', n_dof, occ%z_offset)
       call layout%reserve(label//': z''', n_dof, occ%zdot_offset)
-      allocate (occ%extra_offset(n_eff), occ%aux_offset(n_eff), occ%evaluated(0), occ%remembering(0))
+      allocate (occ%extra_offset(n_eff), occ%aux_offset(n_eff), occ%evaluated(0), occ%remembering(0), occ%sliding(0))
       do k = 1, n_eff
          call place_effect(occ, k, layout)
       end do
@@ -100,6 +118,11 @@ contains
          if (.not. allocated(occ%remembering)) allocate (occ%remembering(0))
          if (e%acts .or. e%n_aux > 0 .or. e%n_extra > 0) occ%evaluated = [(occ%evaluated(j), j=1, size(occ%evaluated)), k]
          if (e%has_memory) occ%remembering = [(occ%remembering(j), j=1, size(occ%remembering)), k]
+         if (.not. allocated(occ%sliding)) allocate (occ%sliding(0))
+         if (e%n_slide > 0) then
+            occ%sliding = [(occ%sliding(j), j=1, size(occ%sliding)), k]
+            occ%n_slide = occ%n_slide + e%n_slide
+         end if
       end associate
    end subroutine place_effect
 
@@ -270,7 +293,186 @@ contains
       real(wp) :: b(n_dof), zdd(n_dof)
       call occupant_forces(occ, st, y, b, dydt, counts)
       call body_accelerations(occ%bc, st%c, st%s, b, zdd, info, occ%solver)
+      if (info == 0 .and. occ%n_slide > 0) call slide(occ, st, y, zdd, dydt, info)
       dydt(occ%z_offset + 1:occ%z_offset + n_dof) = st%zdot
       dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = zdd
    end subroutine occupant_rhs
+
+   !> The active sliding constraints (issue 15) held at zdd: their
+   !! multipliers, each clipped to its range, added to zdd, and the power
+   !! each dissipates to its effect's work (dydt).
+   pure subroutine slide(occ, st, y, zdd, dydt, info)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(inout) :: zdd(n_dof)
+      real(wp), intent(inout), contiguous :: dydt(:)
+      integer, intent(out) :: info
+      type(slide_set_t) :: set
+      integer :: c
+      info = 0
+      call gather_slides(occ, st, y, set)
+      if (set%n == 0) return
+      call set_multipliers(occ, st, zdd, set, info)
+      if (info /= 0) return
+      do c = 1, set%n
+         zdd = zdd + set%y_cols(:, c)*set%lam_clipped(c)
+         if (set%aux_at(c) > 0) dydt(set%aux_at(c)) = dydt(set%aux_at(c)) &
+                                                     - set%lam_clipped(c)*dot_product(set%d(:, c), st%zdot)
+      end do
+   end subroutine slide
+
+   !> The switching functions of the occupant's sliding constraints at
+   !! st (issue 15), two per constraint its effects may hold, in the order
+   !! of the effects and their constraints: the multiplier minus lo and hi
+   !! minus the multiplier for an active one, 1 for one not active. They
+   !! cost the forces and the solve, only while one is active.
+   pure subroutine occupant_slide_switches(occ, st, y, g, rates, counts)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out) :: g(:)
+      real(wp), intent(inout), contiguous :: rates(:)    !< workspace: y's size
+      integer(i8), intent(inout) :: counts(:)            !< workspace: at least occ's effects
+      type(slide_set_t) :: set
+      real(wp) :: zdd(n_dof)
+      integer :: c, info
+      g = 1.0_wp
+      call gather_slides(occ, st, y, set)
+      if (set%n == 0) return
+      call unconstrained(occ, st, y, zdd, info, rates, counts)
+      if (info == 0) call set_multipliers(occ, st, zdd, set, info)
+      if (info /= 0) return
+      do c = 1, set%n
+         g(2*set%pos(c) - 1) = set%lam(c) - set%lo(c)
+         g(2*set%pos(c)) = set%hi(c) - set%lam(c)
+      end do
+   end subroutine occupant_slide_switches
+
+   !> On an accepted state (memory): every active sliding constraint whose
+   !! multiplier lies outside its range leaves its surface (the effect's
+   !! release), the farthest first, the rest solved again without it;
+   !! changed: one did (the right-hand side jumped there).
+   subroutine occupant_settle(occ, st, y, changed, rates, counts)
+      type(occupant_t), intent(inout) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in), contiguous :: y(:)
+      logical, intent(out) :: changed
+      real(wp), intent(inout), contiguous :: rates(:)    !< workspace: y's size
+      integer(i8), intent(inout) :: counts(:)            !< workspace: at least occ's effects
+      type(slide_set_t) :: set
+      real(wp) :: zdd(n_dof), v, v_max
+      integer :: c, c_max, round, info
+      changed = .false.
+      do round = 1, occ%n_slide
+         call gather_slides(occ, st, y, set)
+         if (set%n == 0) return
+         call unconstrained(occ, st, y, zdd, info, rates, counts)
+         if (info == 0) call set_multipliers(occ, st, zdd, set, info)
+         if (info /= 0) return
+         v_max = 0.0_wp
+         c_max = 0
+         do c = 1, set%n
+            v = max(set%lo(c) - set%lam(c), set%lam(c) - set%hi(c))/max(set%hi(c) - set%lo(c), tiny(1.0_wp))
+            if (v > v_max) then
+               v_max = v
+               c_max = c
+            end if
+         end do
+         if (c_max == 0) return
+         call occ%effects(set%owner(c_max))%e%release(set%slot(c_max), set%lam(c_max) > set%hi(c_max))
+         changed = .true.
+      end do
+   end subroutine occupant_settle
+
+   !> Effect k's generalized force from its active sliding constraints at
+   !! st, added to b (its recorded generalized force: the multipliers as
+   !! the motion has them, clipped).
+   pure subroutine occupant_slide_forces(occ, st, y, k, b)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in), contiguous :: y(:)
+      integer, intent(in) :: k
+      real(wp), intent(inout) :: b(n_dof)
+      type(slide_set_t) :: set
+      real(wp) :: zdd(n_dof)
+      real(wp), allocatable :: rates(:)
+      integer(i8), allocatable :: counts(:)
+      integer :: c, info
+      if (occ%effects(k)%e%n_slide == 0) return
+      call gather_slides(occ, st, y, set)
+      if (.not. any(set%owner(1:set%n) == k)) return
+      allocate (rates(size(y)), counts(size(occ%effects)))     ! (at a print time only)
+      call unconstrained(occ, st, y, zdd, info, rates, counts)
+      if (info == 0) call set_multipliers(occ, st, zdd, set, info)
+      if (info /= 0) return
+      do c = 1, set%n
+         if (set%owner(c) == k) b = b + set%d(:, c)*set%lam_clipped(c)
+      end do
+   end subroutine occupant_slide_forces
+
+   !> z''_0 = A^-1 b at st, b all the effects' forces (no constraint).
+   pure subroutine unconstrained(occ, st, y, zdd, info, rates, counts)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out) :: zdd(n_dof)
+      integer, intent(out) :: info
+      real(wp), intent(inout), contiguous :: rates(:)    !< workspace (the effects' rates, not kept)
+      integer(i8), intent(inout) :: counts(:)            !< workspace (not counted as evaluations)
+      real(wp) :: b(n_dof)
+      call occupant_forces(occ, st, y, b, rates, counts(1:size(occ%effects)))
+      call body_accelerations(occ%bc, st%c, st%s, b, zdd, info, occ%solver)
+   end subroutine unconstrained
+
+   !> The active sliding constraints of occ's effects at st, packed.
+   pure subroutine gather_slides(occ, st, y, set)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in), contiguous :: y(:)
+      type(slide_set_t), intent(out) :: set
+      logical :: act(max_slides)
+      real(wp) :: dk(n_dof, max_slides), lk(max_slides), hk(max_slides)
+      integer :: ak(max_slides), q, k, j, ns, xo, ao, base
+      set%n = 0
+      base = 0
+      do q = 1, size(occ%sliding)
+         k = occ%sliding(q)
+         xo = occ%extra_offset(k)
+         ao = occ%aux_offset(k)
+         associate (e => occ%effects(k)%e)
+            ns = min(e%n_slide, max_slides)
+            call e%slides(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), act(1:ns), dk(:, 1:ns), &
+                          lk(1:ns), hk(1:ns), ak(1:ns))
+            do j = 1, ns
+               if (.not. act(j) .or. set%n == max_slides) cycle
+               set%n = set%n + 1
+               set%d(:, set%n) = dk(:, j)
+               set%lo(set%n) = lk(j)
+               set%hi(set%n) = hk(j)
+               set%aux_at(set%n) = 0
+               if (ak(j) > 0) set%aux_at(set%n) = ao + ak(j)
+               set%owner(set%n) = k
+               set%slot(set%n) = j
+               set%pos(set%n) = base + j
+            end do
+            base = base + e%n_slide
+         end associate
+      end do
+   end subroutine gather_slides
+
+   !> The multipliers of the set (lam, and lam_clipped to their ranges)
+   !! and A^-1 d of each, given z''_0.
+   pure subroutine set_multipliers(occ, st, zdd0, set, info)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: zdd0(n_dof)
+      type(slide_set_t), intent(inout) :: set
+      integer, intent(out) :: info
+      integer :: n
+      n = set%n
+      call sliding_multipliers(occ%bc, st%c, st%s, occ%solver, zdd0, set%d(:, 1:n), set%lam(1:n), &
+                               set%y_cols(:, 1:n), info)
+      set%lam_clipped(1:n) = max(set%lo(1:n), min(set%hi(1:n), set%lam(1:n)))
+   end subroutine set_multipliers
 end module occupant

@@ -10,7 +10,7 @@ module output_producers
    use body_state, only: body_state_t
    use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    use point_forces, only: point_force_list_t
-   use occupant, only: occupant_t, occupant_point_forces
+   use occupant, only: occupant_t, occupant_point_forces, occupant_slide_forces
    use joint_reactions, only: joint_reaction_forces, bone_components
    use joint_coupling, only: joint_columns
    use equations_of_motion, only: crash_system_t, system_body_state
@@ -187,7 +187,8 @@ contains
       type(crash_system_t), intent(in) :: sys
       type(vehicle_section_t), intent(in) :: vehicle
       type(output_registry_t), intent(in) :: reg
-      real(wp), intent(in) :: t, y(:), f(:), total0(:)
+      real(wp), intent(in) :: t, f(:), total0(:)
+      real(wp), intent(in), contiguous :: y(:)
       type(output_frame_t), intent(inout) :: frame
       type(energy_balance_t), intent(out) :: balance(:)
       type(body_state_t), allocatable :: st(:)
@@ -246,6 +247,8 @@ contains
                         b = 0.0_wp
                         call ef%add_forces(st(o), y(xo + 1:xo + 2*ef%n_extra), y(ao + 1:ao + ef%n_aux), b, &
                                            extra_rate(1:2*ef%n_extra), aux_rate(1:ef%n_aux))
+                        ! and its sliding constraints' forces (issue 15)
+                        call occupant_slide_forces(occ, st(o), y, s%producer, b)
                         v = b
                      else
                         call ef%output_values(s%item, st(o), y(xo + 1:xo + 2*ef%n_extra), &

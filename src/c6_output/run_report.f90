@@ -429,6 +429,8 @@ contains
          call count_line('  restarts after a jump      ', st%restarts)
          if (st%switch_evaluations > 0) then
             call count_line('  switches located           ', st%switches_located)
+            call count_line('  steps taken again to them  ', st%retaken)
+            call count_line('  switches not located (chatter)', st%switches_unlocated)
             call count_line('  switch-function evaluations', st%switch_evaluations)
          end if
          if (m%options%nint == nint_adams) then

@@ -114,7 +114,8 @@ contains
    subroutine schedule_make_frame(this, sys, t, y, f)
       class(print_schedule_t), intent(inout) :: this
       type(crash_system_t), intent(in) :: sys
-      real(wp), intent(in) :: t, y(:), f(:)
+      real(wp), intent(in) :: t, f(:)
+      real(wp), intent(in), contiguous :: y(:)
       call frame_fill(sys, this%vehicle, this%reg, t, y, f, this%total0, this%frame, this%balance)
       this%t_frame = t
    end subroutine schedule_make_frame

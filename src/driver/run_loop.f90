@@ -125,7 +125,7 @@ contains
       if (this%is_done()) return
       call this%schedule%next_limit(this%t, t_limit)
       if (this%locator%on) call this%locator%mark(this%t, this%y, this%stepper%stats)
-      if (this%switches%on) call this%switches%mark(this%t, this%y, this%stepper%stats)
+      if (this%switches%on) call this%switches%mark(this%t, this%y, this%stepper%f, this%stepper%stats)
       call this%stepper%advance(this%sys, this%t, this%y, t_limit, why)
       t_step_end = this%t
       located = .false.

@@ -7,12 +7,12 @@
 !! (its NEND, rest limits, Table 5 limits). Nothing is allocated here at a
 !! step: the room it needs is reserved by books_init.
 module step_bookkeeping
-   use kinds, only: wp, g_std
+   use kinds, only: wp, i8, g_std
    use acceleration_criteria, only: criteria_new
    use error_handling, only: error_t, error_set, error_prefix, exit_numerical
    use strings, only: num
    use model, only: n_dof, n_seg, n_joint, n_injury, joint_partner, nend_rest, numerics_section_t, vehicle_section_t
-   use equations_of_motion, only: crash_system_t, system_body_state
+   use equations_of_motion, only: crash_system_t, system_body_state, system_settle
    use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
    use ode_system, only: stepper_t, evaluate_outside_step
    use effect_base, only: body_state_t
@@ -41,6 +41,9 @@ module step_bookkeeping
       !> the point forces for Table 5's criteria, reused from step to step
       type(point_force_list_t) :: forces
       !> the derivative at the accepted point, kept for the frame of a restart that fails
+      !> workspace of the sliding constraints' settling (system_settle)
+      real(wp), allocatable :: rates(:)
+      integer(i8), allocatable :: counts(:)
       real(wp), allocatable :: f_accepted(:)
       !> an occupant's state at the accepted point (kept from step to step;
       !! its vehicle state only when something reads it)
@@ -124,7 +127,7 @@ contains
       type(error_t) :: why
       real(wp) :: a_head, a_chest, delta
       integer :: k, q, j, o, xo, ao, reason_o
-      logical :: restart, undesired, at_rest, any_rest, all_rested
+      logical :: restart, undesired, at_rest, any_rest, all_rested, settled
 
       restart = .false.
       any_rest = .false.
@@ -182,6 +185,11 @@ contains
          end associate
       end do
       if (reason == end_none .and. any_rest .and. all_rested) reason = end_rest
+      ! sliding constraints that cannot hold leave their surfaces here,
+      ! after the effects' own memory changed (issue 15)
+      if (.not. allocated(this%rates)) allocate (this%rates(size(y)), this%counts(size(sys%counts, 1)))
+      call system_settle(sys, t, y, settled, this%rates, this%counts)
+      restart = restart .or. settled
       if (restart) then
          ! the derivative at the accepted point is kept, for the frame of a
          ! restart that fails

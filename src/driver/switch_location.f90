@@ -19,11 +19,12 @@
 !! The locator changes no effect's memory: nothing was accepted at the
 !! states it passes over.
 module switch_location
-   use kinds, only: wp
+   use kinds, only: wp, i8
    use error_handling, only: error_t
    use equations_of_motion, only: crash_system_t, system_body_state
    use ode_system, only: stepper_t, step_stats_t
    use effect_base, only: body_state_t
+   use occupant, only: occupant_slide_switches
    implicit none
    private
 
@@ -35,7 +36,15 @@ module switch_location
    integer, parameter :: max_tries = 100
    !> The bracket's width, relative to the step, at which a switch is
    !! located: far below the step's own error in time.
-   real(wp), parameter :: relative_tol = 1.0e-10_wp
+   real(wp), parameter :: relative_tol = 1.0e-8_wp
+   !> A switching function within this fraction of its value at the step's
+   !! end sat on its root at the step's start (a switch located there
+   !! leaves it within about relative_tol of the step's change).
+   real(wp), parameter :: at_root = 1.0e-8_wp
+   !> A switch located within this fraction of the step from its start is
+   !! taken at the step's end instead (chatter, issue 15): a law that
+   !! reverses at once would otherwise be located ever closer.
+   real(wp), parameter :: immediate = 1.0e-6_wp
 
    type :: switch_locator_t
       !> some effect of the scene has switching functions and the stepper
@@ -43,11 +52,17 @@ module switch_location
       logical :: on = .false.
       integer :: n_g = 0                   !< switching functions of the scene
       real(wp), allocatable :: g_prev(:)   !< at the last accepted state, with its memory
-      real(wp), allocatable :: g_lo(:), g_hi(:), g_try(:)
+      real(wp), allocatable :: g_lo(:), g_hi(:), g_try(:), g_lo_try(:)
+      logical, allocatable :: live(:)       !< the functions that may cross in this step
       real(wp) :: t_prev = 0.0_wp          !< the last accepted state before the step
       real(wp), allocatable :: y_prev(:)
       type(step_stats_t) :: stats_prev     !< the stepper's statistics then
       real(wp), allocatable :: y_hi(:)     !< the earliest state found past a switch
+      real(wp), allocatable :: y_end(:)    !< the step as first taken
+      real(wp), allocatable :: f_prev(:), f_end(:)   !< y' at the step's ends (Hermite's interpolant)
+      real(wp), allocatable :: y_work(:)   !< a state of the interpolant
+      real(wp), allocatable :: rates(:)    !< workspace of the sliding switches (occupant_slide_switches)
+      integer(i8), allocatable :: counts(:)
    contains
       procedure :: init => locator_init
       procedure :: accepted => locator_accepted
@@ -64,7 +79,8 @@ contains
       class(switch_locator_t), intent(out) :: this
       type(crash_system_t), intent(in) :: sys
       logical, intent(in) :: relocates
-      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
       type(step_stats_t), intent(inout) :: stats
       integer :: o, k, n
       n = 0
@@ -72,12 +88,15 @@ contains
          do k = 1, size(sys%occupants(o)%effects)
             n = n + sys%occupants(o)%effects(k)%e%n_switch
          end do
+         n = n + 2*sys%occupants(o)%n_slide     ! (each sliding constraint's range, occupant_slide_switches)
       end do
       this%n_g = n
       this%on = relocates .and. n > 0
       if (.not. this%on) return
-      allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n))
-      allocate (this%y_prev(size(y)), this%y_hi(size(y)))
+      allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%g_lo_try(n), this%live(n))
+      allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)))
+      allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)))
+      allocate (this%counts(size(sys%counts, 1)))
       call this%accepted(sys, t, y, stats)
    end subroutine locator_init
 
@@ -86,18 +105,20 @@ contains
    subroutine locator_accepted(this, sys, t, y, stats)
       class(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(in) :: sys
-      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
       type(step_stats_t), intent(inout) :: stats
       if (.not. this%on) return
-      call switch_values(sys, t, y, this%g_prev, stats)
+      call switch_values(sys, t, y, this%g_prev, stats, this%rates, this%counts)
    end subroutine locator_accepted
 
-   !> The accepted state (t, y) a step is about to start from.
-   subroutine locator_mark(this, t, y, stats)
+   !> The accepted state (t, y) a step is about to start from, y' = f there.
+   subroutine locator_mark(this, t, y, f, stats)
       class(switch_locator_t), intent(inout) :: this
-      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(in) :: t, y(:), f(:)
       type(step_stats_t), intent(in) :: stats
       this%y_prev = y
+      this%f_prev = f
       this%t_prev = t
       this%stats_prev = stats
    end subroutine locator_mark
@@ -117,24 +138,39 @@ contains
       logical, intent(out) :: located
       type(error_t), intent(inout) :: err
       type(error_t) :: retry
-      real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2)
+      real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2), t_lo_start, t_seed
       integer :: k, side, last_side
       located = .false.
-      call switch_values(sys, t, y, this%g_hi, stepper%stats)
-      if (.not. any(crossed(this%g_prev, this%g_hi))) return
+      call switch_values(sys, t, y, this%g_hi, stepper%stats, this%rates, this%counts)
+      ! a function that sat on its root at the accepted state (a switch
+      ! just located there, or a constraint just left) has no side to
+      ! cross from: its memory there decided its side
+      this%live = abs(this%g_prev) > at_root*abs(this%g_hi)
+      if (.not. any(this%live .and. crossed(this%g_prev, this%g_hi))) return
       t_end = t
+      this%y_end = y
       t_lo = this%t_prev
+      t_lo_start = t_lo
       t_hi = t
       this%g_lo = this%g_prev
       this%y_hi = y
       tol_t = max(relative_tol*(t_end - t_lo), 8.0_wp*spacing(t_end))
+      ! the first try: the switch on Hermite's cubic through the step's
+      ! ends (no evaluation of forces; its error is the step's own order)
+      this%f_end = stepper%f
+      t_seed = hermite_crossing(this, sys, t_lo, t_end, tol_t, stepper%stats)
       w_lo = 1.0_wp        ! Illinois' weights of the bracket's ends
       w_hi = 1.0_wp
       last_side = 0
       width = huge(1.0_wp)       ! the bracket's width two tries ago and one
       do k = 1, max_tries
+         ! located: the bracket is that narrow, or the first root the
+         ! secants of the functions that cross in it give lies that close
+         ! to its end (a function past its root by a rounding)
          if (t_hi - t_lo <= tol_t) exit
-         t_to = first_crossing(this%g_lo, this%g_hi, w_lo, w_hi, t_lo, t_hi)
+         if (t_hi - first_crossing(this%g_lo, this%g_hi, this%live, 1.0_wp, 1.0_wp, t_lo, t_hi) <= tol_t) exit
+         t_to = first_crossing(this%g_lo, this%g_hi, this%live, w_lo, w_hi, t_lo, t_hi)
+         if (k == 1) t_to = t_seed
          ! the middle when two tries did not halve the bracket: it at least
          ! halves every third try, whatever the switching functions' shape
          if (t_hi - t_lo > 0.5_wp*width(1)) t_to = 0.5_wp*(t_lo + t_hi)
@@ -143,8 +179,8 @@ contains
          if (.not. (t_to > t_lo .and. t_to < t_hi)) exit     ! (below the time's resolution)
          call step_again(this, sys, stepper, t_to, t, y, retry)
          if (retry%failed()) exit           ! (the earliest state found past the switch is kept)
-         call switch_values(sys, t, y, this%g_try, stepper%stats)
-         if (any(crossed(this%g_lo, this%g_try))) then
+         call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
+         if (any(this%live .and. crossed(this%g_lo, this%g_try))) then
             side = 1                       ! past a switch: the bracket's end
             t_hi = t
             this%g_hi = this%g_try
@@ -160,6 +196,14 @@ contains
          end if
          last_side = side
       end do
+      if (t_hi - t_lo_start < immediate*(t_end - t_lo_start)) then
+         ! a switch at once after the last (chatter the law leaves, or
+         ! rounding on a root): not located, the step kept as first taken,
+         ! the memory decided at its end (counted: the listing says so)
+         stepper%stats%switches_unlocated = stepper%stats%switches_unlocated + 1
+         t_hi = t_end
+         this%y_hi = this%y_end
+      end if
       ! the earliest state past the switch: accepted there, the stepper
       ! restarted (no back value, no controller memory from across it)
       call keep(this, sys, stepper, t_hi, this%y_hi, t, y, err)
@@ -167,8 +211,60 @@ contains
       if (located) stepper%stats%switches_located = stepper%stats%switches_located + 1
    end subroutine locator_locate
 
+   !> The earliest time in (t_a, t_b) - the step from the marked state to
+   !! its end, where y_end, f_end - at which a switching function that
+   !! changed sign over it reaches zero on the cubic Hermite interpolant
+   !! of the step: Illinois' regula falsi to within tol_t/8, the end past
+   !! the root returned (switching functions only; counted in stats).
+   function hermite_crossing(this, sys, t_a, t_b, tol_t, stats) result(t_past)
+      type(switch_locator_t), intent(inout) :: this
+      type(crash_system_t), intent(in) :: sys
+      real(wp), intent(in) :: t_a, t_b, tol_t
+      type(step_stats_t), intent(inout) :: stats
+      real(wp) :: t_past
+      real(wp) :: lo, hi, tau, w_lo, w_hi, h, sig
+      integer :: k, last_side
+      lo = t_a
+      hi = t_b
+      h = t_b - t_a
+      this%g_lo = this%g_prev
+      this%g_try = this%g_hi
+      w_lo = 1.0_wp
+      w_hi = 1.0_wp
+      last_side = 0
+      do k = 1, max_tries
+         if (hi - lo <= 0.125_wp*tol_t) exit
+         tau = first_crossing(this%g_lo, this%g_try, this%live, w_lo, w_hi, lo, hi)
+         if (mod(k, 4) == 0) tau = 0.5_wp*(lo + hi)
+         if (.not. (tau > lo .and. tau < hi)) tau = 0.5_wp*(lo + hi)
+         if (.not. (tau > lo .and. tau < hi)) exit
+         ! y(tau) on the cubic with the ends' values and slopes
+         sig = (tau - t_a)/h
+         this%y_work = (2.0_wp*sig**3 - 3.0_wp*sig**2 + 1.0_wp)*this%y_prev &
+                       + (sig**3 - 2.0_wp*sig**2 + sig)*h*this%f_prev &
+                       + (-2.0_wp*sig**3 + 3.0_wp*sig**2)*this%y_end + (sig**3 - sig**2)*h*this%f_end
+         call switch_values(sys, tau, this%y_work, this%g_lo_try, stats, this%rates, this%counts)
+         if (any(this%live .and. crossed(this%g_lo, this%g_lo_try))) then
+            hi = tau
+            this%g_try = this%g_lo_try
+            if (last_side == 1) w_lo = 0.5_wp*w_lo
+            w_hi = 1.0_wp
+            last_side = 1
+         else
+            lo = tau
+            this%g_lo = this%g_lo_try
+            if (last_side == -1) w_hi = 0.5_wp*w_hi
+            w_lo = 1.0_wp
+            last_side = -1
+         end if
+      end do
+      t_past = hi
+      ! (the bracket's values again those at the step's ends)
+      this%g_lo = this%g_prev
+   end function hermite_crossing
+
    !> The step taken again from the marked state to t_to, into (t, y); the
-   !! step taken before is not kept (a rejected step in the statistics).
+   !! step taken before is not kept (counted as taken again, stats%retaken).
    subroutine step_again(this, sys, stepper, t_to, t, y, err)
       type(switch_locator_t), intent(in) :: this
       type(crash_system_t), intent(inout) :: sys
@@ -180,12 +276,12 @@ contains
       y = this%y_prev
       t = this%t_prev
       stepper%stats%steps = stepper%stats%steps - 1
-      stepper%stats%rejected = stepper%stats%rejected + 1
+      stepper%stats%retaken = stepper%stats%retaken + 1
       stepper%stats%h_min = this%stats_prev%h_min
       stepper%stats%h_max = this%stats_prev%h_max
       call stepper%restart(sys, t, y, err)
       stepper%stats%restarts = stepper%stats%restarts - 1
-      if (.not. err%failed()) call stepper%advance(sys, t, y, t_to, err)
+      if (.not. err%failed()) call stepper%retake(sys, t, y, t_to, err)
       if (err%failed()) stepper%stats%steps = stepper%stats%steps + 1
    end subroutine step_again
 
@@ -219,13 +315,14 @@ contains
    !> The earliest time in (t_lo, t_hi) at which a switching function that
    !! changed sign over the bracket reaches zero, by the regula falsi of
    !! each (its ends weighted by Illinois' factors w_lo, w_hi).
-   pure real(wp) function first_crossing(g_lo, g_hi, w_lo, w_hi, t_lo, t_hi) result(t_first)
+   pure real(wp) function first_crossing(g_lo, g_hi, live, w_lo, w_hi, t_lo, t_hi) result(t_first)
       real(wp), intent(in) :: g_lo(:), g_hi(:), w_lo, w_hi, t_lo, t_hi
+      logical, intent(in) :: live(:)
       real(wp) :: a, b, frac
       integer :: i
       t_first = t_hi
       do i = 1, size(g_lo)
-         if (.not. crossed(g_lo(i), g_hi(i))) cycle
+         if (.not. (live(i) .and. crossed(g_lo(i), g_hi(i)))) cycle
          a = w_lo*g_lo(i)
          b = w_hi*g_hi(i)
          frac = 0.5_wp
@@ -237,11 +334,14 @@ contains
    !> Every switching function of the scene at (t, y), in the order of the
    !! occupants and their effects (counted in stats). The body state is
    !! made only for an occupant with an effect that has one.
-   subroutine switch_values(sys, t, y, g, stats)
+   subroutine switch_values(sys, t, y, g, stats, rates, counts)
       type(crash_system_t), intent(in) :: sys
-      real(wp), intent(in) :: t, y(:)
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
       real(wp), intent(out) :: g(:)
       type(step_stats_t), intent(inout) :: stats
+      real(wp), intent(inout), contiguous :: rates(:)      !< workspace (the sliding switches' forces)
+      integer(i8), intent(inout) :: counts(:)
       integer :: o, k, xo, ao, i
       type(body_state_t) :: st
       logical :: made
@@ -260,6 +360,13 @@ contains
                   i = i + e%n_switch
                end associate
             end do
+            if (occ%n_slide > 0) then
+               ! the sliding constraints' multipliers leaving their ranges
+               if (.not. made) st = system_body_state(sys, o, t, y)
+               made = .true.
+               call occupant_slide_switches(occ, st, y, g(i + 1:i + 2*occ%n_slide), rates, counts)
+               i = i + 2*occ%n_slide
+            end if
          end associate
       end do
       stats%switch_evaluations = stats%switch_evaluations + 1
