@@ -6,7 +6,7 @@ peaks under RK4 with each belt section, the targets, the summary) with
 finite figures, leaves nothing behind in its temporary directory nor beside
 the decks, exits 0 or, with --check, 1 exactly when a target fails; a step
 list the deck cannot take and a missing hsri2d are the tool's own failures
-(status 2). Whether the targets pass is not checked: that is the tool's
+(status 2); killed, it ends its runs and removes its directory. Whether the targets pass is not checked: that is the tool's
 measurement, not a test.
 
 Usage: convergence_check.py HSRI2D TOOL DECKS WORKDIR
@@ -14,8 +14,10 @@ Usage: convergence_check.py HSRI2D TOOL DECKS WORKDIR
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
+import time
 
 NAME = "convergence"
 
@@ -105,4 +107,23 @@ if p.returncode != 2 or "no hsri2d program at" not in p.stderr:
     fail(f"a missing hsri2d: status {p.returncode}, expected 2 and a message\n{p.stderr}")
 if os.listdir(tmp):
     fail(f"left behind in its temporary directory: {os.listdir(tmp)}")
+
+# killed (SIGTERM) while its runs are under way: it ends them, removes its
+# directory and says so, status 128 + 15
+p = subprocess.Popen([sys.executable, tool, "--hsri2d", hsri2d, "--quick", belted], env=env,
+                     stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+deadline = time.monotonic() + 60
+while not any(name.endswith(".deck") for _, _, names in os.walk(tmp) for name in names):
+    if p.poll() is not None or time.monotonic() > deadline:
+        fail(f"no run started (status {p.poll()})")
+    time.sleep(0.05)
+p.send_signal(signal.SIGTERM)
+_, err = p.communicate(timeout=60)
+if p.returncode != 128 + signal.SIGTERM or "stopped by SIGTERM" not in err:
+    fail(f"killed: status {p.returncode}, expected {128 + signal.SIGTERM} and a message\n{err}")
+ps = subprocess.run(["ps", "-eo", "args"], capture_output=True, text=True).stdout
+if tmp in ps:
+    fail(f"killed: runs left behind\n{[line for line in ps.splitlines() if tmp in line]}")
+if os.listdir(tmp):
+    fail(f"killed: left behind in its temporary directory: {os.listdir(tmp)}")
 print(f"{NAME}: ok")
