@@ -13,6 +13,7 @@ module loading_branch
 
    public :: branch_point_t, branch_at, branch_at_memo, branch_eval, held_plastic, zero_extent
    public :: rate_force, rate_slope, rate_inverse, min_slope, rigid_slope
+   public :: branch_argument, turn_switch
 
    !> A branch flatter than this (lb/in) is flat: its compliance is infinite.
    real(wp), parameter :: min_slope = 1.0e-200_wp
@@ -181,6 +182,46 @@ contains
          bp%slope = se*dm/span
       end if
    end subroutine branch_eval
+
+   !> Issue 15: the deformation at which the element's branch reads its
+   !! loading curve at x, with the memory as it stands: on a loading branch
+   !! x - eps_n, on the unloading curve xi d_max (figure 18; branch_eval),
+   !! continued linearly below delta_0 (where the branch carries nothing)
+   !! so that it is continuous and increasing in x - also at delta_max,
+   !! where the two agree. The branch's force kinks where this argument
+   !! passes a kink of the curve (loading_curves' curve_kinks_about). A
+   !! plastic element that has turned is rigid at delta_max and reloads
+   !! along its loading curve: x - eps_n.
+   pure real(wp) function branch_argument(law, mem, x) result(d)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x
+      if (law%elastic .or. law%plastic .or. .not. mem%unloading .or. x >= mem%delta_max) then
+         d = x - mem%eps
+      else
+         d = (x - mem%delta_zero)/(mem%delta_max - mem%delta_zero)*(mem%delta_max - mem%eps)
+      end if
+   end function branch_argument
+
+   !> Issue 15: the switching function of an element's turning point and
+   !! new cycle (figure 18; recurrent_accept): its rate x_dot (in/s) while
+   !! it carries load - on a loading branch it turns where x_dot falls
+   !! below 0, on an unloading one a new cycle begins where it rises above
+   !! 0 - and where it carries none a constant of the sign it has before
+   !! such a change (+1 loading, -1 unloading), so that nothing switches
+   !! there: the force stays 0, and it changes sign only where the element
+   !! takes load (with x_dot > 0 on a loading branch, a new cycle on an
+   !! unloading one: located with the onset). An elastic law has none.
+   pure real(wp) function turn_switch(mem, loaded, x_dot) result(g)
+      type(loading_memory_t), intent(in) :: mem
+      logical, intent(in) :: loaded
+      real(wp), intent(in) :: x_dot
+      if (loaded) then
+         g = x_dot
+      else
+         g = merge(-1.0_wp, 1.0_wp, mem%unloading)
+      end if
+   end function turn_switch
 
    !> (D-B10) A plastic element (R = 0) that has turned: its graph is a
    !! vertical segment at delta_max, from 0 to f_max, where it is rigid -
