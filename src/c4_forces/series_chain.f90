@@ -595,11 +595,10 @@ contains
    !!   absorber's tension at T = 0 (-psi(0), chain_split), where its branch
    !!   carries load (else +1): T = max(0, ...) kinks where it is 0;
    !! - per element with a curve: its turning point or new cycle (unless
-   !!   elastic; loading_branch's turn_switch, in/s): the rate the
-   !!   rate-independent elements share, r' = s' - sum x_d' (their rates are
-   !!   shares of it), a state's own x_d', where the element carries load
-   !!   (the rate-independent ones: where the chain does; a state: where its
-   !!   branch does); then, in in, its branch's argument (branch_argument)
+   !!   elastic; in/s): for a rate-independent element the rate they share,
+   !!   r' = s' - sum x_d' (their rates are shares of it), where the chain
+   !!   carries load (loading_branch's turn_switch); for a state its own
+   !!   x_d'; then, in in, its branch's argument (branch_argument)
    !!   less the kink of its curve below it at the last accepted state, and
    !!   the kink above less the argument (+1 where there is none): where a
    !!   table's point, or the end of its flat start, is passed.
@@ -665,7 +664,16 @@ contains
          if (.not. ch%law(i)%elastic) then
             k = k + 1
             if (ch%stateful(i)) then
-               g(k) = turn_switch(ch%mem(i), fb(i) > 0.0_wp, sp%rate(i))
+               ! a state's own rate, where it carries load or not: below its
+               ! residual it is F_v^-1(T) >= 0, so nothing switches there but
+               ! where T reaches 0 (with the slack). (A state taken up at the
+               ! end of a step can be left a little deformed and relaxing by
+               ! the step's later stages: it turns at once, unlocated, and
+               ! takes a new cycle where its rate becomes positive, located;
+               ! a function that changed to a constant where it took load
+               ! would cross there by a jump, which takes the location a
+               ! hundred tries.)
+               g(k) = sp%rate(i)
             else
                g(k) = turn_switch(ch%mem(i), taut, r_dot)
             end if
