@@ -13,7 +13,7 @@ module loading_branch
 
    public :: branch_point_t, branch_at, branch_at_memo, branch_eval, held_plastic, zero_extent
    public :: rate_force, rate_slope, rate_inverse, min_slope, rigid_slope
-   public :: branch_argument, turn_switch
+   public :: branch_argument, turn_switch, zero_on_side
 
    !> A branch flatter than this (lb/in) is flat: its compliance is infinite.
    real(wp), parameter :: min_slope = 1.0e-200_wp
@@ -212,16 +212,34 @@ contains
    !! there: the force stays 0, and it changes sign only where the element
    !! takes load (with x_dot > 0 on a loading branch, a new cycle on an
    !! unloading one: located with the onset). An elastic law has none.
+   !! A rate of exactly 0 changes no memory (recurrent_accept asks for < 0
+   !! or > 0): it is put on the side where nothing changes (zero_on_side).
    pure real(wp) function turn_switch(mem, loaded, x_dot) result(g)
       type(loading_memory_t), intent(in) :: mem
       logical, intent(in) :: loaded
       real(wp), intent(in) :: x_dot
       if (loaded) then
-         g = x_dot
+         g = zero_on_side(x_dot, .not. mem%unloading)
       else
          g = merge(-1.0_wp, 1.0_wp, mem%unloading)
       end if
    end function turn_switch
+
+   !> Issue 15: a switching function's value g, or where it is exactly 0 a
+   !! value of the sign of the side the law puts that point on (positive
+   !! when above), too small to matter (1e-100): the driver takes a state
+   !! where g reaches 0 as past the switch, and accepts there; where the
+   !! law (accept, a region's test) counts the point itself as short of it
+   !! (a rate of 0 turns nothing; a slack of 0 carries nothing), g must not
+   !! be 0 there, or the accepted state would change nothing and, g being 0
+   !! at it, the switch's later crossing would go unseen.
+   elemental real(wp) function zero_on_side(g, above) result(v)
+      real(wp), intent(in) :: g
+      logical, intent(in) :: above
+      real(wp), parameter :: nudge = 1.0e-100_wp
+      v = g
+      if (.not. abs(g) > 0.0_wp) v = merge(nudge, -nudge, above)
+   end function zero_on_side
 
    !> (D-B10) A plastic element (R = 0) that has turned: its graph is a
    !! vertical segment at delta_max, from 0 to f_max, where it is rigid -

@@ -57,7 +57,7 @@ module series_chain
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_eval, recurrent_accept, &
       recurrent_stored, loading_point_t
    use loading_branch, only: branch_point_t, branch_at, zero_extent, rate_force, rate_slope, rate_inverse, &
-      min_slope, rigid_slope, branch_argument, turn_switch
+      min_slope, rigid_slope, branch_argument, turn_switch, zero_on_side
    use root_search, only: root_search_t, root_begin, root_update, root_running, root_not_finite, bisections
    use series_split, only: max_chain, deformation_split_t, split_deformation, split_ok, split_no_convergence, &
       split_not_finite, path_none, path_pair, path_newton, path_search, region_slack, region_unloaded, &
@@ -602,8 +602,12 @@ contains
    !!   less the kink of its curve below it at the last accepted state, and
    !!   the kink above less the argument (+1 where there is none): where a
    !!   table's point, or the end of its flat start, is passed.
-   !! Pure, like chain_split. A split that fails gives +1 everywhere (the
-   !! evaluation that follows fails and says why).
+   !! Where one is exactly 0 at a point the law counts as short of its switch
+   !! (no load at a slack of 0, no turn at a rate of 0, the kink interval's
+   !! lower end inside it), it is nudged to that side (zero_on_side): the
+   !! driver accepts where a function reaches 0. Pure, like chain_split. A
+   !! split that fails gives +1 everywhere (the evaluation that follows
+   !! fails and says why).
    pure subroutine chain_switches(ch, s, s_dot, aux, g, guess)
       type(series_chain_t), intent(in) :: ch
       real(wp), intent(in) :: s, s_dot, aux(:)
@@ -632,6 +636,7 @@ contains
             end if
          end do
       end if
+      g(k) = zero_on_side(g(k), .false.)    ! (no load at 0)
       taut = g(k) > 0.0_wp
       ! the rate the rate-independent elements share; the states' branch forces
       r_dot = s_dot
@@ -673,13 +678,14 @@ contains
                ! a function that changed to a constant where it took load
                ! would cross there by a jump, which takes the location a
                ! hundred tries.)
-               g(k) = sp%rate(i)
+               g(k) = zero_on_side(sp%rate(i), .not. ch%mem(i)%unloading)
             else
                g(k) = turn_switch(ch%mem(i), taut, r_dot)
             end if
          end if
          d = branch_argument(ch%law(i), ch%mem(i), sp%x(i))
-         if (ch%kink_lo(i) > -huge(1.0_wp)) g(k + 1) = d - ch%kink_lo(i)
+         ! (the interval [lo, hi) holds its lower end, not its upper)
+         if (ch%kink_lo(i) > -huge(1.0_wp)) g(k + 1) = zero_on_side(d - ch%kink_lo(i), .true.)
          if (ch%kink_hi(i) < huge(1.0_wp)) g(k + 2) = ch%kink_hi(i) - d
          k = k + 2
       end do
