@@ -13,8 +13,11 @@ module loading_branch
 
    public :: branch_point_t, branch_at, branch_at_memo, branch_eval, held_plastic, zero_extent
    public :: rate_force, rate_slope, rate_inverse, min_slope, rigid_slope
-   public :: branch_argument, turn_switch, zero_on_side
+   public :: branch_argument, turn_switch, zero_on_side, turn_margin
 
+   !> (issue 15) How far past 0 (in/s) an element's rate is when its turning
+   !! point or new cycle is located (turn_switch).
+   real(wp), parameter :: turn_margin = 1.0e-7_wp
    !> A branch flatter than this (lb/in) is flat: its compliance is infinite.
    real(wp), parameter :: min_slope = 1.0e-200_wp
    !> The slope of a rigid element (a plastic one held at delta_max): no compliance.
@@ -204,22 +207,28 @@ contains
    end function branch_argument
 
    !> Issue 15: the switching function of an element's turning point and
-   !! new cycle (figure 18; recurrent_accept): its rate x_dot (in/s) while
-   !! it carries load - on a loading branch it turns where x_dot falls
-   !! below 0, on an unloading one a new cycle begins where it rises above
-   !! 0 - and where it carries none a constant of the sign it has before
-   !! such a change (+1 loading, -1 unloading), so that nothing switches
-   !! there: the force stays 0, and it changes sign only where the element
-   !! takes load (with x_dot > 0 on a loading branch, a new cycle on an
-   !! unloading one: located with the onset). An elastic law has none.
-   !! A rate of exactly 0 changes no memory (recurrent_accept asks for < 0
-   !! or > 0): it is put on the side where nothing changes (zero_on_side).
+   !! new cycle (figure 18; recurrent_accept), in in/s: on a loading branch it
+   !! turns where its rate x_dot falls below 0, on an unloading one a new
+   !! cycle begins where it rises above 0: x_dot + turn_margin, x_dot -
+   !! turn_margin, so that where the driver accepts, just past the root, the
+   !! rate has the sign the law asks for and the function that follows (the
+   !! other one, with the memory changed) starts turn_margin*2 from its own
+   !! root, not at the rate's rounding noise (some 1e-11 in/s where a chest
+   !! carries 1000 lb: a root found there by the next step's first try was
+   !! one of noise, and switches followed each other 1e-16 s apart). The
+   !! switch so falls where the rate is 1e-7 in/s past 0: a memory changed
+   !! 1e-7/|x''| s late, which moves the force by (slope change) 1e-14/|x''|.
+   !! Where the element carries no load (loaded false) a constant of the
+   !! sign it has before such a change (+1 loading, -1 unloading), so that
+   !! nothing switches there: the force stays 0; it changes sign only where
+   !! the element takes load (with x_dot > 0 on a loading branch, a new cycle
+   !! on an unloading one: located with the onset). An elastic law has none.
    pure real(wp) function turn_switch(mem, loaded, x_dot) result(g)
       type(loading_memory_t), intent(in) :: mem
       logical, intent(in) :: loaded
       real(wp), intent(in) :: x_dot
       if (loaded) then
-         g = zero_on_side(x_dot, .not. mem%unloading)
+         g = merge(x_dot - turn_margin, x_dot + turn_margin, mem%unloading)
       else
          g = merge(-1.0_wp, 1.0_wp, mem%unloading)
       end if

@@ -595,17 +595,17 @@ contains
    !!   absorber's tension at T = 0 (-psi(0), chain_split), where its branch
    !!   carries load (else +1): T = max(0, ...) kinks where it is 0;
    !! - per element with a curve: its turning point or new cycle (unless
-   !!   elastic; in/s): for a rate-independent element the rate they share,
-   !!   r' = s' - sum x_d' (their rates are shares of it), where the chain
-   !!   carries load (loading_branch's turn_switch); for a state its own
-   !!   x_d'; then, in in, its branch's argument (branch_argument)
+   !!   elastic; in/s; loading_branch's turn_switch, 1e-7 in/s past 0): for
+   !!   a rate-independent element the rate they share, r' = s' - sum x_d'
+   !!   (their rates are shares of it), where the chain carries load; for a
+   !!   state its own x_d'; then, in in, its branch's argument (branch_argument)
    !!   less the kink of its curve below it at the last accepted state, and
    !!   the kink above less the argument (+1 where there is none): where a
    !!   table's point, or the end of its flat start, is passed.
    !! Where one is exactly 0 at a point the law counts as short of its switch
-   !! (no load at a slack of 0, no turn at a rate of 0, the kink interval's
-   !! lower end inside it), it is nudged to that side (zero_on_side): the
-   !! driver accepts where a function reaches 0. Pure, like chain_split. A
+   !! (no load at a slack of 0, the kink interval's lower end inside it), it
+   !! is nudged to that side (zero_on_side): the driver accepts where a
+   !! function reaches 0. Pure, like chain_split. A
    !! split that fails gives +1 everywhere (the evaluation that follows
    !! fails and says why).
    pure subroutine chain_switches(ch, s, s_dot, aux, g, guess)
@@ -678,7 +678,7 @@ contains
                ! a function that changed to a constant where it took load
                ! would cross there by a jump, which takes the location a
                ! hundred tries.)
-               g(k) = zero_on_side(sp%rate(i), .not. ch%mem(i)%unloading)
+               g(k) = turn_switch(ch%mem(i), .true., sp%rate(i))
             else
                g(k) = turn_switch(ch%mem(i), taut, r_dot)
             end if
