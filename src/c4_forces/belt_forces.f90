@@ -49,7 +49,8 @@ module belt_forces
    use point_forces, only: point_force_list_t, point_force_add
    use output_series, only: output_series_t, series_new, column
    use belt_geometry, only: belt_section_geometry_t, belt_kinematics_t, belt_body_t, &
-      lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state, belt_body_fill, belt_section_add
+      lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state, belt_body_fill, belt_section_add, &
+      lap_wrap, belt_lap
    use recurrent_loading, only: recurrent_law_t, belt_law, material_law
    use series_chain, only: max_chain, chain_split_t, chain_split_text, split_ok, chain_new, chain_relaxing, &
       chain_n_aux, chain_n_switch
@@ -178,12 +179,14 @@ contains
             e%has_memory = e%has_memory .or. ch%n_states > 0
          end associate
       end do
-      ! issue 15: every chain's switches (series_chain's chain_switches); the
-      ! kinks they measure from are memory, kept in accept
+      ! issue 15: every chain's switches (series_chain's chain_switches; the
+      ! kinks they measure from are memory, kept in accept), then each lap
+      ! section's wrap (lap_wrap)
       e%n_switch = 0
       do c = 1, e%n_chains
          e%n_switch = e%n_switch + chain_n_switch(e%chain(c)%chain)
       end do
+      e%n_switch = e%n_switch + count(e%geom(1:e%n_sections)%kind == belt_lap)
       e%has_memory = e%has_memory .or. e%n_switch > 0
    contains
       !> Section j of the *BELTS cards: its geometry at t = 0 (C.2).
@@ -391,7 +394,8 @@ contains
 
    !> Issue 15: the switching functions of every chain, in order
    !! (series_chain's chain_switches: slack, clip, turning points, kinks of
-   !! the curves; docs/belts.md, "Switches").
+   !! the curves), then the wrap of each lap section about the hip, where
+   !! it leaves the hip (belt_geometry's lap_wrap; docs/belts.md 10).
    pure subroutine belt_switches(this, st, extra, aux, g)
       class(belt_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
@@ -412,6 +416,11 @@ contains
             call belt_chain_switches(ch, s, s_dot, aux, g(i + 1:i + k))
             i = i + k
          end associate
+      end do
+      do k = 1, this%n_sections
+         if (this%geom(k)%kind /= belt_lap) cycle
+         i = i + 1
+         g(i) = lap_wrap(this%geom(k), bb)
       end do
    end subroutine belt_switches
 
