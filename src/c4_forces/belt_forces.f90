@@ -49,12 +49,13 @@ module belt_forces
    use point_forces, only: point_force_list_t, point_force_add
    use output_series, only: output_series_t, series_new, column
    use belt_geometry, only: belt_section_geometry_t, belt_kinematics_t, belt_body_t, &
-      lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state, belt_body_fill, belt_section_add
+      lap_belt_geometry, torso_belt_geometry, belt_kinematics, belt_body_of_state, belt_body_fill, belt_section_add, &
+      lap_wrap, belt_lap
    use recurrent_loading, only: recurrent_law_t, belt_law, material_law
    use series_chain, only: max_chain, chain_split_t, chain_split_text, split_ok, chain_new, chain_relaxing, &
-      chain_n_aux
+      chain_n_aux, chain_n_switch
    use belt_shared_deflection, only: belt_chain_t, belt_chain_n_aux, belt_chain_split, belt_chain_rates, &
-      belt_chain_accept, belt_chain_energies, scaled_law
+      belt_chain_accept, belt_chain_energies, scaled_law, belt_chain_switches
    implicit none
    private
 
@@ -86,6 +87,7 @@ module belt_forces
    contains
       procedure :: add_forces => belt_add_forces
       procedure :: accept => belt_accept
+      procedure :: switches => belt_switches
       procedure :: energy => belt_energy
       procedure :: outputs => belt_outputs
       procedure :: output_values => belt_output_values
@@ -177,6 +179,15 @@ contains
             e%has_memory = e%has_memory .or. ch%n_states > 0
          end associate
       end do
+      ! issue 15: every chain's switches (series_chain's chain_switches; the
+      ! kinks they measure from are memory, kept in accept), then each lap
+      ! section's wrap (lap_wrap)
+      e%n_switch = 0
+      do c = 1, e%n_chains
+         e%n_switch = e%n_switch + chain_n_switch(e%chain(c)%chain)
+      end do
+      e%n_switch = e%n_switch + count(e%geom(1:e%n_sections)%kind == belt_lap)
+      e%has_memory = e%has_memory .or. e%n_switch > 0
    contains
       !> Section j of the *BELTS cards: its geometry at t = 0 (C.2).
       subroutine add_section(j)
@@ -349,35 +360,69 @@ contains
    !! a slack chain's rate-dependent body still recovering, its state
    !! moving, still turns); a changed law restarts the stepper. A chain that
    !! is slack and holds no rate-dependent element still loaded, or whose
-   !! elements are all elastic and stateless, keeps its memories and needs no
-   !! split.
+   !! elements are all elastic and stateless, keeps its memories. Then, for
+   !! every chain, the kinks its switching functions measure from (issue 15).
    subroutine belt_accept(this, st, extra, aux, result)
       class(belt_effect_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
       type(belt_body_t) :: bb
+      type(chain_split_t) :: sp
       real(wp) :: s, s_dot, g(n_dof)
       integer :: c
-      logical :: changed
+      logical :: changed, update
       associate (u1 => size(extra))
       end associate
       call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
                           this%last_segment, bb)
       do c = 1, this%n_chains
          associate (ch => this%chain(c))
-            if (all(ch%chain%law(1:ch%chain%n)%elastic) .and. ch%chain%n_states == 0) cycle   ! no memory
             call chain_deformation(this, ch, bb, s, s_dot, g)
-            if (.not. s > 0.0_wp .and. ch%chain%n_states > 0) then
-               if (.not. chain_relaxing(ch%chain, aux(ch%aux_offset + 1:ch%aux_offset + chain_n_aux(ch%chain)))) cycle
-            else if (.not. s > 0.0_wp) then
-               cycle
+            update = .not. (all(ch%chain%law(1:ch%chain%n)%elastic) .and. ch%chain%n_states == 0)   ! no memory
+            if (update .and. .not. s > 0.0_wp) then
+               update = ch%chain%n_states > 0
+               if (update) update = chain_relaxing(ch%chain, aux(ch%aux_offset + 1:ch%aux_offset &
+                                                                 + chain_n_aux(ch%chain)))
             end if
-            call belt_chain_accept(ch, s, s_dot, aux, changed)
+            call belt_chain_split(ch, s, s_dot, aux, sp)
+            call belt_chain_accept(ch, s, s_dot, aux, sp, update, changed)
             result%restart = result%restart .or. changed
          end associate
       end do
    end subroutine belt_accept
+
+   !> Issue 15: the switching functions of every chain, in order
+   !! (series_chain's chain_switches: slack, clip, turning points, kinks of
+   !! the curves), then the wrap of each lap section about the hip, where
+   !! it leaves the hip (belt_geometry's lap_wrap; docs/belts.md 10).
+   pure subroutine belt_switches(this, st, extra, aux, g)
+      class(belt_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: g(:)
+      type(belt_body_t) :: bb
+      real(wp) :: s, s_dot, grad(n_dof)
+      integer :: c, i, k
+      associate (u1 => size(extra))
+      end associate
+      call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
+                          this%last_segment, bb)
+      i = 0
+      do c = 1, this%n_chains
+         associate (ch => this%chain(c))
+            k = chain_n_switch(ch%chain)
+            call chain_deformation(this, ch, bb, s, s_dot, grad)
+            call belt_chain_switches(ch, s, s_dot, aux, g(i + 1:i + k))
+            i = i + k
+         end associate
+      end do
+      do k = 1, this%n_sections
+         if (this%geom(k)%kind /= belt_lap) cycle
+         i = i + 1
+         g(i) = lap_wrap(this%geom(k), bb)
+      end do
+   end subroutine belt_switches
 
    !> Stored and dissipated energy of every element (docs/loading.md 4), and
    !! the work supplied by the vehicle.

@@ -29,7 +29,7 @@ module belt_geometry
 
    public :: belt_section_geometry_t, belt_kinematics_t, belt_body_t
    public :: belt_lap, belt_torso, lap_belt_geometry, torso_belt_geometry, belt_kinematics
-   public :: belt_body_from, belt_body_of_state, belt_body_fill, belt_section_add
+   public :: belt_body_from, belt_body_of_state, belt_body_fill, belt_section_add, lap_wrap
 
    !> Kinds of belt section.
    integer, parameter :: belt_lap = 1, belt_torso = 2
@@ -197,6 +197,22 @@ contains
       e = hip + g%h*[cos(theta1), sin(theta1)] - g%anchor
       length = hypot(e(1), e(2))
    end function lap_length
+
+   !> Issue 15: the lap belt's wrap about the hip, phi_1 - theta_1 + pi/2
+   !! (rad; section_state's), continued below 0 where the belt runs straight
+   !! from its anchor to E (D-24). Where it passes 0 the belt leaves the hip:
+   !! its length and gradient are continuous there (the straight line is the
+   !! tangent), and so is the gradient's slope, but not the slope's slope - a
+   !! kink of the force's slope along the motion, like a turning point's: a
+   !! switch (test_lap_wrap_switch).
+   pure real(wp) function lap_wrap(g, bb) result(wrap)
+      type(belt_section_geometry_t), intent(in) :: g
+      type(belt_body_t), intent(in) :: bb
+      real(wp) :: u, v
+      u = bb%joint(1, 1) - g%anchor(1)
+      v = bb%joint(2, 1) - g%anchor(2)
+      wrap = tangent_turn(g%h, sqrt(u**2 + v**2)) + atan2(v, u) - bb%theta(1) + 0.5_wp*pi
+   end function lap_wrap
 
    !> asin(h/d), the angle between the line from the anchor to the hip and
    !! the tangent from the anchor to the hip's circle of radius h; π/2 when

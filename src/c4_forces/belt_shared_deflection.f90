@@ -18,12 +18,12 @@ module belt_shared_deflection
    use kinds, only: wp
    use recurrent_loading, only: recurrent_law_t
    use series_chain, only: max_chain, series_chain_t, chain_split_t, chain_split, chain_accept, chain_energies, &
-      chain_n_aux
+      chain_n_aux, chain_switches, chain_track_kinks
    implicit none
    private
 
    public :: belt_chain_t, belt_chain_n_aux, belt_chain_split, belt_chain_rates, belt_chain_accept
-   public :: belt_chain_energies, scaled_law
+   public :: belt_chain_energies, scaled_law, belt_chain_switches
 
    !> Sections carrying one tension, and the elements in series along them.
    type :: belt_chain_t
@@ -76,14 +76,32 @@ contains
    end subroutine belt_chain_rates
 
    !> After an accepted step: the elements' memories (series_chain's
-   !! chain_accept). changed: the stepper must restart.
-   pure subroutine belt_chain_accept(bc, s, s_dot, aux, changed)
+   !! chain_accept; sp, the chain's split at this state, belt_chain_split's),
+   !! when update; then the kinks its switching functions measure from
+   !! (chain_track_kinks), from the split with the memories as they are left.
+   !! changed: the stepper must restart.
+   pure subroutine belt_chain_accept(bc, s, s_dot, aux, sp, update, changed)
       type(belt_chain_t), intent(inout) :: bc
       real(wp), intent(in) :: s, s_dot, aux(:)
+      type(chain_split_t), intent(inout) :: sp
+      logical, intent(in) :: update
       logical, intent(out) :: changed
-      call chain_accept(bc%chain, s, s_dot, aux(bc%aux_offset + 1:bc%aux_offset + chain_n_aux(bc%chain)), changed, &
-                        aux(bc%start_aux))
+      changed = .false.
+      if (update) call chain_accept(bc%chain, s, s_dot, aux(bc%aux_offset + 1:bc%aux_offset + chain_n_aux(bc%chain)), &
+                                    changed, aux(bc%start_aux), sp)
+      if (changed) call belt_chain_split(bc, s, s_dot, aux, sp)
+      call chain_track_kinks(bc%chain, sp)
    end subroutine belt_chain_accept
+
+   !> The chain's switching functions at deformation s and rate s_dot
+   !! (series_chain's chain_switches, issue 15).
+   pure subroutine belt_chain_switches(bc, s, s_dot, aux, g)
+      type(belt_chain_t), intent(in) :: bc
+      real(wp), intent(in) :: s, s_dot, aux(:)
+      real(wp), intent(out) :: g(:)
+      call chain_switches(bc%chain, s, s_dot, aux(bc%aux_offset + 1:bc%aux_offset + chain_n_aux(bc%chain)), g, &
+                          aux(bc%start_aux))
+   end subroutine belt_chain_switches
 
    !> Each element's stored and dissipated energy at the split sp, and the
    !! work supplied through the chain.

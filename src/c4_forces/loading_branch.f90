@@ -13,7 +13,11 @@ module loading_branch
 
    public :: branch_point_t, branch_at, branch_at_memo, branch_eval, held_plastic, zero_extent
    public :: rate_force, rate_slope, rate_inverse, min_slope, rigid_slope
+   public :: branch_argument, turn_switch, zero_on_side, turn_margin
 
+   !> (issue 15) How far past 0 (in/s) an element's rate is when its turning
+   !! point or new cycle is located (turn_switch).
+   real(wp), parameter :: turn_margin = 1.0e-7_wp
    !> A branch flatter than this (lb/in) is flat: its compliance is infinite.
    real(wp), parameter :: min_slope = 1.0e-200_wp
    !> The slope of a rigid element (a plastic one held at delta_max): no compliance.
@@ -181,6 +185,70 @@ contains
          bp%slope = se*dm/span
       end if
    end subroutine branch_eval
+
+   !> Issue 15: the deformation at which the element's branch reads its
+   !! loading curve at x, with the memory as it stands: on a loading branch
+   !! x - eps_n, on the unloading curve xi d_max (figure 18; branch_eval),
+   !! continued linearly below delta_0 (where the branch carries nothing)
+   !! so that it is continuous and increasing in x - also at delta_max,
+   !! where the two agree. The branch's force kinks where this argument
+   !! passes a kink of the curve (loading_curves' curve_kinks_about). A
+   !! plastic element that has turned is rigid at delta_max and reloads
+   !! along its loading curve: x - eps_n.
+   pure real(wp) function branch_argument(law, mem, x) result(d)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x
+      if (law%elastic .or. law%plastic .or. .not. mem%unloading .or. x >= mem%delta_max) then
+         d = x - mem%eps
+      else
+         d = (x - mem%delta_zero)/(mem%delta_max - mem%delta_zero)*(mem%delta_max - mem%eps)
+      end if
+   end function branch_argument
+
+   !> Issue 15: the switching function of an element's turning point and
+   !! new cycle (figure 18; recurrent_accept), in in/s: on a loading branch it
+   !! turns where its rate x_dot falls below 0, on an unloading one a new
+   !! cycle begins where it rises above 0: x_dot + turn_margin, x_dot -
+   !! turn_margin, so that where the driver accepts, just past the root, the
+   !! rate has the sign the law asks for and the function that follows (the
+   !! other one, with the memory changed) starts turn_margin*2 from its own
+   !! root, not at the rate's rounding noise (some 1e-11 in/s where a chest
+   !! carries 1000 lb: a root found there by the next step's first try was
+   !! one of noise, and switches followed each other 1e-16 s apart). The
+   !! switch so falls where the rate is 1e-7 in/s past 0: a memory changed
+   !! 1e-7/|x''| s late, which moves the force by (slope change) 1e-14/|x''|.
+   !! Where the element carries no load (loaded false) a constant of the
+   !! sign it has before such a change (+1 loading, -1 unloading), so that
+   !! nothing switches there: the force stays 0; it changes sign only where
+   !! the element takes load (with x_dot > 0 on a loading branch, a new cycle
+   !! on an unloading one: located with the onset). An elastic law has none.
+   pure real(wp) function turn_switch(mem, loaded, x_dot) result(g)
+      type(loading_memory_t), intent(in) :: mem
+      logical, intent(in) :: loaded
+      real(wp), intent(in) :: x_dot
+      if (loaded) then
+         g = merge(x_dot - turn_margin, x_dot + turn_margin, mem%unloading)
+      else
+         g = merge(-1.0_wp, 1.0_wp, mem%unloading)
+      end if
+   end function turn_switch
+
+   !> Issue 15: a switching function's value g, or where it is exactly 0 a
+   !! value of the sign of the side the law puts that point on (positive
+   !! when above), too small to matter (1e-100): the driver takes a state
+   !! where g reaches 0 as past the switch, and accepts there; where the
+   !! law (accept, a region's test) counts the point itself as short of it
+   !! (a rate of 0 turns nothing; a slack of 0 carries nothing), g must not
+   !! be 0 there, or the accepted state would change nothing and, g being 0
+   !! at it, the switch's later crossing would go unseen.
+   elemental real(wp) function zero_on_side(g, above) result(v)
+      real(wp), intent(in) :: g
+      logical, intent(in) :: above
+      real(wp), parameter :: nudge = 1.0e-100_wp
+      v = g
+      if (.not. abs(g) > 0.0_wp) v = merge(nudge, -nudge, above)
+   end function zero_on_side
 
    !> (D-B10) A plastic element (R = 0) that has turned: its graph is a
    !! vertical segment at delta_max, from 0 to f_max, where it is rigid -

@@ -35,7 +35,7 @@ module loading_curves
    public :: loading_curve_t, curve_none, curve_polynomial, curve_table, max_order
    public :: curve_is_defined, curve_elastic_force, curve_rate_force, curve_force
    public :: curve_energy, curve_moment, curve_deflection_at, curve_check, curve_flat_extent
-   public :: polynomial_minimum, table_interval, curve_max_slope
+   public :: polynomial_minimum, table_interval, curve_max_slope, curve_kinks_about
 
 contains
 
@@ -208,6 +208,67 @@ contains
          if (b > 0.0_wp) d = c%defl(n) + (f - c%force(n))/b
       end select
    end function curve_deflection_at
+
+   !> Issue 15: the kinks of F_e nearest to d - the deformations where its
+   !! slope changes - at or below d (d_lo) and above it (d_hi); -huge and
+   !! huge where there is none. A polynomial has one, at 0 (F_e is 0 below);
+   !! a table one at each point where the slopes of its two sides differ
+   !! (0 before its first point; the last interval goes on beyond its last,
+   !! so that is none), among them the end of its flat start (curve_flat_
+   !! extent: where it takes load). Points whose sides' slopes agree to
+   !! 1e-12 of the larger are not kinks (collinear points, rounding).
+   !! An effect that locates where its force kinks keeps d_lo, d_hi of its
+   !! last accepted state and switches where d leaves [d_lo, d_hi).
+   pure subroutine curve_kinks_about(c, d, d_lo, d_hi)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: d
+      real(wp), intent(out) :: d_lo, d_hi
+      integer :: k, n
+      d_lo = -huge(1.0_wp)
+      d_hi = huge(1.0_wp)
+      select case (c%form)
+      case (curve_polynomial)
+         if (d >= 0.0_wp) then
+            d_lo = 0.0_wp
+         else
+            d_hi = 0.0_wp
+         end if
+      case (curve_table)
+         n = size(c%defl)
+         ! the points at or below d, from the highest down, then those above
+         k = 0
+         if (d >= c%defl(1)) k = table_interval(c%defl, d)
+         if (k == n - 1 .and. d >= c%defl(n)) k = n
+         do while (k >= 1)
+            if (is_kink(k)) then
+               d_lo = c%defl(k)
+               exit
+            end if
+            k = k - 1
+         end do
+         k = 1
+         if (d >= c%defl(1)) k = table_interval(c%defl, d) + 1
+         do while (k <= n - 1)
+            if (c%defl(k) > d .and. is_kink(k)) then
+               d_hi = c%defl(k)
+               exit
+            end if
+            k = k + 1
+         end do
+      end select
+   contains
+      !> Whether the slopes on the two sides of point k (< n) differ.
+      pure logical function is_kink(k)
+         integer, intent(in) :: k
+         real(wp) :: before, after
+         is_kink = .false.
+         if (k >= n) return
+         before = 0.0_wp
+         if (k > 1) before = slope(c, k - 1)
+         after = slope(c, k)
+         is_kink = abs(after - before) > 1.0e-12_wp*max(abs(after), abs(before))
+      end function is_kink
+   end subroutine curve_kinks_about
 
    !> The table interval k (1 <= k < n) that holds d > 0; the last one beyond
    !! the table (extrapolation along it).

@@ -53,11 +53,11 @@ module series_chain
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
    use strings, only: num, itoa
-   use loading_curves, only: curve_is_defined, curve_max_slope
+   use loading_curves, only: curve_is_defined, curve_max_slope, curve_kinks_about
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_eval, recurrent_accept, &
       recurrent_stored, loading_point_t
    use loading_branch, only: branch_point_t, branch_at, zero_extent, rate_force, rate_slope, rate_inverse, &
-      min_slope, rigid_slope
+      min_slope, rigid_slope, branch_argument, turn_switch, zero_on_side
    use root_search, only: root_search_t, root_begin, root_update, root_running, root_not_finite, bisections
    use series_split, only: max_chain, deformation_split_t, split_deformation, split_ok, split_no_convergence, &
       split_not_finite, path_none, path_pair, path_newton, path_search, region_slack, region_unloaded, &
@@ -67,7 +67,7 @@ module series_chain
 
    public :: max_chain, series_chain_t, chain_split_t, chain_new, chain_split, chain_accept, chain_energies
    public :: chain_set_initial, chain_relaxing, chain_split_text, chain_gates, chain_n_aux, chain_stateful
-   public :: chain_stateful_any
+   public :: chain_stateful_any, chain_n_switch, chain_switches, chain_track_kinks
    public :: split_ok, split_no_convergence, split_not_finite
    public :: path_none, path_pair, path_newton, path_search, region_slack, region_unloaded, region_loaded
 
@@ -102,6 +102,10 @@ module series_chain
       !! and on the whole chain
       real(wp) :: w_initial(max_chain) = 0.0_wp, w_initial_chain = 0.0_wp
       integer :: max_iter = 60
+      !> (issue 15) the kinks of each element's curve about its branch's
+      !! argument at the last accepted state (curve_kinks_about; -huge,
+      !! huge: none): it switches where the argument leaves [lo, hi)
+      real(wp) :: kink_lo(max_chain) = -huge(1.0_wp), kink_hi(max_chain) = huge(1.0_wp)
    end type series_chain_t
 
    !> The chain at one state.
@@ -141,6 +145,9 @@ contains
       if (present(cap)) ch%cap(1:ch%n) = cap
       if (present(gated)) ch%gated(1:ch%n) = gated
       if (present(max_iter)) ch%max_iter = max_iter
+      do i = 1, ch%n
+         call track_kink(ch, i, 0.0_wp)      ! every element undeformed
+      end do
       if (ch%n == 1) then
          ch%rated(1) = ch%law(1)%n_rate > 0
          if (ch%rated(1)) ch%rest = 1
@@ -552,9 +559,163 @@ contains
       do i = 1, ch%n
          if (ch%stateful(i)) ch%x_offset(i) = dsp%x(i)
          ch%w_initial(i) = element_stored(ch, i, dsp%x(i), g(i))
+         call track_kink(ch, i, dsp%x(i))
       end do
       ch%w_initial_chain = sum(ch%w_initial(1:ch%n))
    end subroutine chain_set_initial
+
+   !> Issue 15: how many switching functions the chain has (chain_switches):
+   !! its slack taken up or released; the clip of a single rate-dependent
+   !! element's force, or of the absorber's, at 0; per element with a curve
+   !! its turning point (unless it is elastic) and the kinks of its curve
+   !! below and above it.
+   pure integer function chain_n_switch(ch) result(n)
+      type(series_chain_t), intent(in) :: ch
+      integer :: i
+      n = 1
+      if ((ch%n == 1 .and. ch%rated(1)) .or. ch%absorber > 0) n = n + 1
+      do i = 1, ch%n
+         if (.not. curve_is_defined(ch%law(i)%curve)) cycle
+         if (.not. ch%law(i)%elastic) n = n + 1
+         n = n + 2
+      end do
+   end function chain_n_switch
+
+   !> Issue 15: the chain's switching functions at deformation s, rate s_dot
+   !! and states aux (chain_split's arguments; guess its start), in the
+   !! order chain_n_switch counts them, each continuous in the state for the
+   !! memories the chain holds and changing sign exactly where the tension,
+   !! or its slope, changes discontinuously, or where a memory must change:
+   !! - slack (in): the part of s the rate-independent elements share less
+   !!   their residual deformations, sfree - sum z_i (one element: s - z):
+   !!   > 0 where the chain carries load (series_split's regions). T is
+   !!   continuous there, its slope is not (with rate terms of a single
+   !!   element, T itself jumps);
+   !! - clip (lb): a single rate-dependent element's F_b + F_v(s'), or the
+   !!   absorber's tension at T = 0 (-psi(0), chain_split), where its branch
+   !!   carries load (else +1): T = max(0, ...) kinks where it is 0;
+   !! - per element with a curve: its turning point or new cycle (unless
+   !!   elastic; in/s; loading_branch's turn_switch, 1e-7 in/s past 0): for
+   !!   a rate-independent element the rate they share, r' = s' - sum x_d'
+   !!   (their rates are shares of it), where the chain carries load; for a
+   !!   state its own x_d'; then, in in, its branch's argument (branch_argument)
+   !!   less the kink of its curve below it at the last accepted state, and
+   !!   the kink above less the argument (+1 where there is none): where a
+   !!   table's point, or the end of its flat start, is passed.
+   !! Where one is exactly 0 at a point the law counts as short of its switch
+   !! (no load at a slack of 0, the kink interval's lower end inside it), it
+   !! is nudged to that side (zero_on_side): the driver accepts where a
+   !! function reaches 0. Pure, like chain_split. A
+   !! split that fails gives +1 everywhere (the evaluation that follows
+   !! fails and says why).
+   pure subroutine chain_switches(ch, s, s_dot, aux, g, guess)
+      type(series_chain_t), intent(in) :: ch
+      real(wp), intent(in) :: s, s_dot, aux(:)
+      real(wp), intent(out) :: g(:)
+      real(wp), intent(in), optional :: guess
+      type(chain_split_t) :: sp
+      type(branch_point_t) :: bp
+      real(wp) :: r_dot, fb(max_chain), va, d
+      logical :: taut
+      integer :: i, k, n
+      g = 1.0_wp
+      n = ch%n
+      call chain_split(ch, s, s_dot, aux, sp, guess)
+      if (sp%status /= split_ok) return
+      ! the slack: what the rate-independent elements share less their residuals
+      k = 1
+      if (n == 1) then
+         g(k) = s - zero_extent(ch%law(1), ch%mem(1))
+      else
+         g(k) = s
+         do i = 1, n
+            if (ch%stateful(i)) then
+               g(k) = g(k) - sp%x(i)
+            else
+               g(k) = g(k) - zero_extent(ch%law(i), ch%mem(i))
+            end if
+         end do
+      end if
+      g(k) = zero_on_side(g(k), .false.)    ! (no load at 0)
+      taut = g(k) > 0.0_wp
+      ! the rate the rate-independent elements share; the states' branch forces
+      r_dot = s_dot
+      do i = 1, n
+         fb(i) = 0.0_wp
+         if (.not. ch%stateful(i)) cycle
+         r_dot = r_dot - sp%rate(i)
+         bp = branch_at(ch%law(i), ch%mem(i), sp%x(i))
+         fb(i) = bp%force
+      end do
+      ! the clip at T = 0 of a single rate-dependent element or the absorber
+      if (n == 1 .and. ch%rated(1)) then
+         k = k + 1
+         bp = branch_at(ch%law(1), ch%mem(1), s)
+         if (taut .and. bp%force > 0.0_wp) g(k) = bp%force + rate_force(ch%law(1), s_dot)
+      else if (ch%absorber > 0) then
+         k = k + 1
+         bp = branch_at(ch%law(ch%absorber), ch%mem(ch%absorber), sp%x(ch%absorber))
+         if (taut .and. bp%force > 0.0_wp) then
+            va = s_dot
+            do i = 1, n
+               if (ch%stateful(i)) va = va - rate_inverse(ch%law(i), -fb(i))
+            end do
+            g(k) = bp%force + rate_force(ch%law(ch%absorber), va)
+         end if
+      end if
+      ! per element: its turning point, the kinks of its curve about it
+      do i = 1, n
+         if (.not. curve_is_defined(ch%law(i)%curve)) cycle
+         if (.not. ch%law(i)%elastic) then
+            k = k + 1
+            if (ch%stateful(i)) then
+               ! a state's own rate, where it carries load or not: below its
+               ! residual it is F_v^-1(T) >= 0, so nothing switches there but
+               ! where T reaches 0 (with the slack). (A state taken up at the
+               ! end of a step can be left a little deformed and relaxing by
+               ! the step's later stages: it turns at once, unlocated, and
+               ! takes a new cycle where its rate becomes positive, located;
+               ! a function that changed to a constant where it took load
+               ! would cross there by a jump, which takes the location a
+               ! hundred tries.)
+               g(k) = turn_switch(ch%mem(i), .true., sp%rate(i))
+            else
+               g(k) = turn_switch(ch%mem(i), taut, r_dot)
+            end if
+         end if
+         d = branch_argument(ch%law(i), ch%mem(i), sp%x(i))
+         ! (the interval [lo, hi) holds its lower end, not its upper)
+         if (ch%kink_lo(i) > -huge(1.0_wp)) g(k + 1) = zero_on_side(d - ch%kink_lo(i), .true.)
+         if (ch%kink_hi(i) < huge(1.0_wp)) g(k + 2) = ch%kink_hi(i) - d
+         k = k + 2
+      end do
+   end subroutine chain_switches
+
+   !> Issue 15: after an ACCEPTED step, with the memories accept left (sp:
+   !! the chain's split there with them), the kinks of each element's curve
+   !! about its branch's argument, which chain_switches' kink functions
+   !! measure from until the next accepted step.
+   pure subroutine chain_track_kinks(ch, sp)
+      type(series_chain_t), intent(inout) :: ch
+      type(chain_split_t), intent(in) :: sp
+      integer :: i
+      if (sp%status /= split_ok) return
+      do i = 1, ch%n
+         call track_kink(ch, i, sp%x(i))
+      end do
+   end subroutine chain_track_kinks
+
+   !> Element i's kinks about its branch's argument at deformation x.
+   pure subroutine track_kink(ch, i, x)
+      type(series_chain_t), intent(inout) :: ch
+      integer, intent(in) :: i
+      real(wp), intent(in) :: x
+      ch%kink_lo(i) = -huge(1.0_wp)
+      ch%kink_hi(i) = huge(1.0_wp)
+      if (.not. curve_is_defined(ch%law(i)%curve)) return
+      call curve_kinks_about(ch%law(i)%curve, branch_argument(ch%law(i), ch%mem(i), x), ch%kink_lo(i), &
+                             ch%kink_hi(i))
+   end subroutine track_kink
 
    !> Why a split failed, for the failure message.
    pure function chain_split_text(sp, s, s_dot, max_iter, setting) result(text)
