@@ -87,9 +87,10 @@ contains
       integer :: n
       n = size(y0)
       if (allocated(this%f)) deallocate (this%f, this%f1, this%f2, this%f3, this%ynew, &
-                                         this%yold, this%fnew, this%ytmp, this%y_failed)
+                                         this%yold, this%fnew, this%ytmp, this%y_failed, this%local_error)
       allocate (this%f(n), this%f1(n), this%f2(n), this%f3(n), this%ynew(n), this%yold(n), &
-                this%fnew(n), this%ytmp(n), this%y_failed(n))
+                this%fnew(n), this%ytmp(n), this%y_failed(n), this%local_error(n))
+      this%local_error = 0.0_wp
       call am_begin(this, sys, t0, y0, err)
    end subroutine am_init
 
@@ -135,6 +136,7 @@ contains
       type(error_t), intent(inout) :: err
       real(wp) :: h, t_new
       logical :: starting, short
+      integer :: i
 
       h = this%h
       t_new = this%t0 + real(this%n + 1, wp)*h
@@ -154,7 +156,7 @@ contains
          return
       end if
       associate (f0 => this%f, f1 => this%f1, f2 => this%f2, f3 => this%f3, &
-                 ynew => this%ynew, yold => this%yold, fnew => this%fnew, yt => this%ytmp)
+                 ynew => this%ynew, yold => this%yold, fnew => this%fnew, yt => this%ytmp, le => this%local_error)
          if (starting .and. this%start == am_start_rk4) then
             ! start option (C.3: "different schemes could be chosen according
             ! to the option"): classic RK4, fourth order so the start no longer
@@ -170,6 +172,9 @@ contains
             yt = y + h*fnew
             if (.not. evaluate(t_new, yt, fnew)) return
             ynew = ynew + (h/6.0_wp)*fnew
+            ! the embedded third-order estimate, as RK4's own (runge_kutta4),
+            ! completed with the final evaluation below
+            le = (h/6.0_wp)*fnew
             if (.not. all(ieee_is_finite(ynew))) then
                call this%give_up_not_finite(err)
                return
@@ -179,11 +184,39 @@ contains
                ynew = y + h*f0                    ! C.3 modified Euler: Euler predictor
             else
                ynew = am_predictor(h, y, f0, f1, f2, f3)   ! C.3 predictor
+               le = ynew
             end if
             if (.not. correct()) return
+            ! local error estimates (docs/accuracy.md)
+            if (.not. starting) then
+               ! Milne's device: the predictor's and corrector's errors are
+               ! 251/720 and -19/720 h^5 y(5), so the corrector's is
+               ! -19/270 of their difference
+               do i = 1, size(le)   ! (element by element: no temporary for le on both sides)
+                  le(i) = (-19.0_wp/270.0_wp)*(ynew(i) - le(i))
+               end do
+            else if (this%n > 0) then
+               ! a start step with a back value at h: the trapezoidal
+               ! corrector (-1/12 h^3 y''') against Adams-Bashforth's second
+               ! order (5/12 h^3 y'''), Milne's device again
+               le = (-1.0_wp/6.0_wp)*(ynew - (y + (0.5_wp*h)*(3.0_wp*f0 - f1)))
+            else
+               ! the first start step has no back value: the trapezoid's
+               ! fixed point against its first iterate (Heun's method), a
+               ! difference of the same order h^3
+               do i = 1, size(le)
+                  le(i) = ynew(i) - le(i)
+               end do
+            end if
          end if
          ! final evaluation at the accepted point
          if (.not. evaluate(t_new, ynew, fnew)) return
+         if (starting .and. this%start == am_start_rk4) then
+            do i = 1, size(le)
+               le(i) = le(i) - (h/6.0_wp)*fnew(i)
+            end do
+         end if
+         this%local_error_new = .true.
          f3 = f2
          f2 = f1
          f1 = f0
@@ -218,6 +251,8 @@ contains
                   ynew = am_corrector(h, y, fnew, f0, f1, f2)   ! C.3 corrector
                end if
                this%stats%corrector_iterations = this%stats%corrector_iterations + 1
+               ! the first start step keeps its first iterate for its estimate
+               if (iter == 1 .and. starting .and. this%n == 0) this%local_error = ynew
                if (.not. all(ieee_is_finite(ynew))) then
                   call this%give_up_not_finite(err)
                   return

@@ -10,6 +10,7 @@ module run_summary
    use effect_events, only: event_t
    use effect_peaks, only: effect_peak_t
    use acceleration_criteria, only: acceleration_criteria_t
+   use accuracy_estimate, only: accuracy_t
    implicit none
    private
 
@@ -41,6 +42,9 @@ module run_summary
       !> the largest values its effects kept over the accepted steps (the
       !! contact pairs' forces), at the end of the run
       type(effect_peak_t), allocatable :: peaks(:)
+      !> how accurate the run was: the fixed-step integrators' local error
+      !! estimates accumulated (docs/accuracy.md)
+      type(accuracy_t) :: accuracy
    end type occupant_summary_t
 
    type :: run_summary_t
