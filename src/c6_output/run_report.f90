@@ -411,16 +411,18 @@ contains
             call lst%put(line)
             ! an error at the level of rounding has no meaningful time: say so,
             ! so that listings from different builds compare equal
-            if (abs(os%energy_error_max%value) <= 1.0e-12_wp*max(1.0_wp, os%ke_max)) then
-               call lst%put('  largest balance error    below 1.0E-12 of the largest body kinetic energy (rounding)')
+            write (line, '(a,es13.5,a)') '  scale                   ', os%energy_scale, &
+               ' in*lb: largest body kinetic energy or work the vehicle supplied (D-17a)'
+            call lst%put(line)
+            if (abs(os%energy_error_max%value) <= 1.0e-12_wp*max(1.0_wp, os%energy_scale)) then
+               call lst%put('  largest balance error    below 1.0E-12 of the scale (rounding)')
             else
                write (line, '(a,es13.5,a,a,a,es10.3,a)') '  largest balance error   ', os%energy_error_max%value, &
                   ' in*lb at t =', fixed(os%energy_error_max%t, 10, 5), ' s (', &
-                  abs(os%energy_error_max%value)/max(os%ke_max, tiny(1.0_wp)), ' of the largest body kinetic energy)'
+                  abs(os%energy_error_max%value)/max(os%energy_scale, tiny(1.0_wp)), ' of the scale)'
                call lst%put(line)
             end if
-            write (line, '(a,es10.3,a)') '  tolerance (EBTOL)        ', m%numerics%energy_tol, &
-               ' of the largest body kinetic energy'
+            write (line, '(a,es10.3,a)') '  tolerance (EBTOL)        ', m%numerics%energy_tol, ' of the scale'
             call lst%put(line)
             if (os%energy_flagged) then
                call lst%put('  THE ENERGY BALANCE FAILED at t ='//fixed(os%t_flagged, 10, 5)//' s: the results are ' &

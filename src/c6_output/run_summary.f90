@@ -37,6 +37,9 @@ module run_summary
       real(wp) :: e_error_final = 0.0_wp
       type(extreme_t) :: energy_error_max       !< largest |balance error| (signed value)
       real(wp) :: ke_max = 0.0_wp               !< largest body kinetic energy
+      real(wp) :: supplied_max = 0.0_wp         !< largest |work the vehicle supplied| so far
+      !> the energy balance's scale (D-17a): the larger of ke_max and supplied_max
+      real(wp) :: energy_scale = 0.0_wp
       logical :: energy_flagged = .false.       !< the balance exceeded its tolerance
       real(wp) :: t_flagged = 0.0_wp
       !> the largest values its effects kept over the accepted steps (the

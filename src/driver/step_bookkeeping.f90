@@ -33,7 +33,7 @@ module step_bookkeeping
 
    public :: step_books_t, record_failure
 
-   !> A balance error below this fraction of the largest kinetic energy is rounding.
+   !> A balance error below this fraction of its scale is rounding.
    real(wp), parameter :: rounding = 1.0e-9_wp
 
    type :: step_books_t
@@ -325,9 +325,13 @@ contains
    end subroutine force_passed
 
    !> The energy balance of C.6 at a print time t (each occupant's, from
-   !! its frame) against its tolerance (*NUMERICS EBTOL): a run whose
-   !! balance fails is flagged and, unless the deck says to continue, ends
-   !! as a numerical failure (summary%end_reason = end_energy, err: why).
+   !! its frame) against its tolerance (*NUMERICS EBTOL) times its scale
+   !! (D-17a): the larger of the largest body kinetic energy and the largest
+   !! work the moving vehicle has supplied, both so far, so that energy
+   !! that entered the body after a start at rest (a rear impact) counts
+   !! as much as energy it started with. A run whose balance fails is
+   !! flagged and, unless the deck says to continue, ends as a numerical
+   !! failure (summary%end_reason = end_energy, err: why).
    subroutine books_check_energy(this, sys, balance, t, summary, err)
       class(step_books_t), intent(in) :: this
       type(crash_system_t), intent(in) :: sys
@@ -340,10 +344,13 @@ contains
       do o = 1, size(balance)
          associate (os => summary%occ(o), eb => balance(o))
             os%ke_max = max(os%ke_max, eb%ke_body)
+            os%supplied_max = max(os%supplied_max, abs(eb%supplied))
+            os%energy_scale = max(os%ke_max, os%supplied_max)
             os%e_error_final = eb%error
             if (abs(eb%error) > abs(os%energy_error_max%value)) os%energy_error_max = extreme_t(eb%error, t)
             if (os%energy_flagged) cycle
-            if (abs(eb%error) > this%numerics%energy_tol*os%ke_max .and. abs(eb%error) > rounding*max(1.0_wp, os%ke_max)) then
+            if (abs(eb%error) > this%numerics%energy_tol*os%energy_scale .and. &
+                abs(eb%error) > rounding*max(1.0_wp, os%energy_scale)) then
                os%energy_flagged = .true.
                os%t_flagged = t
                if (.not. this%numerics%energy_continue .and. summary%end_reason == end_none) then
@@ -352,9 +359,11 @@ contains
                   if (size(balance) > 1) who = trim(sys%occupants(o)%label)//': '
                   summary%end_reason = end_energy
                   why = who//'the energy balance error '//num(eb%error, 6)//' in*lb at t = '//num(t) &
-                     //' s exceeds EBTOL = '//num(this%numerics%energy_tol)//' of the largest body kinetic energy (' &
-                     //num(os%ke_max, 6)//' in*lb): the results are not trustworthy. A smaller DT (or NINT = 3 ' &
-                     //'with tighter RTOL) should help; *NUMERICS EBFAIL = CONTINUE runs on regardless'
+                     //' s exceeds EBTOL = '//num(this%numerics%energy_tol)//' of its scale, the larger of the ' &
+                     //'largest body kinetic energy ('//num(os%ke_max, 6)//' in*lb) and the largest work the ' &
+                     //'vehicle supplied ('//num(os%supplied_max, 6)//' in*lb): the results are not trustworthy. ' &
+                     //'A smaller DT (or NINT = 3 with tighter RTOL) should help; *NUMERICS EBFAIL = CONTINUE ' &
+                     //'runs on regardless'
                   if (this%pulse_tabulated) &
                      why = why//'. Tabulated vehicle rates or positions that are not ' &
                            //'the integrals of its accelerations (C.3) make such an error whatever DT: ' &
