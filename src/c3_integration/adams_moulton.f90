@@ -202,10 +202,12 @@ contains
                le = (-1.0_wp/6.0_wp)*(ynew - (y + (0.5_wp*h)*(3.0_wp*f0 - f1)))
             else
                ! the first start step has no back value: the trapezoid's
-               ! fixed point against its first iterate (Heun's method), a
-               ! difference of the same order h^3
+               ! fixed point y_c against its first iterate y_1 (Heun's
+               ! method): y_c - y_1 = h/2 J (y_c - y_Euler) = h^3/4 J y'',
+               ! which is h^3/4 y''' where f is linear in y, so the
+               ! trapezoid's -h^3/12 y''' is -1/3 of it
                do i = 1, size(le)
-                  le(i) = ynew(i) - le(i)
+                  le(i) = (-1.0_wp/3.0_wp)*(ynew(i) - le(i))
                end do
             end if
          end if
