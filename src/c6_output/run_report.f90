@@ -8,7 +8,7 @@
 !! injuries, the end of the run, the energy balance, the cost).
 module run_report
    use kinds, only: wp, deg, g_std, i8
-   use strings, only: itoa
+   use strings, only: itoa, num
    use model, only: model_t, n_joint, n_injury, joint_name, integrator_name, nint_adams
    use deck_reader, only: deck_t, echo_bad, echo_header
    use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text
@@ -509,12 +509,12 @@ contains
             if (.not. a%on) cycle
             who = ''
             if (size(res%occ) > 1) who = ', OCCUPANT '//itoa(o)
-            call lst%heading('ACCURACY OF THE FIXED STEP DT ='//fixed(m%time%dt, 12, 8)//' s'//who &
+            call lst%heading('ACCURACY OF THE FIXED STEP DT = '//num(m%time%dt)//' s'//who &
                              //': LOCAL ERROR ESTIMATES ACCUMULATED (docs/accuracy.md)', 8)
             j = a%worst_joint(res%t_end)
             call lst%put('  joint angles: largest estimated error'//fixed(a%joint_angle(j, res%t_end)/deg, 10, 3) &
-                         //' deg ('//trim(joint_name(j))//'): from the steps'' truncation' &
-                         //fixed(a%joint_truncation(j, res%t_end)/deg, 10, 3)//', from switches at a step''s end' &
+                         //' deg ('//trim(joint_name(j))//'): steps'' truncation' &
+                         //fixed(a%joint_truncation(j, res%t_end)/deg, 10, 3)//', switches at a step''s end' &
                          //fixed(a%joint_switching(j, res%t_end)/deg, 10, 3))
             call lst%put('  head acceleration: estimated error of its peak'//fixed(a%head_error/g_std, 10, 3)//' g,' &
                          //fixed(100.0_wp*a%head_relative(os%head_max%value), 8, 3)//' % of it')
