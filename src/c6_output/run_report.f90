@@ -366,7 +366,8 @@ contains
             head = '  head acceleration  '//fixed(os%head_max%value/g_std, 10, 3)//' g   at t ='// &
                    fixed(os%head_max%t, 10, 5)//' s'
             ! its estimated error, beside it (docs/accuracy.md)
-            if (os%accuracy%on) head = head//'   estimated error'//fixed(os%accuracy%head_error/g_std, 10, 3)//' g (' &
+            if (os%accuracy%on .and. os%accuracy%head_evaluations > 0) &
+               head = head//'   estimated error'//fixed(os%accuracy%head_error/g_std, 10, 3)//' g (' &
                                        //fixed(100.0_wp*os%accuracy%head_relative(os%head_max%value), 6, 2)//' %)'
             call lst%put(head)
             call lst%put('  chest acceleration '//fixed(os%chest_max%value/g_std, 10, 3)//' g   at t ='// &
@@ -516,8 +517,12 @@ contains
                          //' deg ('//trim(joint_name(j))//'): steps'' truncation' &
                          //fixed(a%joint_truncation(j, res%t_end)/deg, 10, 3)//', switches at a step''s end' &
                          //fixed(a%joint_switching(j, res%t_end)/deg, 10, 3))
-            call lst%put('  head acceleration: estimated error of its peak'//fixed(a%head_error/g_std, 10, 3)//' g,' &
-                         //fixed(100.0_wp*a%head_relative(os%head_max%value), 8, 3)//' % of it')
+            if (a%head_evaluations > 0) then
+               call lst%put('  head acceleration: estimated error of its peak'//fixed(a%head_error/g_std, 10, 3)//' g,' &
+                            //fixed(100.0_wp*a%head_relative(os%head_max%value), 8, 3)//' % of it')
+            else
+               call lst%put('  head acceleration: its peak not estimated (below 1 g, or at t = 0)')
+            end if
             call lst%put('  steps estimated'//right_int(a%steps, 12)//',  switches at a step''s end'//right_int(a%switches, 10) &
                          //',  evaluations for the head''s estimate'//right_int(a%head_evaluations, 8))
             call lst%put('  thresholds: '//fixed(angle_threshold/deg, 4, 1)//' deg on a joint angle, ' &
