@@ -135,7 +135,7 @@ contains
       real(wp), intent(in) :: t_limit
       type(error_t), intent(inout) :: err
       real(wp) :: h, t_new
-      logical :: starting, short
+      logical :: starting, short, back_value
       integer :: i
 
       h = this%h
@@ -145,6 +145,9 @@ contains
       ! to a located switch, or back to the grid after one (issue 15); a new
       ! grid starts there
       short = starting .and. t_limit < t_new - 1.0e-6_wp*h
+      ! a start step whose estimate may use the back value f1, a step of h
+      ! before (docs/accuracy.md)
+      back_value = starting .and. this%n > 0 .and. .not. short
       if (short) then
          h = t_limit - t
          t_new = t_limit
@@ -195,13 +198,14 @@ contains
                do i = 1, size(le)   ! (element by element: no temporary for le on both sides)
                   le(i) = (-19.0_wp/270.0_wp)*(ynew(i) - le(i))
                end do
-            else if (this%n > 0) then
+            else if (back_value) then
                ! a start step with a back value at h: the trapezoidal
                ! corrector (-1/12 h^3 y''') against Adams-Bashforth's second
                ! order (5/12 h^3 y'''), Milne's device again
                le = (-1.0_wp/6.0_wp)*(ynew - (y + (0.5_wp*h)*(3.0_wp*f0 - f1)))
             else
-               ! the first start step has no back value: the trapezoid's
+               ! the first start step (or a shorter one) has no back value at
+               ! its own step: the trapezoid's
                ! fixed point y_c against its first iterate y_1 (Heun's
                ! method): y_c - y_1 = h/2 J (y_c - y_Euler) = h^3/4 J y'',
                ! which is h^3/4 y''' where f is linear in y, so the
@@ -253,8 +257,9 @@ contains
                   ynew = am_corrector(h, y, fnew, f0, f1, f2)   ! C.3 corrector
                end if
                this%stats%corrector_iterations = this%stats%corrector_iterations + 1
-               ! the first start step keeps its first iterate for its estimate
-               if (iter == 1 .and. starting .and. this%n == 0) this%local_error = ynew
+               ! a start step without a back value keeps its first iterate for
+               ! its estimate
+               if (iter == 1 .and. starting .and. .not. back_value) this%local_error = ynew
                if (.not. all(ieee_is_finite(ynew))) then
                   call this%give_up_not_finite(err)
                   return
