@@ -233,7 +233,9 @@ contains
       t(g_time)%note = 'For the fixed-step integrators (NINT 1, 2) TMAX and DTPRINT must be whole multiples ' &
          //'of DT. For NINT 3, DT is the first trial step and the step never exceeds DTPRINT. RTOL is at ' &
          //'least 1e-14 (RTOL = 0 is refused): some 50 times the rounding of a double, below which the error ' &
-         //'estimate of a step is itself rounding and a tighter tolerance would only shrink the step.'
+         //'estimate of a step is itself rounding and a tighter tolerance would only shrink the step.' &
+         //' A fixed-step run estimates its error and warns when DT is too large for the deck, and when the ' &
+         //'corrector reached CITER (docs/accuracy.md).'
       call set_fields(t(g_time), [ &
          real_field('TMAX', 's', one, blank_default, 0.2_wp, zero, 1.0e3_wp, 'duration of the run', .true.), &
          real_field('DT', 's', one, blank_default, 1.0e-4_wp, zero, 1.0_wp, 'integration step', .true.), &
@@ -440,8 +442,9 @@ contains
       t(g_numerics)%title = 'Numerical controls beyond the report (C.3, C.5, C.6)'
       t(g_numerics)%note = 'ASTART: how Adams-Moulton (NINT 1) starts, by the report''s modified Euler ' &
          //'(order 3) or by RK4 (order 4). SOLVER: A z'''' = b by an L D L^T written for the body''s ' &
-         //'structure or by LAPACK (equal to rounding). An energy-balance error beyond EBTOL times the ' &
-         //'largest body kinetic energy flags the run; with EBFAIL = STOP it ends as a numerical failure (exit 3).'
+         //'structure or by LAPACK (equal to rounding). An energy-balance error beyond EBTOL times its ' &
+         //'scale, the larger of the largest body kinetic energy and the largest work the vehicle has supplied ' &
+         //'so far (D-17a), flags the run; with EBFAIL = STOP it ends as a numerical failure (exit 3).'
       call set_fields(t(g_numerics), [ &
          word_field('ASTART', 'EULER|RK4', blank_default, 'Adams-Moulton start'), &
          word_field('SOLVER', 'STRUCTURED|DENSE', blank_default, 'linear solver of C.5'), &

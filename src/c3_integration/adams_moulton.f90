@@ -87,9 +87,10 @@ contains
       integer :: n
       n = size(y0)
       if (allocated(this%f)) deallocate (this%f, this%f1, this%f2, this%f3, this%ynew, &
-                                         this%yold, this%fnew, this%ytmp, this%y_failed)
+                                         this%yold, this%fnew, this%ytmp, this%y_failed, this%local_error)
       allocate (this%f(n), this%f1(n), this%f2(n), this%f3(n), this%ynew(n), this%yold(n), &
-                this%fnew(n), this%ytmp(n), this%y_failed(n))
+                this%fnew(n), this%ytmp(n), this%y_failed(n), this%local_error(n))
+      this%local_error = 0.0_wp
       call am_begin(this, sys, t0, y0, err)
    end subroutine am_init
 
@@ -134,7 +135,8 @@ contains
       real(wp), intent(in) :: t_limit
       type(error_t), intent(inout) :: err
       real(wp) :: h, t_new
-      logical :: starting, short
+      logical :: starting, short, back_value
+      integer :: i
 
       h = this%h
       t_new = this%t0 + real(this%n + 1, wp)*h
@@ -143,6 +145,9 @@ contains
       ! to a located switch, or back to the grid after one (issue 15); a new
       ! grid starts there
       short = starting .and. t_limit < t_new - 1.0e-6_wp*h
+      ! a start step whose estimate may use the back value f1, a step of h
+      ! before (docs/accuracy.md)
+      back_value = starting .and. this%n > 0 .and. .not. short
       if (short) then
          h = t_limit - t
          t_new = t_limit
@@ -154,7 +159,7 @@ contains
          return
       end if
       associate (f0 => this%f, f1 => this%f1, f2 => this%f2, f3 => this%f3, &
-                 ynew => this%ynew, yold => this%yold, fnew => this%fnew, yt => this%ytmp)
+                 ynew => this%ynew, yold => this%yold, fnew => this%fnew, yt => this%ytmp, le => this%local_error)
          if (starting .and. this%start == am_start_rk4) then
             ! start option (C.3: "different schemes could be chosen according
             ! to the option"): classic RK4, fourth order so the start no longer
@@ -170,6 +175,9 @@ contains
             yt = y + h*fnew
             if (.not. evaluate(t_new, yt, fnew)) return
             ynew = ynew + (h/6.0_wp)*fnew
+            ! the embedded third-order estimate, as RK4's own (runge_kutta4),
+            ! completed with the final evaluation below
+            le = (h/6.0_wp)*fnew
             if (.not. all(ieee_is_finite(ynew))) then
                call this%give_up_not_finite(err)
                return
@@ -179,11 +187,42 @@ contains
                ynew = y + h*f0                    ! C.3 modified Euler: Euler predictor
             else
                ynew = am_predictor(h, y, f0, f1, f2, f3)   ! C.3 predictor
+               le = ynew
             end if
             if (.not. correct()) return
+            ! local error estimates (docs/accuracy.md)
+            if (.not. starting) then
+               ! Milne's device: the predictor's and corrector's errors are
+               ! 251/720 and -19/720 h^5 y(5), so the corrector's is
+               ! -19/270 of their difference
+               do i = 1, size(le)   ! (element by element: no temporary for le on both sides)
+                  le(i) = (-19.0_wp/270.0_wp)*(ynew(i) - le(i))
+               end do
+            else if (back_value) then
+               ! a start step with a back value at h: the trapezoidal
+               ! corrector (-1/12 h^3 y''') against Adams-Bashforth's second
+               ! order (5/12 h^3 y'''), Milne's device again
+               le = (-1.0_wp/6.0_wp)*(ynew - (y + (0.5_wp*h)*(3.0_wp*f0 - f1)))
+            else
+               ! the first start step (or a shorter one) has no back value at
+               ! its own step: the trapezoid's
+               ! fixed point y_c against its first iterate y_1 (Heun's
+               ! method): y_c - y_1 = h/2 J (y_c - y_Euler) = h^3/4 J y'',
+               ! which is h^3/4 y''' where f is linear in y, so the
+               ! trapezoid's -h^3/12 y''' is -1/3 of it
+               do i = 1, size(le)
+                  le(i) = (-1.0_wp/3.0_wp)*(ynew(i) - le(i))
+               end do
+            end if
          end if
          ! final evaluation at the accepted point
          if (.not. evaluate(t_new, ynew, fnew)) return
+         if (starting .and. this%start == am_start_rk4) then
+            do i = 1, size(le)
+               le(i) = le(i) - (h/6.0_wp)*fnew(i)
+            end do
+         end if
+         this%local_error_new = .true.
          f3 = f2
          f2 = f1
          f1 = f0
@@ -218,6 +257,9 @@ contains
                   ynew = am_corrector(h, y, fnew, f0, f1, f2)   ! C.3 corrector
                end if
                this%stats%corrector_iterations = this%stats%corrector_iterations + 1
+               ! a start step without a back value keeps its first iterate for
+               ! its estimate
+               if (iter == 1 .and. starting .and. .not. back_value) this%local_error = ynew
                if (.not. all(ieee_is_finite(ynew))) then
                   call this%give_up_not_finite(err)
                   return

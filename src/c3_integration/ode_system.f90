@@ -74,6 +74,13 @@ module ode_system
       real(wp) :: t_failed = 0.0_wp
       integer :: code_failed = 0
       real(wp), allocatable :: y_failed(:)
+      !> the local error estimate of the last step advance took, in y's
+      !! layout (y_exact - y_step, signed): given by the fixed-step
+      !! integrators (docs/accuracy.md); not allocated when a stepper gives
+      !! none. local_error_new: set by advance, cleared by the reader, so
+      !! that a step is counted once
+      real(wp), allocatable :: local_error(:)
+      logical :: local_error_new = .false.
    contains
       procedure(init_interface), deferred :: init
       procedure(advance_interface), deferred :: advance

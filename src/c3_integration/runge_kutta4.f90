@@ -35,8 +35,9 @@ contains
       type(error_t), intent(inout) :: err
       integer :: n
       n = size(y0)
-      if (allocated(this%f)) deallocate (this%f, this%k2, this%k3, this%k4, this%ytmp, this%y_failed)
-      allocate (this%f(n), this%k2(n), this%k3(n), this%k4(n), this%ytmp(n), this%y_failed(n))
+      if (allocated(this%f)) deallocate (this%f, this%k2, this%k3, this%k4, this%ytmp, this%y_failed, this%local_error)
+      allocate (this%f(n), this%k2(n), this%k3(n), this%k4(n), this%ytmp(n), this%y_failed(n), this%local_error(n))
+      this%local_error = 0.0_wp
       call rk4_begin(this, sys, t0, y0, err)
    end subroutine rk4_init
 
@@ -99,6 +100,12 @@ contains
          end if
          ! derivative at the new point: the first stage of the next step
          if (.not. evaluate(t_new, yt, k2)) return
+         ! local error estimate (docs/accuracy.md): the embedded third-order
+         ! solution y + h/6 (k1 + 2 k2 + 2 k3 + f(t+h, y_new)) from the
+         ! stages already taken (the last is the next step's first): no
+         ! extra evaluation
+         this%local_error = (h/6.0_wp)*(k4 - k2)
+         this%local_error_new = .true.
          y = yt
          k1 = k2
       end associate

@@ -34,6 +34,9 @@ module output_producers
       real(wp) :: ke_body = 0.0_wp
       real(wp) :: total = 0.0_wp
       real(wp) :: error = 0.0_wp
+      !> the work the moving vehicle has supplied to the body since t = 0
+      !! (every effect's supplied energy), the balance's scale with ke_body
+      real(wp) :: supplied = 0.0_wp
    end type energy_balance_t
 
 contains
@@ -155,6 +158,7 @@ contains
       do k = 1, size(occ%effects)
          call effect_energy(occ, k, st, y, e)
          eb%total = eb%total + e(energy_stored) + e(energy_dissipated) - e(energy_supplied)
+         eb%supplied = eb%supplied + e(energy_supplied)
       end do
       eb%error = eb%total - total0
    end function frame_energy

@@ -8,7 +8,7 @@
 !! injuries, the end of the run, the energy balance, the cost).
 module run_report
    use kinds, only: wp, deg, g_std, i8
-   use strings, only: itoa
+   use strings, only: itoa, num
    use model, only: model_t, n_joint, n_injury, joint_name, integrator_name, nint_adams
    use deck_reader, only: deck_t, echo_bad, echo_header
    use deck_cards, only: group_spec_t, layout_indexed, layout_multi, kind_text
@@ -27,6 +27,8 @@ module run_report
    use acceleration_criteria, only: hic_result_t
    use event_text, only: event_description
    use end_tests, only: end_reason_text, end_failure, end_energy
+   use accuracy_estimate, only: accuracy_warnings, corrector_warning, angle_threshold, head_threshold
+   use text_io, only: string_t
    implicit none
    private
 
@@ -361,15 +363,22 @@ contains
       do o = 1, size(res%occ)
          associate (os => res%occ(o))
             call lst%heading('MAXIMA OVER ALL ACCEPTED STEPS', 4)
-            call lst%put('  head acceleration  '//fixed(os%head_max%value/g_std, 10, 3)//' g   at t ='// &
-                         fixed(os%head_max%t, 10, 5)//' s')
+            head = '  head acceleration  '//fixed(os%head_max%value/g_std, 10, 3)//' g   at t ='// &
+                   fixed(os%head_max%t, 10, 5)//' s'
+            ! its estimated error, beside it (docs/accuracy.md)
+            if (os%accuracy%on .and. os%accuracy%head_evaluations > 0) &
+               head = head//'   estimated error'//fixed(os%accuracy%head_error/g_std, 10, 3)//' g (' &
+                                       //fixed(100.0_wp*os%accuracy%head_relative(os%head_max%value), 6, 2)//' %)'
+            call lst%put(head)
             call lst%put('  chest acceleration '//fixed(os%chest_max%value/g_std, 10, 3)//' g   at t ='// &
                          fixed(os%chest_max%t, 10, 5)//' s')
             call put_injury_criteria(lst, os)
             call put_peaks(lst, os)
 
             call lst%heading('JOINT ANGLE RANGES, ALPHA(I) - ALPHA(M) (deg)', 10)
-            call lst%put('   I  JOINT          MINIMUM   AT t (s)    MAXIMUM   AT t (s)    STOPS            DISLOCATION')
+            head = '   I  JOINT          MINIMUM   AT t (s)    MAXIMUM   AT t (s)    STOPS            DISLOCATION'
+            if (os%accuracy%on) head = head//'    EST. ERROR'
+            call lst%put(head)
             do i = 1, n_joint
                associate (r => m%joints%restraint(i))
                   write (line, '(i4,2x,a12,10a)') i, joint_name(i), fixed(os%joint_min(i)%value/deg, 10, 3), &
@@ -377,6 +386,8 @@ contains
                      fixed(os%joint_max(i)%t, 11, 5), '  ', fixed(r%lower/deg, 8, 2), fixed(r%upper/deg, 8, 2), ' ', &
                      fixed(r%dislocation_lower/deg, 8, 2), fixed(r%dislocation_upper/deg, 8, 2)
                end associate
+               ! the angle's estimated error at the end of the run (docs/accuracy.md)
+               if (os%accuracy%on) line = trim(line)//'    '//fixed(os%accuracy%joint_angle(i, res%t_end)/deg, 10, 3)
                call lst%put(line)
             end do
          end associate
@@ -401,16 +412,18 @@ contains
             call lst%put(line)
             ! an error at the level of rounding has no meaningful time: say so,
             ! so that listings from different builds compare equal
-            if (abs(os%energy_error_max%value) <= 1.0e-12_wp*max(1.0_wp, os%ke_max)) then
-               call lst%put('  largest balance error    below 1.0E-12 of the largest body kinetic energy (rounding)')
+            write (line, '(a,es13.5,a)') '  scale                   ', os%energy_scale, &
+               ' in*lb: largest body kinetic energy or work the vehicle supplied (D-17a)'
+            call lst%put(line)
+            if (abs(os%energy_error_max%value) <= 1.0e-12_wp*max(1.0_wp, os%energy_scale)) then
+               call lst%put('  largest balance error    below 1.0E-12 of the scale (rounding)')
             else
                write (line, '(a,es13.5,a,a,a,es10.3,a)') '  largest balance error   ', os%energy_error_max%value, &
                   ' in*lb at t =', fixed(os%energy_error_max%t, 10, 5), ' s (', &
-                  abs(os%energy_error_max%value)/max(os%ke_max, tiny(1.0_wp)), ' of the largest body kinetic energy)'
+                  abs(os%energy_error_max%value)/max(os%energy_scale, tiny(1.0_wp)), ' of the scale)'
                call lst%put(line)
             end if
-            write (line, '(a,es10.3,a)') '  tolerance (EBTOL)        ', m%numerics%energy_tol, &
-               ' of the largest body kinetic energy'
+            write (line, '(a,es10.3,a)') '  tolerance (EBTOL)        ', m%numerics%energy_tol, ' of the scale'
             call lst%put(line)
             if (os%energy_flagged) then
                call lst%put('  THE ENERGY BALANCE FAILED at t ='//fixed(os%t_flagged, 10, 5)//' s: the results are ' &
@@ -436,12 +449,15 @@ contains
          if (m%options%nint == nint_adams) then
             call count_line('  corrector iterations       ', st%corrector_iterations)
             call count_line('  steps at the iteration limit', st%corrector_at_limit)
+            ev = corrector_warning(st, m%time%corrector_tol, m%time%corrector_max_iter)
+            if (len(ev) > 0) call lst%put('  WARNING: '//ev, indent=11)
          end if
          if (st%steps > 0) then
             write (line, '(a,es12.4,a,es12.4,a)') '  step size from          ', st%h_min, ' to', st%h_max, ' s'
             call lst%put(line)
          end if
       end associate
+      call put_accuracy(lst, m, res)
       call lst%put('  evaluations of each effect:')
       associate (unused => reg%n_values)
       end associate
@@ -481,6 +497,46 @@ contains
          s = res%effect_titles(k, occupant)
       end function effect_label
    end subroutine write_summary
+
+   !> How accurate the fixed step was (docs/accuracy.md): each occupant's
+   !! estimates, their parts and thresholds, and the warnings past them.
+   subroutine put_accuracy(lst, m, res)
+      type(listing_t), intent(inout) :: lst
+      type(model_t), intent(in) :: m
+      type(run_summary_t), intent(in) :: res
+      type(string_t), allocatable :: w(:)
+      character(len=:), allocatable :: who
+      integer :: o, j, k
+      do o = 1, size(res%occ)
+         associate (a => res%occ(o)%accuracy, os => res%occ(o))
+            if (.not. a%on) cycle
+            who = ''
+            if (size(res%occ) > 1) who = ', OCCUPANT '//itoa(o)
+            call lst%heading('ACCURACY OF THE FIXED STEP DT = '//num(m%time%dt)//' s'//who &
+                             //': LOCAL ERROR ESTIMATES ACCUMULATED (docs/accuracy.md)', 8)
+            j = a%worst_joint(res%t_end)
+            call lst%put('  joint angles: largest estimated error'//fixed(a%joint_angle(j, res%t_end)/deg, 10, 3) &
+                         //' deg ('//trim(joint_name(j))//'): steps'' truncation' &
+                         //fixed(a%joint_truncation(j, res%t_end)/deg, 10, 3)//', switches at a step''s end' &
+                         //fixed(a%joint_switching(j, res%t_end)/deg, 10, 3))
+            if (a%head_evaluations > 0) then
+               call lst%put('  head acceleration: estimated error of its peak'//fixed(a%head_error/g_std, 10, 3)//' g,' &
+                            //fixed(100.0_wp*a%head_relative(os%head_max%value), 8, 3)//' % of it')
+            else
+               call lst%put('  head acceleration: its peak not estimated (below 1 g, or at t = 0)')
+            end if
+            call lst%put('  steps estimated'//right_int(a%steps, 12)//',  switches at a step''s end'//right_int(a%switches, 10) &
+                         //',  evaluations for the head''s estimate'//right_int(a%head_evaluations, 8))
+            call lst%put('  thresholds: '//fixed(angle_threshold/deg, 4, 1)//' deg on a joint angle, ' &
+                         //fixed(100.0_wp*head_threshold, 4, 1)//' % of the peak head acceleration')
+            w = accuracy_warnings(a, '', os%head_max%value, res%t_end, m%time%dt)
+            if (size(w) == 0) call lst%put('  within the thresholds')
+            do k = 1, size(w)
+               call lst%put('  WARNING: '//w(k)%s, indent=11)
+            end do
+         end associate
+      end do
+   end subroutine put_accuracy
 
    !> HIC15, HIC36, GSI and the chest's 3 ms clip (docs/injury.md): not the
    !! report's criteria, which predate them, but what users now expect.

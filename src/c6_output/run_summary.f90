@@ -10,6 +10,7 @@ module run_summary
    use effect_events, only: event_t
    use effect_peaks, only: effect_peak_t
    use acceleration_criteria, only: acceleration_criteria_t
+   use accuracy_estimate, only: accuracy_t
    implicit none
    private
 
@@ -36,11 +37,17 @@ module run_summary
       real(wp) :: e_error_final = 0.0_wp
       type(extreme_t) :: energy_error_max       !< largest |balance error| (signed value)
       real(wp) :: ke_max = 0.0_wp               !< largest body kinetic energy
+      real(wp) :: supplied_max = 0.0_wp         !< largest |work the vehicle supplied| so far
+      !> the energy balance's scale (D-17a): the larger of ke_max and supplied_max
+      real(wp) :: energy_scale = 0.0_wp
       logical :: energy_flagged = .false.       !< the balance exceeded its tolerance
       real(wp) :: t_flagged = 0.0_wp
       !> the largest values its effects kept over the accepted steps (the
       !! contact pairs' forces), at the end of the run
       type(effect_peak_t), allocatable :: peaks(:)
+      !> how accurate the run was: the fixed-step integrators' local error
+      !! estimates accumulated (docs/accuracy.md)
+      type(accuracy_t) :: accuracy
    end type occupant_summary_t
 
    type :: run_summary_t

@@ -4,13 +4,14 @@
 !! line, calls run_case and turns the error into an exit status.
 module run_case_mod
    use error_handling, only: error_t, error_set, exit_io
-   use strings, only: num
+   use strings, only: num, itoa
+   use accuracy_estimate, only: accuracy_warnings, corrector_warning
    use text_io, only: string_t, append_string
    use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
    use deck_cards, only: g_pulsefile
    use default_deck, only: default_deck_lines
    use model_builder, only: build_model
-   use model, only: model_t
+   use model, only: model_t, nint_adams
    use simulation, only: run_to_end, initial_warnings
    use run_loop, only: run_t
    use sink_list, only: sink_list_t
@@ -99,8 +100,9 @@ contains
       type(sink_list_t) :: sinks
       type(run_t) :: run
       type(output_file_t) :: h5_file
-      type(string_t), allocatable :: notes(:)
-      integer :: o
+      type(string_t), allocatable :: notes(:), accuracy(:)
+      character(len=:), allocatable :: who
+      integer :: o, k
 
       call read_case_deck(req, deck, m, err)
       if (present(warnings)) then
@@ -160,6 +162,20 @@ contains
          call deliver_outputs(io_err, sink%listing%lst)
       end if
       if (io_err%failed()) call error_set(err, io_err%code, io_err%message)
+      ! a fixed step too large for the deck, a corrector that did not
+      ! converge (docs/accuracy.md): said in the listing's summary too
+      do o = 1, size(res%occ)
+         who = ''
+         if (size(res%occ) > 1) who = 'occupant '//itoa(o)//': '
+         accuracy = accuracy_warnings(res%occ(o)%accuracy, who, res%occ(o)%head_max%value, res%t_end, m%time%dt)
+         do k = 1, size(accuracy)
+            call append_string(notes, accuracy(k)%s)
+         end do
+      end do
+      if (m%options%nint == nint_adams) then
+         who = corrector_warning(res%stats, m%time%corrector_tol, m%time%corrector_max_iter)
+         if (len(who) > 0) call append_string(notes, who)
+      end if
       ! a balance that failed while the deck said to go on is worth a warning
       do o = 1, size(res%occ)
          if (res%occ(o)%energy_flagged .and. m%numerics%energy_continue) call append_string(notes, &

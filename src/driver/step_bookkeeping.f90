@@ -24,6 +24,7 @@ module step_bookkeeping
    use output_calc, only: head_chest_acceleration
    use output_producers, only: frame_energy, energy_balance_t
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t, raise, summary_add_event
+   use accuracy_estimate, only: accuracy_t
    use end_tests, only: end_state_t, end_none, end_failure, end_energy, end_injury, end_contact, end_rest, &
       end_test_update, body_at_rest
    use sink_list, only: sink_list_t
@@ -32,7 +33,7 @@ module step_bookkeeping
 
    public :: step_books_t, record_failure
 
-   !> A balance error below this fraction of the largest kinetic energy is rounding.
+   !> A balance error below this fraction of its scale is rounding.
    real(wp), parameter :: rounding = 1.0e-9_wp
 
    type :: step_books_t
@@ -52,6 +53,14 @@ module step_bookkeeping
       !! positions are tabulated (the balance's message then says more)
       type(numerics_section_t) :: numerics
       logical :: pulse_tabulated = .false.
+      !> the accuracy estimate's books (docs/accuracy.md): the last
+      !! accepted point (where the next step starts), the stepper's
+      !! rejected and retaken steps then (a fixed-step stepper has those only
+      !! where it takes a step again to a located jump or switch), room for a state moved by its
+      !! estimated error and its derivative
+      real(wp) :: t_accepted = 0.0_wp
+      integer(i8) :: rejected_seen = 0
+      real(wp), allocatable :: y_moved(:), f_moved(:)
    contains
       procedure :: init => books_init
       procedure :: accept => books_accept
@@ -74,6 +83,8 @@ contains
       integer :: o, i, n_occ
       n_occ = size(sys%occupants)
       this%numerics = numerics
+      this%t_accepted = t
+      allocate (this%y_moved(size(y)), this%f_moved(size(y)))
       this%pulse_tabulated = allocated(vehicle%pulse_vel%t) .or. allocated(vehicle%pulse_pos%t)
       allocate (summary%occ(n_occ), this%end_state(n_occ), this%injured(n_occ), this%f_accepted(size(y)))
       this%injured = .false.
@@ -125,14 +136,23 @@ contains
       type(error_t), intent(inout) :: err
       type(accept_result_t) :: ar
       type(error_t) :: why
-      real(wp) :: a_head, a_chest, delta
+      real(wp) :: a_head, a_chest, delta, h, dzdd(n_dof)
       integer :: k, q, j, o, xo, ao, reason_o
-      logical :: restart, undesired, at_rest, any_rest, all_rested, settled
+      logical :: restart, undesired, at_rest, any_rest, all_rested, settled, estimated, located
 
       restart = .false.
       any_rest = .false.
       all_rested = .true.
       reason = end_none
+      ! the step's local error estimate (a fixed-step stepper's), read once;
+      ! the step was taken again to a located switch when the stepper
+      ! rejected one (the windshield's jump) or took one again (a switch)
+      h = t - this%t_accepted
+      this%t_accepted = t
+      estimated = stepper%local_error_new .and. allocated(stepper%local_error)
+      stepper%local_error_new = .false.
+      located = stepper%stats%rejected + stepper%stats%retaken /= this%rejected_seen
+      this%rejected_seen = stepper%stats%rejected + stepper%stats%retaken
       do o = 1, size(sys%occupants)
          undesired = .false.
          associate (occ => sys%occupants(o), os => summary%occ(o), st => this%st)
@@ -142,6 +162,16 @@ contains
             ! Table 5's force criteria, with the memory the step was taken with
             if (os%force_checked) &
                call force_criteria(this, occ, o, t, y, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
+            if (estimated) then
+               call os%accuracy%add_step(t, stepper%local_error(occ%z_offset + 1:occ%z_offset + n_dof), &
+                                         stepper%local_error(occ%zdot_offset + 1:occ%zdot_offset + n_dof))
+               ! the head's peak so far: its sensitivity to the estimated
+               ! state error, with the memory the step was taken with
+               call head_chest_acceleration(occ%body, st%c, st%s, st%zdot, &
+                                            stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), a_head, a_chest)
+               if (a_head > os%head_max%value .and. os%accuracy%head_due(a_head)) &
+                  call head_sensitivity(this, sys, stepper, o, t, y, a_head, os%accuracy)
+            end if
             do q = 1, size(occ%remembering)
                k = occ%remembering(q)
                ar%restart = .false.
@@ -205,10 +235,52 @@ contains
             stepper%f = this%f_accepted
             call record_failure(why, t, summary, err)
             reason = end_failure
+         else if (estimated .and. .not. located) then
+            ! the memory took a switch that happened inside the step at its
+            ! end: the jump of z'' there, for the accuracy estimate
+            do o = 1, size(sys%occupants)
+               associate (vo => sys%occupants(o)%zdot_offset)
+                  ! (a local of fixed size: no temporary allocated)
+                  dzdd = stepper%f(vo + 1:vo + n_dof) - this%f_accepted(vo + 1:vo + n_dof)
+                  call summary%occ(o)%accuracy%add_switch(t, h, dzdd)
+               end associate
+            end do
          end if
       end if
 
    end subroutine books_accept
+
+   !> The head acceleration of occupant o at the accepted point (t, y),
+   !! a_head, against its value at the state moved by its estimated error
+   !! (z and z', with the signs of the errors' sums; one evaluation of the
+   !! right-hand side, counted as the stepper's, with the memory the step
+   !! was taken with): the estimate of the head's peak so far
+   !! (docs/accuracy.md). A state where the right-hand side cannot be
+   !! evaluated leaves the estimate as it was.
+   subroutine head_sensitivity(this, sys, stepper, o, t, y, a_head, acc)
+      class(step_books_t), intent(inout) :: this
+      type(crash_system_t), intent(inout) :: sys
+      class(stepper_t), intent(inout) :: stepper
+      integer, intent(in) :: o
+      real(wp), intent(in) :: t, y(:), a_head
+      type(accuracy_t), intent(inout) :: acc
+      real(wp) :: ez(n_dof), ev(n_dof), a_moved, a_chest
+      type(error_t) :: why
+      associate (occ => sys%occupants(o), zo => sys%occupants(o)%z_offset, vo => sys%occupants(o)%zdot_offset)
+         call acc%state_error(t, ez, ev)
+         this%y_moved = y
+         this%y_moved(zo + 1:zo + n_dof) = y(zo + 1:zo + n_dof) + ez
+         this%y_moved(vo + 1:vo + n_dof) = y(vo + 1:vo + n_dof) + ev
+         call evaluate_outside_step(sys, t, this%y_moved, this%f_moved, why)
+         stepper%stats%evaluations = stepper%stats%evaluations + 1
+         acc%head_evaluations = acc%head_evaluations + 1
+         acc%head_error_at = a_head
+         if (why%failed()) return
+         call head_chest_acceleration(occ%body, cos(this%y_moved(zo + 1:zo + n_seg)), sin(this%y_moved(zo + 1:zo + n_seg)), &
+                                      this%y_moved(vo + 1:vo + n_dof), this%f_moved(vo + 1:vo + n_dof), a_moved, a_chest)
+         acc%head_error = abs(a_moved - a_head)
+      end associate
+   end subroutine head_sensitivity
 
    !> Table 5's criteria of occupant o at the step accepted at (t, y),
    !! where its z'' is zdd: the bone loads against its limits, an event the
@@ -261,9 +333,13 @@ contains
    end subroutine force_passed
 
    !> The energy balance of C.6 at a print time t (each occupant's, from
-   !! its frame) against its tolerance (*NUMERICS EBTOL): a run whose
-   !! balance fails is flagged and, unless the deck says to continue, ends
-   !! as a numerical failure (summary%end_reason = end_energy, err: why).
+   !! its frame) against its tolerance (*NUMERICS EBTOL) times its scale
+   !! (D-17a): the larger of the largest body kinetic energy and the largest
+   !! work the moving vehicle has supplied, both so far, so that energy
+   !! that entered the body after a start at rest (a rear impact) counts
+   !! as much as energy it started with. A run whose balance fails is
+   !! flagged and, unless the deck says to continue, ends as a numerical
+   !! failure (summary%end_reason = end_energy, err: why).
    subroutine books_check_energy(this, sys, balance, t, summary, err)
       class(step_books_t), intent(in) :: this
       type(crash_system_t), intent(in) :: sys
@@ -276,10 +352,13 @@ contains
       do o = 1, size(balance)
          associate (os => summary%occ(o), eb => balance(o))
             os%ke_max = max(os%ke_max, eb%ke_body)
+            os%supplied_max = max(os%supplied_max, abs(eb%supplied))
+            os%energy_scale = max(os%ke_max, os%supplied_max)
             os%e_error_final = eb%error
             if (abs(eb%error) > abs(os%energy_error_max%value)) os%energy_error_max = extreme_t(eb%error, t)
             if (os%energy_flagged) cycle
-            if (abs(eb%error) > this%numerics%energy_tol*os%ke_max .and. abs(eb%error) > rounding*max(1.0_wp, os%ke_max)) then
+            if (abs(eb%error) > this%numerics%energy_tol*os%energy_scale .and. &
+                abs(eb%error) > rounding*max(1.0_wp, os%energy_scale)) then
                os%energy_flagged = .true.
                os%t_flagged = t
                if (.not. this%numerics%energy_continue .and. summary%end_reason == end_none) then
@@ -288,9 +367,11 @@ contains
                   if (size(balance) > 1) who = trim(sys%occupants(o)%label)//': '
                   summary%end_reason = end_energy
                   why = who//'the energy balance error '//num(eb%error, 6)//' in*lb at t = '//num(t) &
-                     //' s exceeds EBTOL = '//num(this%numerics%energy_tol)//' of the largest body kinetic energy (' &
-                     //num(os%ke_max, 6)//' in*lb): the results are not trustworthy. A smaller DT (or NINT = 3 ' &
-                     //'with tighter RTOL) should help; *NUMERICS EBFAIL = CONTINUE runs on regardless'
+                     //' s exceeds EBTOL = '//num(this%numerics%energy_tol)//' of its scale, the larger of the ' &
+                     //'largest body kinetic energy ('//num(os%ke_max, 6)//' in*lb) and the largest work the ' &
+                     //'vehicle supplied ('//num(os%supplied_max, 6)//' in*lb): the results are not trustworthy. ' &
+                     //'A smaller DT (or NINT = 3 with tighter RTOL) should help; *NUMERICS EBFAIL = CONTINUE ' &
+                     //'runs on regardless'
                   if (this%pulse_tabulated) &
                      why = why//'. Tabulated vehicle rates or positions that are not ' &
                            //'the integrals of its accelerations (C.3) make such an error whatever DT: ' &
