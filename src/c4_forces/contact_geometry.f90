@@ -17,6 +17,7 @@ module contact_geometry
 
    public :: contact_feature_t, contact_surface_t, contact_state_t
    public :: body_feature, shin_alpha0, contact_check, arc_segment, front_side, shin_side_now, e
+   public :: region_switch_count, region_switches
    public :: surface_flat, surface_line, surface_circle, surface_point
    public :: region_none, region_face, region_corner, region_circle, region_shin_line, region_shin_knee, &
       region_shin_ankle, region_end_wall, region_shin_far
@@ -484,6 +485,117 @@ contains
       cs%t = [cs%n(2), -cs%n(1)]
       call rates(f, cs)
    end function shin_far
+
+   !> Issue 15: how many switching functions region_switches gives for body
+   !! point arc against a surface sf: the shin's six against the panel's
+   !! edge; a flat surface's five (ten with the rim's opening); none for a
+   !! line, a circle or a point, whose one primitive acts everywhere.
+   pure integer function region_switch_count(arc, sf) result(n)
+      integer, intent(in) :: arc
+      type(contact_surface_t), intent(in) :: sf
+      n = 0
+      if (arc == 9) then
+         n = 6
+      else if (sf%kind == surface_flat) then
+         n = 5
+         if (sf%t_open(2) > sf%t_open(1)) n = 10
+      end if
+   end function region_switch_count
+
+   !> Issue 15: where figure 22's check (contact_check, with the pair's
+   !! memory behind) changes the primitive that acts between f and sf while
+   !! the pair is loaded, as switching functions in g (in): the force's
+   !! slope jumps where the contact point rounds an edge (a face meets a
+   !! corner's circle, the shin's line part its knee or ankle circle, a
+   !! capsule the far half's planes: delta and its gradient continue, the
+   !! normal's rate does not - P/r of geometric stiffness), and the force's
+   !! direction jumps where a point inside a solid (D-C16b) is as deep
+   !! below two of its faces. take_up (in): the pair's chain taken up beyond
+   !! its zero extent, > 0 where it carries load. A boundary b matters only
+   !! where the pair is loaded (and the mode it bounds acts, q > 0): each g
+   !! is max(b, -q) with q = min(take_up, the mode's own margin), so it has
+   !! b's sign there and is positive elsewhere - continuous, and crossing
+   !! zero outside b's own root only where q does (with take_up, at the
+   !! contact's onset or release, which the pair's own switch locates).
+   !! Flat surface (T = (S - P).t_k, h = (P - S).n_k): T and D - T (a face's
+   !! ends), T - T_o1 and T_o2 - T (the rim opening's edges), h (the line:
+   !! a corner met from in front or an end wall from inside, D-C16b), and,
+   !! inside the solid (h < 0, the point came from the front), for each
+   !! piece [a, b] the ties of its face with its end walls, (T - a) + h and
+   !! (b - T) + h, and with the opening, the tie of its two pieces. Not
+   !! located: the nearest of a surface's free ends for a point come from
+   !! behind, and the middle of the rim's opening (a rim pair's arc wider
+   !! than the opening is refused, *INTERIOR DI). The shin (i = 9; E the
+   !! panel's edge, h_a its side of the shank's axis, s the side it came
+   !! from): on its own side the capsule's T_9 and T_end - T_9 (its line
+   !! part meets the knee and ankle circles), h_a (the capsule meets the far
+   !! half, D-C16b), beyond the axis the far half's ties of its near tangent
+   !! with the knee's top and the ankle's bottom, and the capsule's delta on
+   !! the edge's present side while beyond the axis inside the far half: the
+   !! edge leaving through the far side lets the shin go (a jump), and
+   !! decides its side.
+   pure subroutine region_switches(f, sf, behind, e_psi, take_up, g)
+      type(contact_feature_t), intent(in) :: f
+      type(contact_surface_t), intent(in) :: sf
+      logical, intent(in) :: behind
+      real(wp), intent(in) :: e_psi(2), take_up
+      real(wp), intent(out) :: g(:)
+      real(wp) :: nk(2), tt, h, q_in, d1, d2, u(2), m(2), a(2), d(2), t_end, side, q_own, q_far
+      real(wp) :: d_near, d_knee, d_ankle
+      type(contact_state_t) :: cs
+      if (f%arc == 9) then
+         ! the shin against the edge E = sf%s
+         side = merge(-1.0_wp, 1.0_wp, behind)
+         h = dot_product(sf%s - f%joint, [-sin(f%theta), cos(f%theta)])
+         q_own = min(take_up, side*h)
+         q_far = min(take_up, -side*h)
+         call shin_frame(f, merge(1, -1, h >= 0.0_wp), u, m)
+         tt = dot_product(sf%s - f%joint, u)
+         t_end = norm2(f%ankle - f%joint)*cos(f%alpha0)
+         g(1) = max(tt, -q_own)
+         g(2) = max(t_end - tt, -q_own)
+         g(3) = max(h, -take_up)
+         call shin_frame(f, nint(side), u, m)
+         a = e(f%theta)
+         d = sf%s - f%joint
+         d_near = f%r - dot_product(d, m)
+         d_knee = f%r + dot_product(d, a)
+         d_ankle = f%r_ankle - dot_product(sf%s - f%ankle, a)
+         g(4) = max(d_knee - d_near, -q_far)
+         g(5) = max(d_ankle - d_near, -q_far)
+         ! (in the far half, min(d_near, d_knee, d_ankle) > 0; where the edge
+         ! crosses the axis off the capsule, beyond the knee or the ankle, it
+         ! is not, and nothing switches)
+         cs = shin_capsule(f, sf%s, merge(1, -1, h >= 0.0_wp))
+         g(6) = max(cs%delta, side*h, -min(d_near, d_knee, d_ankle))
+         return
+      end if
+      if (sf%kind /= surface_flat) return
+      nk = [-e_psi(2), e_psi(1)]
+      tt = dot_product(sf%s - f%p, e_psi)
+      h = dot_product(f%p - sf%s, nk)
+      ! inside the solid: loaded, behind the line, come from the front
+      q_in = min(take_up, -h)
+      if (behind) q_in = -1.0_wp
+      g(1) = max(tt, -take_up)
+      g(2) = max(sf%d - tt, -take_up)
+      g(3) = max(h, -take_up)
+      if (sf%t_open(2) > sf%t_open(1)) then
+         g(4) = max(tt - sf%t_open(1), -take_up)
+         g(5) = max(sf%t_open(2) - tt, -take_up)
+         g(6) = max((tt - 0.0_wp) + h, -q_in)
+         g(7) = max((sf%t_open(1) - tt) + h, -q_in)
+         g(8) = max((tt - sf%t_open(2)) + h, -q_in)
+         g(9) = max((sf%d - tt) + h, -q_in)
+         ! the pieces' depths below their faces and walls (solid_from_inside)
+         d1 = min(-h, tt - 0.0_wp, sf%t_open(1) - tt)
+         d2 = min(-h, tt - sf%t_open(2), sf%d - tt)
+         g(10) = max(d1 - d2, -q_in)
+      else
+         g(4) = max((tt - 0.0_wp) + h, -q_in)
+         g(5) = max((sf%d - tt) + h, -q_in)
+      end if
+   end subroutine region_switches
 
    !> delta' = -V_C.n and v_T = V_C.t, V_C the interior velocity of the
    !! body's material point at C (the surface is fixed in the interior).
