@@ -173,11 +173,12 @@ contains
             ! a new cycle begins where it goes above (recurrent_accept)
             sigma = merge(-1.0_wp, 1.0_wp, ch%mem(i)%unloading)
             j = j + 1
+            ! (at a rate of 0, recurrent_accept changes nothing: the positive side)
             if (ch%stateful(i)) then
                bp = branch_at(ch%law(i), ch%mem(i), x)
-               g(j) = sigma*(t - bp%force)
+               g(j) = held_side(sigma*(t - bp%force), 1.0_wp)
             else
-               g(j) = max(sigma*r_dot*rate_time, -take_up)
+               g(j) = held_side(max(sigma*r_dot*rate_time, -take_up), 1.0_wp)
             end if
          end if
          if (ch%cap(i) > 0.0_wp) then
@@ -187,21 +188,21 @@ contains
                g(j) = x - ch%cap(i)
                if (k(i) > min_slope .and. n_flat == 0) g(j) = g(j)*k(i)*c
             else
-               g(j) = (t - f_cap(i))*scale
+               g(j) = held_side((t - f_cap(i))*scale, 1.0_wp)
             end if
          end if
          if (is_gated(ch, i)) then
             ! D-C19: held at its hold from its force there to that plus the gate
-            g(j + 1) = (t - (f_h(i) + sp%gate(i)))*scale
+            g(j + 1) = held_side((t - (f_h(i) + sp%gate(i)))*scale, -1.0_wp)
             g(j + 2) = 1.0_wp
-            if (f_h(i) > 0.0_wp) g(j + 2) = (t - f_h(i))*scale
+            if (f_h(i) > 0.0_wp) g(j + 2) = held_side((t - f_h(i))*scale, 1.0_wp)
             j = j + 2
          end if
          if (has_memory(ch, i) .and. ch%law(i)%plastic) then
             ! D-B10: held at delta_max up to f_max
             j = j + 1
             g(j) = 1.0_wp
-            if (held_plastic(ch%law(i), ch%mem(i))) g(j) = (t - ch%mem(i)%f_max)*scale
+            if (held_plastic(ch%law(i), ch%mem(i))) g(j) = held_side((t - ch%mem(i)%f_max)*scale, -1.0_wp)
          end if
       end do
       if (ch%n == 1 .and. ch%law(1)%n_rate > 0) then
@@ -211,6 +212,17 @@ contains
          g(j) = max(bp%force + rate_force(ch%law(1), s_dot), -max(curve_max_slope(ch%law(1)%curve), 1.0_wp)*take_up)
       end if
    end subroutine chain_switch_values
+
+   !> A switching function g, which where it is 0 exactly (a split that
+   !! lands on a threshold T = F*, a rate of 0) takes the sign of the side
+   !! the law takes there (side: series_split's held_at's, recurrent_accept's),
+   !! not 0: an accepted state just past the switch where g were 0 would
+   !! count as not crossed, and its leaving again would be missed.
+   pure real(wp) function held_side(g, side) result(gs)
+      real(wp), intent(in) :: g, side
+      gs = g
+      if (.not. abs(g) > 0.0_wp) gs = sign(tiny(1.0_wp), side)
+   end function held_side
 
    !> Whether element i's law has a memory that changes (figure 18).
    pure logical function has_memory(ch, i)

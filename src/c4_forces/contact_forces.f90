@@ -63,6 +63,10 @@ module contact_forces
       !> D-C16a: the point came at a flat surface from behind its line; D-C16b:
       !! the panel's edge came at the shin from behind the shank's axis (memory)
       logical :: behind = .false.
+      !> D-C16b, issue 15: the face of a solid met from inside (a flat
+      !! surface's, the shin's far half) that acts, held from the last
+      !! accepted state (contact_check's face; 0: none, the least depth)
+      integer :: face = 0
       !> aux: the chain's (its elements' rate-term work and states), then the
       !! friction's work and the supplied work
       integer :: aux_friction = 0, aux_supplied = 0
@@ -291,7 +295,7 @@ contains
          s = sin(st%vehicle%pos(3))
       end if
       ps%f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
-      ps%cs = contact_check(ps%f, this%surface, this%behind, this%tk)
+      ps%cs = contact_check(ps%f, this%surface, this%behind, this%tk, this%face)
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
@@ -600,7 +604,9 @@ contains
          s_dot = 0.0_wp
       end if
       u = chain_take_up(this%chain, s, aux)
+      ! (never 0: at a take-up of 0 the chain carries nothing, the negative side)
       g(1) = u
+      if (.not. abs(u) > 0.0_wp) g(1) = -tiny(1.0_wp)
       j = 1
       call chain_switch_values(this%chain, s_dot, ps%split, u, g(j + 1:j + this%n_chain_switch))
       j = j + this%n_chain_switch
@@ -619,6 +625,7 @@ contains
          j = j + 1
          g(j) = -1.0_wp
          if (.not. this%shattered) g(j) = this%fsw - ps%split%force
+         if (.not. abs(g(j)) > 0.0_wp) g(j) = -tiny(1.0_wp)     ! (P = FSW breaks it)
       end if
       call region_switches(ps%f, this%surface, this%behind, this%tk, u, g(j + 1:j + this%n_region_switch))
    end subroutine pair_switches
@@ -731,6 +738,7 @@ contains
          ! recovers out of contact, its memory follows it, series_chain)
          if (far .and. side /= side_unknown .and. .not. chain_relaxing(this%chain, aux)) then
             if (side /= 0) call set_behind(this, side < 0)   ! D-C16a, as front_side
+            this%face = 0                                ! (no solid met from inside)
             if (this%undesired) then                     ! D-C28: not loaded
                this%was_loaded = .false.
                this%accepted_once = .true.
@@ -751,12 +759,24 @@ contains
       real(wp), intent(in) :: aux(:)
       type(accept_result_t), intent(inout) :: result
       type(pair_state_t) :: ps
+      type(contact_state_t) :: cs
       logical :: changed
       integer :: side
       call pair_eval(this, st, aux, ps)
       ! D-C16a: the side of the surface's line the point is on, where it is decided
       side = front_side(ps%f, this%surface, this%tk)
       if (side /= 0) call set_behind(this, side < 0)
+      ! D-C16b, issue 15: the face of a solid met from inside whose depth is
+      ! least here acts from here on (a located switch, the step just past
+      ! where two are as deep: the force's direction jumps, a restart)
+      ! (from none or to none, the face whose depth is least acts either way)
+      cs = contact_check(ps%f, this%surface, this%behind, this%tk)
+      if (cs%face /= this%face .and. cs%face /= 0 .and. this%face /= 0) then
+         this%face = cs%face
+         result%restart = .true.
+         call pair_eval(this, st, aux, ps)
+      end if
+      this%face = cs%face
       ! Table 9 (C.7): coming into contact (D-C28)
       if (this%undesired) then
          if (this%accepted_once .and. .not. this%was_loaded .and. ps%split%force > 0.0_wp) &
