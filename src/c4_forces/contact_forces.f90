@@ -35,7 +35,7 @@ module contact_forces
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
       arc_segment, front_side, shin_side_now, surface_flat, surface_line, surface_circle, surface_point, &
       region_switch_count, region_switches
-   use chain_switches, only: chain_switch_count, chain_take_up, chain_switch_values
+   use contact_chain_switches, only: chain_switch_count, chain_take_up, chain_switch_values
    use recurrent_loading, only: recurrent_law_t
    use series_chain, only: series_chain_t, chain_split_t, chain_split, split_ok, chain_split_text, chain_new, &
       chain_accept, chain_energies, chain_n_aux, chain_set_initial, chain_relaxing, chain_stateful_any, max_chain
@@ -91,7 +91,7 @@ module contact_forces
       real(wp) :: fsw = 0.0_wp                  !< 0: never shatters
       logical :: shattered = .false., cutting = .false.
       !> issue 15: how many of the pair's switching functions are its chain's
-      !! (chain_switches) and its geometry's (contact_geometry's region_switches)
+      !! (contact_chain_switches) and its geometry's (contact_geometry's region_switches)
       integer :: n_chain_switch = 0, n_region_switch = 0
       !> the largest P over the accepted steps, when, and where (T and delta
       !! then): the summary's contact peaks (peaks)
@@ -571,7 +571,7 @@ contains
 
    !> Issue 15 (docs/contacts.md, "Switches (issue 15)"): the pair's
    !! switching functions at st, n_switch of them in g. 1: the take-up of
-   !! its chain (in, chain_switches: > 0 where it carries load; s = delta,
+   !! its chain (in, contact_chain_switches: > 0 where it carries load; s = delta,
    !! or nothing for broken glass): the contact's onset and release. Then
    !! its chain's (chain_switch_values: the elements' table points and
    !! turning points, the padding's cap, the column's gate, a rate term's

@@ -1,7 +1,7 @@
-!> Issue 15: the switching functions of a chain of loading elements in
-!! series (series_chain; docs/loading.md 5), written for the contact pairs
-!! (docs/contacts.md, "Switches (issue 15)") and usable by any effect that
-!! holds a chain. Where its tension T, or T's slope, changes
+!> Issue 15: the switching functions of a contact pair's chain of loading
+!! elements in series (series_chain; docs/loading.md 5; docs/contacts.md
+!! 3.6, "Switches (issue 15)"); nothing in them is the contacts' but the
+!! caps and gates, which only their chains have. Where its tension T, or T's slope, changes
 !! discontinuously, or where an element's memory (figure 18) should change,
 !! each of these changes sign, as a continuous function of the chain's
 !! deformation s, its rate and its states for the memories the chain holds:
@@ -26,7 +26,7 @@
 !! - a single element with rate terms: max(0, F_b + F_v) clipped at zero.
 !! Not covered: a chain whose every element is rate-dependent (its absorber
 !! clips T at zero where no shipped deck has one).
-module chain_switches
+module contact_chain_switches
    use kinds, only: wp
    use series_chain, only: series_chain_t, chain_split_t, max_chain
    use loading_curves, only: curve_is_defined, curve_max_slope
@@ -238,4 +238,4 @@ contains
       is_gated = .false.
       if (i > 1) is_gated = ch%gated(i) .and. ch%cap(i - 1) > 0.0_wp
    end function is_gated
-end module chain_switches
+end module contact_chain_switches
