@@ -33,7 +33,9 @@ module contact_forces
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_force_generalized
    use contact_geometry, only: contact_feature_t, contact_surface_t, contact_state_t, body_feature, contact_check, &
-      arc_segment, front_side, shin_side_now, surface_flat, surface_line, surface_circle, surface_point
+      arc_segment, front_side, shin_side_now, surface_flat, surface_line, surface_circle, surface_point, &
+      region_switch_count, region_switches
+   use contact_chain_switches, only: chain_switch_count, chain_take_up, chain_switch_values
    use recurrent_loading, only: recurrent_law_t
    use series_chain, only: series_chain_t, chain_split_t, chain_split, split_ok, chain_split_text, chain_new, &
       chain_accept, chain_energies, chain_n_aux, chain_set_initial, chain_relaxing, chain_stateful_any, max_chain
@@ -61,6 +63,10 @@ module contact_forces
       !> D-C16a: the point came at a flat surface from behind its line; D-C16b:
       !! the panel's edge came at the shin from behind the shank's axis (memory)
       logical :: behind = .false.
+      !> D-C16b, issue 15: the face of a solid met from inside (a flat
+      !! surface's, the shin's far half) that acts, held from the last
+      !! accepted state (contact_check's face; 0: none, the least depth)
+      integer :: face = 0
       !> aux: the chain's (its elements' rate-term work and states), then the
       !! friction's work and the supplied work
       integer :: aux_friction = 0, aux_supplied = 0
@@ -84,9 +90,9 @@ module contact_forces
       !! cut, once per episode of contact
       real(wp) :: fsw = 0.0_wp                  !< 0: never shatters
       logical :: shattered = .false., cutting = .false.
-      !> P at the last accepted state (the glass: where its break is located
-      !! from, D-C24b)
-      real(wp) :: p_accepted = 0.0_wp
+      !> issue 15: how many of the pair's switching functions are its chain's
+      !! (contact_chain_switches) and its geometry's (contact_geometry's region_switches)
+      integer :: n_chain_switch = 0, n_region_switch = 0
       !> the largest P over the accepted steps, when, and where (T and delta
       !! then): the summary's contact peaks (peaks)
       real(wp) :: peak_p = 0.0_wp, peak_t = 0.0_wp, peak_pos = 0.0_wp, peak_delta = 0.0_wp
@@ -113,13 +119,14 @@ module contact_forces
       procedure :: failure_text => pair_failure_text
       procedure :: peaks => pair_peaks
       procedure :: initial_notes => pair_initial_notes
-      procedure :: locate => pair_locate
+      procedure :: switches => pair_switches
    end type contact_pair_effect_t
 
    !> far_check's side where the bound does not decide it
    integer, parameter :: side_unknown = 2
-   !> D-C24b: the glass breaks within this fraction above FSW (located)
-   real(wp), parameter :: locate_tol = 1.0e-3_wp
+   !> issue 15: a sliding velocity's switch compared with the take-up (in)
+   !! over this time (s) (its sign is what matters)
+   real(wp), parameter :: friction_time = 1.0e-3_wp
 
    !> Everything about the pair at one state (pair_eval sets every field;
    !! no default values, which every evaluation would store first). The
@@ -186,7 +193,14 @@ contains
       e%m_free = free_point_mass(body, i)
       if (present(undesired)) e%undesired = undesired
       if (present(fsw)) e%fsw = fsw
-      e%locates = e%fsw > 0.0_wp          ! the glass's break (D-C24b)
+      ! issue 15: the take-up, the chain's, the friction ramp's edges, the
+      ! glass's break, the geometry's (pair_switches)
+      e%n_chain_switch = chain_switch_count(e%chain)
+      e%n_region_switch = region_switch_count(i, sf)
+      e%n_switch = 1 + e%n_chain_switch + e%n_region_switch
+      if (e%mu > 0.0_wp) e%n_switch = e%n_switch + 2
+      if (e%mu > 0.0_wp .and. e%dt_fixed > 0.0_wp) e%n_switch = e%n_switch + 1
+      if (e%fsw > 0.0_wp) e%n_switch = e%n_switch + 1
       e%needs_vehicle = .true.
       e%needs_joints = .true.                          ! pair_far's bound
       e%external = .true.
@@ -281,7 +295,7 @@ contains
          s = sin(st%vehicle%pos(3))
       end if
       ps%f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
-      ps%cs = contact_check(ps%f, this%surface, this%behind, this%tk)
+      ps%cs = contact_check(ps%f, this%surface, this%behind, this%tk, this%face)
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
@@ -346,10 +360,18 @@ contains
    pure real(wp) function ramp_width(this, p) result(w)
       class(contact_pair_effect_t), intent(in) :: this
       real(wp), intent(in) :: p
-      real(wp), parameter :: ramp_steps = 2.0_wp
       w = this%xi
-      if (this%dt_fixed > 0.0_wp) w = max(w, this%mu*p*this%dt_fixed/(ramp_steps*this%m_free))
+      if (this%dt_fixed > 0.0_wp) w = max(w, widened_width(this, p))
    end function ramp_width
+
+   !> D-C18b: the width a fixed step needs at normal force p, mu p
+   !! dt/(ramp_steps m_free) (ramp_width).
+   pure real(wp) function widened_width(this, p) result(w)
+      class(contact_pair_effect_t), intent(in) :: this
+      real(wp), intent(in) :: p
+      real(wp), parameter :: ramp_steps = 2.0_wp
+      w = this%mu*p*this%dt_fixed/(ramp_steps*this%m_free)
+   end function widened_width
 
    !> Whether the pair is slack at st for certain, by a bound that needs
    !! neither trigonometry nor velocities: the body point's circle (for the
@@ -547,41 +569,66 @@ contains
          this%guard%kind = merge(guard_slab, guard_half_plane, behind .and. this%surface%kind == surface_flat)
    end subroutine set_behind
 
-   !> D-C24b: where in the step just taken the glass's force P reached FSW,
-   !! when it went from below FSW at the last accepted state to beyond it at
-   !! st by more than locate_tol: the fraction of the step, by the secant of
-   !! P through the two states, aimed at FSW (1 + locate_tol/2) so that the
-   !! glass breaks at the state the driver steps to. short_of_jump (>= 1)
-   !! when st falls short of FSW (the driver, searching for the break, keeps
-   !! it below; issue 14: without it a tiny FSW, whose secant lands before
-   !! the head even touches, was located a 5e-14 s step at a time, for
-   !! ever). 0 otherwise: nothing to locate, or st within locate_tol above
-   !! FSW, where the glass breaks.
-   pure real(wp) function pair_locate(this, st, extra, aux) result(theta)
+   !> Issue 15 (docs/contacts.md, "Switches (issue 15)"): the pair's
+   !! switching functions at st, n_switch of them in g. 1: the take-up of
+   !! its chain (in, contact_chain_switches: > 0 where it carries load; s = delta,
+   !! or nothing for broken glass): the contact's onset and release. Then
+   !! its chain's (chain_switch_values: the elements' table points and
+   !! turning points, the padding's cap, the column's gate, a rate term's
+   !! clip). Then, with friction, the ramp's edges v_T -/+ w (in/s, D-C18a:
+   !! P' = mu P r, r = v_T/w clipped to [-1, 1], w the ramp's width, kinks
+   !! at v_T = +/-w) where the pair is loaded, each max(v_T -/+ w, -take-up
+   !! / friction_time) (positive where it is not, crossing zero there only
+   !! with the take-up); under a fixed step, the ramp's widening (D-C18b:
+   !! xi - mu P dt/(2 m_free), in/s, where the width stops being xi and the
+   !! ramp's P' stops growing with P) on the ramp (gated by w - |v_T| too).
+   !! Then the glass's break (D-C24): FSW - P (lb),
+   !! where accept shatters it, -1 once broken. Then the geometry's
+   !! (contact_geometry's region_switches: an edge rounded, a solid's faces,
+   !! the shin's far half and its way out).
+   pure subroutine pair_switches(this, st, extra, aux, g)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
-      real(wp), parameter :: short_of_jump = 2.0_wp
+      real(wp), intent(out) :: g(:)
       type(pair_state_t) :: ps
-      associate (u1 => size(extra) + size(aux))
+      real(wp) :: s, s_dot, u, w
+      integer :: j
+      associate (u1 => size(extra))
       end associate
-      theta = 0.0_wp
-      if (.not. this%fsw > 0.0_wp .or. this%shattered .or. .not. this%p_accepted < this%fsw) return
-      theta = short_of_jump
-      if (this%exit_far) then
-         if (pair_far(this, st)) return
-      end if
       call pair_eval(this, st, aux, ps)
-      if (ps%split%status /= split_ok) then
-         theta = 0.0_wp
-         return
+      s = ps%cs%delta
+      s_dot = ps%cs%delta_dot
+      if (this%shattered) then             ! (pair_eval's split: nothing carried)
+         s = -1.0_wp
+         s_dot = 0.0_wp
       end if
-      if (ps%split%force < this%fsw) return
-      theta = 0.0_wp
-      if (.not. ps%split%force > this%fsw*(1.0_wp + locate_tol)) return
-      theta = (this%fsw*(1.0_wp + 0.5_wp*locate_tol) - this%p_accepted)/(ps%split%force - this%p_accepted)
-      theta = min(max(theta, 0.0_wp), 1.0_wp)
-   end function pair_locate
+      u = chain_take_up(this%chain, s, aux)
+      ! (never 0: at a take-up of 0 the chain carries nothing, the negative side)
+      g(1) = u
+      if (.not. abs(u) > 0.0_wp) g(1) = -tiny(1.0_wp)
+      j = 1
+      call chain_switch_values(this%chain, s_dot, ps%split, u, g(j + 1:j + this%n_chain_switch))
+      j = j + this%n_chain_switch
+      if (this%mu > 0.0_wp) then
+         w = ramp_width(this, ps%split%force)
+         g(j + 1) = max(ps%cs%v_t - w, -u/friction_time)
+         g(j + 2) = max(ps%cs%v_t + w, -u/friction_time)
+         j = j + 2
+         if (this%dt_fixed > 0.0_wp) then
+            ! D-C18b: the ramp widened for the step beyond xi, on the ramp
+            j = j + 1
+            g(j) = max(this%xi - widened_width(this, ps%split%force), -min(u/friction_time, w - abs(ps%cs%v_t)))
+         end if
+      end if
+      if (this%fsw > 0.0_wp) then
+         j = j + 1
+         g(j) = -1.0_wp
+         if (.not. this%shattered) g(j) = this%fsw - ps%split%force
+         if (.not. abs(g(j)) > 0.0_wp) g(j) = -tiny(1.0_wp)     ! (P = FSW breaks it)
+      end if
+      call region_switches(ps%f, this%surface, this%behind, this%tk, u, g(j + 1:j + this%n_region_switch))
+   end subroutine pair_switches
 
    !> D-C14 (7): a pair that starts deep in its surface - more than half its
    !! arc's radius, or loaded beyond the body's weight - is most likely a
@@ -691,13 +738,13 @@ contains
          ! recovers out of contact, its memory follows it, series_chain)
          if (far .and. side /= side_unknown .and. .not. chain_relaxing(this%chain, aux)) then
             if (side /= 0) call set_behind(this, side < 0)   ! D-C16a, as front_side
+            this%face = 0                                ! (no solid met from inside)
             if (this%undesired) then                     ! D-C28: not loaded
                this%was_loaded = .false.
                this%accepted_once = .true.
             end if
             ! no force: the glass holds (D-C24; broken glass, whose cut needs
             ! delta, has side_unknown), and the loading cycle keeps its memory
-            this%p_accepted = 0.0_wp
             return
          end if
       end if
@@ -712,12 +759,24 @@ contains
       real(wp), intent(in) :: aux(:)
       type(accept_result_t), intent(inout) :: result
       type(pair_state_t) :: ps
+      type(contact_state_t) :: cs
       logical :: changed
       integer :: side
       call pair_eval(this, st, aux, ps)
       ! D-C16a: the side of the surface's line the point is on, where it is decided
       side = front_side(ps%f, this%surface, this%tk)
       if (side /= 0) call set_behind(this, side < 0)
+      ! D-C16b, issue 15: the face of a solid met from inside whose depth is
+      ! least here acts from here on (a located switch, the step just past
+      ! where two are as deep: the force's direction jumps, a restart)
+      ! (from none or to none, the face whose depth is least acts either way)
+      cs = contact_check(ps%f, this%surface, this%behind, this%tk)
+      if (cs%face /= this%face .and. cs%face /= 0 .and. this%face /= 0) then
+         this%face = cs%face
+         result%restart = .true.
+         call pair_eval(this, st, aux, ps)
+      end if
+      this%face = cs%face
       ! Table 9 (C.7): coming into contact (D-C28)
       if (this%undesired) then
          if (this%accepted_once .and. .not. this%was_loaded .and. ps%split%force > 0.0_wp) &
@@ -729,7 +788,6 @@ contains
       ! reaches FSW (never by a trial state); then a head through it is cut
       if (this%fsw > 0.0_wp .and. .not. this%shattered .and. ps%split%force >= this%fsw) then
          this%shattered = .true.
-         this%locates = .false.                                             ! nothing left to locate (D-C24b)
          if (this%guard%kind /= guard_none) this%guard%kind = guard_always   ! broken glass carries nothing
          result%restart = .true.
          call accept_add_event(result, contact_event(event_shatter, st%t, this%i, this%k, ps%split%force, this%fsw))
@@ -747,7 +805,6 @@ contains
                                                         ramp_width(this, ps%split%force), this%xi))
          end if
       end if
-      this%p_accepted = ps%split%force
       if (ps%split%status == split_ok .and. ps%split%force > this%peak_p) then
          this%peak_p = ps%split%force
          this%peak_t = st%t

@@ -17,6 +17,7 @@ module contact_geometry
 
    public :: contact_feature_t, contact_surface_t, contact_state_t
    public :: body_feature, shin_alpha0, contact_check, arc_segment, front_side, shin_side_now, e
+   public :: region_switch_count, region_switches
    public :: surface_flat, surface_line, surface_circle, surface_point
    public :: region_none, region_face, region_corner, region_circle, region_shin_line, region_shin_knee, &
       region_shin_ankle, region_end_wall, region_shin_far
@@ -63,6 +64,12 @@ module contact_geometry
       real(wp) :: n(2) = 0.0_wp, t(2) = 0.0_wp, c(2) = 0.0_wp
       real(wp) :: pos = 0.0_wp           !< T, where along the surface (or the shin) it acts
       real(wp) :: v_t = 0.0_wp           !< sliding velocity of the body's material point along t
+      !> which face of a solid met from inside acts (D-C16b; issue 15): a
+      !! flat surface's face (1) or the walls past its ends at T = a (2) and
+      !! b (3) of the piece [a, b], 3 more for the rim's second piece; the
+      !! shin's far half's near tangent (1), knee top (2) or ankle bottom
+      !! (3). 0 elsewhere.
+      integer :: face = 0
    end type contact_state_t
 
 contains
@@ -152,19 +159,29 @@ contains
    !! for the shin, the panel's edge came at it from behind the shank's
    !! axis (D-C16b). Absent: the side the point (the edge) is on now.
    !! e_psi: e(sf%psi) when at hand (a pair's, taken once: the same bits).
-   pure function contact_check(f, sf, behind, e_psi) result(cs)
+   !! face (the pair's memory, issue 15; 0 or absent: none): the face of a
+   !! solid met from inside that acts (cs%face), held from the last
+   !! accepted state: where two faces are as deep the force's direction
+   !! jumps, a switch the driver locates and steps onto, so within a step
+   !! the face held acts (its depth continued past the tie) and the pair's
+   !! accept takes the one whose depth is least.
+   pure function contact_check(f, sf, behind, e_psi, face) result(cs)
       type(contact_feature_t), intent(in) :: f
       type(contact_surface_t), intent(in) :: sf
       logical, intent(in), optional :: behind
       real(wp), intent(in), optional :: e_psi(2)
+      integer, intent(in), optional :: face
       type(contact_state_t) :: cs
       real(wp) :: tk(2), nk(2), tt, te, h
       logical :: from_behind
+      integer :: held
       from_behind = .false.
       if (present(behind)) from_behind = behind
+      held = 0
+      if (present(face)) held = face
       if (f%arc == 9) then
          if (present(behind)) then
-            cs = shin_check(f, sf%s, merge(-1, 1, from_behind))
+            cs = shin_check(f, sf%s, merge(-1, 1, from_behind), held)
          else
             cs = shin_check(f, sf%s, 0)
          end if
@@ -243,36 +260,51 @@ contains
       !! pieces. r - the signed distance of the centre to the solid: equal to
       !! the face's and the corners' at h = 0, so continuous there, and never
       !! along -n_k (the surface never pulls the point in).
+      !! (held: the face the pair holds, issue 15.)
       pure subroutine solid_from_inside(st)
          type(contact_state_t), intent(out) :: st
          type(contact_state_t) :: other
          if (sf%t_open(2) > sf%t_open(1)) then
-            call piece(0.0_wp, sf%t_open(1), st)
-            call piece(sf%t_open(2), sf%d, other)
-            if (other%delta > st%delta) st = other
+            if (held > 3) then
+               call piece(sf%t_open(2), sf%d, held - 3, st)
+               st%face = st%face + 3
+            else if (held > 0) then
+               call piece(0.0_wp, sf%t_open(1), held, st)
+            else
+               call piece(0.0_wp, sf%t_open(1), 0, st)
+               call piece(sf%t_open(2), sf%d, 0, other)
+               other%face = other%face + 3
+               if (other%delta > st%delta) st = other
+            end if
          else
-            call piece(0.0_wp, sf%d, st)
+            call piece(0.0_wp, sf%d, held, st)
          end if
       end subroutine solid_from_inside
 
-      pure subroutine piece(a, b, st)
+      !> The piece [a, b]: the least depth below its face and walls, or
+      !! the depth below the one held (which: 1 to 3, 0 none).
+      pure subroutine piece(a, b, which, st)
          real(wp), intent(in) :: a, b
+         integer, intent(in) :: which
          type(contact_state_t), intent(out) :: st
          st%region = region_face
          st%n = nk
          st%delta = f%r - h
          st%pos = tt
-         if (f%r - (a - tt) < st%delta) then
+         st%face = 1
+         if ((which == 0 .and. f%r - (a - tt) < st%delta) .or. which == 2) then
             st%region = region_end_wall
             st%n = tk
             st%delta = f%r - (a - tt)
             st%pos = a
+            st%face = 2
          end if
-         if (f%r - (tt - b) < st%delta) then
+         if ((which == 0 .and. f%r - (tt - b) < st%delta) .or. which == 3) then
             st%region = region_end_wall
             st%n = -tk
             st%delta = f%r - (tt - b)
             st%pos = b
+            st%face = 3
          end if
       end subroutine piece
    end function contact_check
@@ -374,16 +406,21 @@ contains
    !! tangent would pull it onto the edge (issue 14: 2,400 lb reversed in
    !! one step). Out through the other side, the edge has gone through the
    !! shin and lets go.
-   pure function shin_check(f, ed, side) result(cs)
+   !! held (issue 15): the far half's plane the pair holds (cs%face; 0:
+   !! the least depth).
+   pure function shin_check(f, ed, side, held) result(cs)
       type(contact_feature_t), intent(in) :: f
       real(wp), intent(in) :: ed(2)
       integer, intent(in) :: side
+      integer, intent(in), optional :: held
       type(contact_state_t) :: cs
-      integer :: side_now
+      integer :: side_now, plane
       side_now = shin_side_now(f, ed)
       cs = shin_capsule(f, ed, side_now)
       if (side == 0 .or. side == side_now .or. .not. cs%delta > 0.0_wp) return
-      cs = shin_far(f, ed, side)
+      plane = 0
+      if (present(held)) plane = held
+      cs = shin_far(f, ed, side, plane)
    end function shin_check
 
    !> The capsule (D-C2) against the edge ed on its side side_now of the
@@ -457,10 +494,11 @@ contains
    !! equal the capsule's (its line part, knee and ankle circles), so the
    !! force is continuous as the edge crosses it; none has a component
    !! towards the side the edge came from.
-   pure function shin_far(f, ed, side) result(cs)
+   !! plane: the plane held (cs%face, issue 15), 0 the least depth.
+   pure function shin_far(f, ed, side, plane) result(cs)
       type(contact_feature_t), intent(in) :: f
       real(wp), intent(in) :: ed(2)
-      integer, intent(in) :: side
+      integer, intent(in) :: side, plane
       type(contact_state_t) :: cs
       real(wp) :: u(2), m(2), a(2), d(2), depth
       call shin_frame(f, side, u, m)
@@ -469,21 +507,171 @@ contains
       cs%region = region_shin_far
       cs%delta = f%r - dot_product(d, m)                 ! through the near tangent
       cs%n = -m
+      cs%face = 1
       depth = f%r + dot_product(d, a)                    ! over the knee's top
-      if (depth < cs%delta) then
+      if ((plane == 0 .and. depth < cs%delta) .or. plane == 2) then
          cs%delta = depth
          cs%n = a
+         cs%face = 2
       end if
       depth = f%r_ankle - dot_product(ed - f%ankle, a)   ! under the ankle's bottom
-      if (depth < cs%delta) then
+      if ((plane == 0 .and. depth < cs%delta) .or. plane == 3) then
          cs%delta = depth
          cs%n = -a
+         cs%face = 3
       end if
       cs%c = ed - cs%delta*cs%n
       cs%pos = dot_product(d, u)
       cs%t = [cs%n(2), -cs%n(1)]
       call rates(f, cs)
    end function shin_far
+
+   !> Issue 15: how many switching functions region_switches gives for body
+   !! point arc against a surface sf: the shin's six against the panel's
+   !! edge; a flat surface's six (twelve with the rim's opening); none for a
+   !! line, a circle or a point, whose one primitive acts everywhere.
+   pure integer function region_switch_count(arc, sf) result(n)
+      integer, intent(in) :: arc
+      type(contact_surface_t), intent(in) :: sf
+      n = 0
+      if (arc == 9) then
+         n = 6
+      else if (sf%kind == surface_flat) then
+         n = 6
+         if (sf%t_open(2) > sf%t_open(1)) n = 12
+      end if
+   end function region_switch_count
+
+   !> Issue 15: where figure 22's check (contact_check, with the pair's
+   !! memory behind) changes the primitive that acts between f and sf while
+   !! the pair is loaded, as switching functions in g (in): the force's
+   !! slope jumps where the contact point rounds an edge (a face meets a
+   !! corner's circle, the shin's line part its knee or ankle circle, a
+   !! capsule the far half's planes: delta and its gradient continue, the
+   !! normal's rate does not - P/r of geometric stiffness), and the force's
+   !! direction jumps where a point inside a solid (D-C16b) is as deep
+   !! below two of its faces. take_up (in): the pair's chain taken up beyond
+   !! its zero extent, > 0 where it carries load. A boundary b matters only
+   !! where the pair is loaded (and the mode it bounds acts, q > 0): each g
+   !! is max(b, -q) with q = min(take_up, the mode's own margin), so it has
+   !! b's sign there and is positive elsewhere - continuous, and crossing
+   !! zero outside b's own root only where q does (with take_up, at the
+   !! contact's onset or release, which the pair's own switch locates).
+   !! Flat surface (T = (S - P).t_k, h = (P - S).n_k): T and D - T (a face's
+   !! ends), T - T_o1 and T_o2 - T (the rim opening's edges), h (the line:
+   !! a corner met from in front or an end wall from inside, D-C16b), and,
+   !! inside the solid (h < 0, the point came from the front), for each
+   !! piece [a, b] the ties of its face with its end walls (depths r - h,
+   !! r - (a - T), r - (T - b)), and of its two walls, where both are less
+   !! deep than the face (a piece shorter than the point's depth: the rim's
+   !! 1 in pieces under a head), and with the opening, the tie of its two
+   !! pieces. Not
+   !! located: the nearest of a surface's free ends for a point come from
+   !! behind, and the middle of the rim's opening (a rim pair's arc wider
+   !! than the opening is refused, *INTERIOR DI). The shin (i = 9; E the
+   !! panel's edge, h_a its side of the shank's axis, s the side it came
+   !! from): on its own side the capsule's T_9 and T_end - T_9 (its line
+   !! part meets the knee and ankle circles), h_a (the capsule meets the far
+   !! half, D-C16b), beyond the axis the far half's ties of its near tangent
+   !! with the knee's top and the ankle's bottom, and the capsule's delta on
+   !! the edge's present side while beyond the axis inside the far half: the
+   !! edge leaving through the far side lets the shin go (a jump), and
+   !! decides its side.
+   pure subroutine region_switches(f, sf, behind, e_psi, take_up, g)
+      type(contact_feature_t), intent(in) :: f
+      type(contact_surface_t), intent(in) :: sf
+      logical, intent(in) :: behind
+      real(wp), intent(in) :: e_psi(2), take_up
+      real(wp), intent(out) :: g(:)
+      real(wp) :: nk(2), tt, h, q_in, d1, d2, u(2), m(2), a(2), d(2), t_end, side, q_own, q_far
+      real(wp) :: d_near, d_knee, d_ankle
+      type(contact_state_t) :: cs
+      ! (the last argument of gated: the side contact_check takes where b
+      ! is 0, so that an accepted state there is past the switch or short of
+      ! it as the check itself is, never on it)
+      if (f%arc == 9) then
+         ! the shin against the edge E = sf%s
+         side = merge(-1.0_wp, 1.0_wp, behind)
+         h = dot_product(sf%s - f%joint, [-sin(f%theta), cos(f%theta)])
+         q_own = min(take_up, side*h)
+         q_far = min(take_up, -side*h)
+         call shin_frame(f, merge(1, -1, h >= 0.0_wp), u, m)
+         tt = dot_product(sf%s - f%joint, u)
+         t_end = norm2(f%ankle - f%joint)*cos(f%alpha0)
+         g(1) = gated(tt, q_own, 1.0_wp)
+         g(2) = gated(t_end - tt, q_own, 1.0_wp)
+         g(3) = gated(h, take_up, 1.0_wp)
+         call shin_frame(f, nint(side), u, m)
+         a = e(f%theta)
+         d = sf%s - f%joint
+         d_near = f%r - dot_product(d, m)
+         d_knee = f%r + dot_product(d, a)
+         d_ankle = f%r_ankle - dot_product(sf%s - f%ankle, a)
+         g(4) = gated(d_knee - d_near, q_far, 1.0_wp)
+         g(5) = gated(d_ankle - d_near, q_far, 1.0_wp)
+         ! (in the far half, min(d_near, d_knee, d_ankle) > 0; where the edge
+         ! crosses the axis off the capsule, beyond the knee or the ankle, it
+         ! is not, and nothing switches)
+         cs = shin_capsule(f, sf%s, merge(1, -1, h >= 0.0_wp))
+         g(6) = gated(cs%delta, min(-side*h, min(d_near, d_knee, d_ankle)), -1.0_wp)
+         return
+      end if
+      if (sf%kind /= surface_flat) return
+      nk = [-e_psi(2), e_psi(1)]
+      tt = dot_product(sf%s - f%p, e_psi)
+      h = dot_product(f%p - sf%s, nk)
+      ! inside the solid: loaded, behind the line, come from the front
+      q_in = min(take_up, -h)
+      if (behind) q_in = -1.0_wp
+      g(1) = gated(tt, take_up, 1.0_wp)
+      g(2) = gated(sf%d - tt, take_up, 1.0_wp)
+      g(3) = gated(h, take_up, 1.0_wp)
+      if (sf%t_open(2) > sf%t_open(1)) then
+         g(4) = gated(tt - sf%t_open(1), take_up, -1.0_wp)
+         g(5) = gated(sf%t_open(2) - tt, take_up, -1.0_wp)
+         call piece_ties(0.0_wp, sf%t_open(1), g(6:8))
+         call piece_ties(sf%t_open(2), sf%d, g(9:11))
+         ! the pieces' depths below their faces and walls (solid_from_inside)
+         d1 = piece_depth(0.0_wp, sf%t_open(1))
+         d2 = piece_depth(sf%t_open(2), sf%d)
+         g(12) = gated(d1 - d2, q_in, 1.0_wp)
+      else
+         call piece_ties(0.0_wp, sf%d, g(4:6))
+      end if
+   contains
+      !> The ties of piece [a, b]'s face and walls met from inside, each the
+      !! difference of two of the depths contact_check compares, in its own
+      !! arithmetic (a tie it decides one way is that sign here, to the bit).
+      pure subroutine piece_ties(a, b, gp)
+         real(wp), intent(in) :: a, b
+         real(wp), intent(out) :: gp(3)
+         gp(1) = gated((f%r - (a - tt)) - (f%r - h), q_in, 1.0_wp)
+         gp(2) = gated((f%r - (tt - b)) - (f%r - h), q_in, 1.0_wp)
+         ! (the walls' tie where both are less deep than the face)
+         gp(3) = gated((f%r - (tt - b)) - (f%r - (a - tt)), min(q_in, -h - 0.5_wp*(b - a)), 1.0_wp)
+      end subroutine piece_ties
+
+      !> The depth of piece [a, b] as solid_from_inside's piece takes it.
+      pure real(wp) function piece_depth(a, b) result(dp)
+         real(wp), intent(in) :: a, b
+         dp = f%r - h
+         if (f%r - (a - tt) < dp) dp = f%r - (a - tt)
+         if (f%r - (tt - b) < dp) dp = f%r - (tt - b)
+      end function piece_depth
+   end subroutine region_switches
+
+   !> A boundary b (changing sign where the check changes the primitive)
+   !! that matters only where q > 0: max(b, -q), of b's sign there and
+   !! positive elsewhere. Where b is 0, the sign of zero_side (the side the
+   !! check takes there); never 0 (a switching function 0 at an accepted
+   !! state would count as not crossed, and leaving it would be missed).
+   pure real(wp) function gated(b, q, zero_side) result(g)
+      real(wp), intent(in) :: b, q, zero_side
+      g = b
+      if (.not. abs(g) > 0.0_wp) g = sign(tiny(1.0_wp), zero_side)
+      g = max(g, -q)
+      if (.not. abs(g) > 0.0_wp) g = tiny(1.0_wp)
+   end function gated
 
    !> delta' = -V_C.n and v_T = V_C.t, V_C the interior velocity of the
    !! body's material point at C (the surface is fixed in the interior).

@@ -62,9 +62,6 @@ module effect_base
       logical :: needs_joints = .false.
       logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)
       logical :: has_memory = .false.    !< its accept changes something (only such are called)
-      !> a jump of its right-hand side can be located inside a step (locate;
-      !! only such are asked)
-      logical :: locates = .false.
       !> switching functions (`switches`): where the force or its slope
       !! changes discontinuously (issue 15); none by default
       integer :: n_switch = 0
@@ -87,7 +84,6 @@ module effect_base
       procedure :: failure_text => effect_failure_text
       procedure :: point_forces => effect_point_forces
       procedure :: peaks => effect_peaks
-      procedure :: locate => effect_locate
       procedure :: switches => effect_switches
       procedure :: slides => effect_slides
       procedure :: release => effect_release
@@ -132,23 +128,6 @@ contains
       associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux), u4 => result%n_events)
       end associate
    end subroutine effect_accept
-
-   !> Where inside the step just taken the effect's right-hand side should
-   !! have jumped, as a fraction theta of the step (0 < theta < 1) from the
-   !! last accepted state to st, a state not yet accepted (memory
-   !! read-only); 0 when it need not be located; 1 or more when st falls
-   !! short of a jump the effect watches for (read while the driver
-   !! searches for one). The driver then takes the
-   !! step again to that fraction (simulation: the windshield's break,
-   !! D-C24b). The default effect never asks.
-   pure real(wp) function effect_locate(this, st, extra, aux) result(theta)
-      class(effect_t), intent(in) :: this
-      type(body_state_t), intent(in) :: st
-      real(wp), intent(in) :: extra(:), aux(:)
-      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux))
-      end associate
-      theta = 0.0_wp
-   end function effect_locate
 
    !> The effect's switching functions at state st (n_switch of them, in
    !! g): each continuous in the state for the memory the effect holds, and

@@ -6,7 +6,7 @@
 !! of belt_shared_deflection (issue 14, item 34).
 module loading_branch
    use kinds, only: wp
-   use loading_curves, only: loading_curve_t, curve_polynomial, curve_table, table_interval
+   use loading_curves, only: loading_curve_t, curve_polynomial, curve_table, table_interval, curve_is_defined
    use recurrent_loading, only: recurrent_law_t, loading_memory_t
    implicit none
    private
@@ -14,6 +14,7 @@ module loading_branch
    public :: branch_point_t, branch_at, branch_at_memo, branch_eval, held_plastic, zero_extent
    public :: rate_force, rate_slope, rate_inverse, min_slope, rigid_slope
    public :: branch_argument, turn_switch, zero_on_side, turn_margin
+   public :: branch_kink_count, branch_kinks
 
    !> (issue 15) How far past 0 (in/s) an element's rate is when its turning
    !! point or new cycle is located (turn_switch).
@@ -249,6 +250,68 @@ contains
       v = g
       if (.not. abs(g) > 0.0_wp) v = merge(nudge, -nudge, above)
    end function zero_on_side
+   !> Issue 15: how many switching functions branch_kinks gives for an
+   !! element of this law: one per interior point of a tabulated curve that
+   !! carries force (F_e's slope jumps there; the points of a flat start end
+   !! at the element's zero extent, where its chain takes up or goes slack,
+   !! the chain's own switch; the last point has none, the table going on
+   !! along its last interval), and one for the turning point where an
+   !! unloading curve meets the loading curve (a law with memory). Fixed
+   !! by the law: the same whatever the memory.
+   pure integer function branch_kink_count(law) result(n)
+      type(recurrent_law_t), intent(in) :: law
+      integer :: np
+      n = 0
+      if (law%curve%form == curve_table) then
+         np = size(law%curve%force)
+         if (np > 2) n = count(law%curve%force(2:np - 1) > 0.0_wp)
+      end if
+      if (.not. law%elastic .and. curve_is_defined(law%curve)) n = n + 1
+   end function branch_kink_count
+
+   !> Issue 15: the switching functions of an element's branch (figure 18,
+   !! with its memory) at deformation x, branch_kink_count of them in g: x -
+   !! X (in) for each kink X of the branch, so that each changes sign where
+   !! the branch's slope jumps. A table point d_k (loading.md 2) lies at
+   !! eps_n + d_k on the loading curve and, while unloading, at delta_0 +
+   !! (delta_max - delta_0) d_k/d_max on the unloading curve F_e(xi d_max)
+   !! xi**p (where xi d_max = d_k), or beyond delta_max on the loading curve
+   !! again (d_k >= d_max); the unloading curve meets the loading curve at
+   !! delta_max, the last one. A kink the branch does not have (the junction
+   !! while loading; a plastic law's unloading, which carries nothing below
+   !! delta_max) gives -1: a constant, never crossed.
+   pure subroutine branch_kinks(law, mem, x, g)
+      type(recurrent_law_t), intent(in) :: law
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: x
+      real(wp), intent(out) :: g(:)
+      real(wp) :: dm, span
+      integer :: k, j, np
+      logical :: unloading
+      unloading = .not. law%elastic .and. mem%unloading
+      dm = mem%delta_max - mem%eps
+      span = mem%delta_max - mem%delta_zero
+      j = 0
+      if (law%curve%form == curve_table) then
+         np = size(law%curve%force)
+         do k = 2, np - 1
+            if (.not. law%curve%force(k) > 0.0_wp) cycle
+            j = j + 1
+            if (.not. unloading .or. law%curve%defl(k) >= dm) then
+               g(j) = x - (mem%eps + law%curve%defl(k))
+            else if (law%plastic .or. .not. (span > 0.0_wp .and. dm > 0.0_wp)) then
+               g(j) = -1.0_wp
+            else
+               g(j) = x - (mem%delta_zero + span*law%curve%defl(k)/dm)
+            end if
+         end do
+      end if
+      if (.not. law%elastic .and. curve_is_defined(law%curve)) then
+         j = j + 1
+         g(j) = -1.0_wp
+         if (unloading) g(j) = x - mem%delta_max
+      end if
+   end subroutine branch_kinks
 
    !> (D-B10) A plastic element (R = 0) that has turned: its graph is a
    !! vertical segment at delta_max, from 0 to f_max, where it is rigid -

@@ -23,7 +23,7 @@ module print_schedule
       integer(i8) :: print_every = 1   !< of the fixed grid's steps
       integer(i8) :: next_print = 1    !< adaptive: the next print time is next_print*DTPRINT
       integer(i8) :: n = 0             !< accepted steps of the grid so far (not located states)
-      !> fixed grid: after a located jump, the end of the step it was found
+      !> fixed grid: after a located switch, the end of the step it was found
       !! in, where the next step returns to the grid (negative: none)
       real(wp) :: t_resume = -1.0_wp
       !> the frames: the vehicle's data for the outputs, the series, the
@@ -69,7 +69,7 @@ contains
    end subroutine schedule_init
 
    !> The latest time the next step may end at: a fixed-step integrator's
-   !! own step, or the end of the step a located jump was found in (once);
+   !! own step, or the end of the step a located switch was found in (once);
    !! an adaptive one's next print time, or TMAX.
    subroutine schedule_next_limit(this, t, t_limit)
       class(print_schedule_t), intent(inout) :: this
@@ -77,14 +77,14 @@ contains
       real(wp), intent(out) :: t_limit
       if (this%fixed_step) then
          t_limit = huge(1.0_wp)
-         if (this%t_resume > t) t_limit = this%t_resume    ! back onto the grid after a located jump
+         if (this%t_resume > t) t_limit = this%t_resume    ! back onto the grid after a located switch
          this%t_resume = -1.0_wp
       else
          t_limit = min(real(this%next_print, wp)*this%dt_print, this%t_max)
       end if
    end subroutine schedule_next_limit
 
-   !> A jump was located inside the step that ended at t_end: a fixed-step
+   !> A switch was located inside the step that ended at t_end: a fixed-step
    !! integrator's next step goes back to its grid there.
    subroutine schedule_resume_at(this, t_end)
       class(print_schedule_t), intent(inout) :: this

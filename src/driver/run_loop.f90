@@ -1,6 +1,6 @@
 !> One run as a value (report figure 6): the system, its stepper, the
 !! state, the books of the accepted steps, the print schedule, the
-!! located jumps and the sinks, all components of a run_t, so that runs
+!! located switches and the sinks, all components of a run_t, so that runs
 !! can proceed side by side (C.8's studies) and a caller can step one:
 !!
 !!    call run%init(m, sinks=sinks)          ! C.2, t = 0: the first frame, begin
@@ -29,7 +29,6 @@ module run_loop
    use sink_list, only: sink_list_t
    use step_bookkeeping, only: step_books_t, record_failure
    use print_schedule, only: print_schedule_t
-   use jump_location, only: jump_locator_t
    use switch_location, only: switch_locator_t
    implicit none
    private
@@ -45,7 +44,6 @@ module run_loop
       type(run_summary_t) :: summary         !< maxima, criteria, events, energy balance so far
       type(step_books_t) :: books            !< what each accepted step updates
       type(print_schedule_t) :: schedule     !< print times and frames
-      type(jump_locator_t) :: locator        !< jumps located inside a step (D-C24b)
       type(switch_locator_t) :: switches     !< switches located inside a step (issue 15)
       type(sink_list_t) :: sinks
       type(error_t) :: err                   !< a numerical failure (the summary's failure at finish)
@@ -108,34 +106,28 @@ contains
       call this%sinks%record(this%schedule%frame)
       call this%books%accept(this%sys, this%stepper, this%t, this%y, .false., this%summary, this%sinks, this%reason, &
                              this%err)
-      call this%locator%init(this%sys, tr%relocates, size(this%y))
       call this%switches%init(this%sys, tr%relocates, this%t, this%y, this%stepper%stats)
    end subroutine run_init
 
    !> One accepted step: a step of the integrator, or the state inside it
-   !! where a located jump happens (D-C24b); then the books (memory,
+   !! just past a located switch (issue 15); then the books (memory,
    !! maxima, events, end tests, a restart), a frame at a print time or at
    !! the end. Nothing when the run is done.
    subroutine run_advance(this)
       class(run_t), intent(inout) :: this
       real(wp) :: t_limit, t_step_end
-      logical :: located, switched, at_end, print_now
+      logical :: located, at_end, print_now
       integer :: reason
       type(error_t) :: why
       if (this%is_done()) return
       call this%schedule%next_limit(this%t, t_limit)
-      if (this%locator%on) call this%locator%mark(this%t, this%y, this%stepper%stats)
       if (this%switches%on) call this%switches%mark(this%t, this%y, this%stepper%f, this%stepper%stats)
       call this%stepper%advance(this%sys, this%t, this%y, t_limit, why)
       t_step_end = this%t
       located = .false.
-      switched = .false.
-      if (.not. why%failed() .and. this%locator%on) &
-         call this%locator%locate(this%sys, this%stepper, this%t, this%y, located, why)
-      ! a switch inside the step (or inside the part of it a jump left)
+      ! a switch inside the step: the state just past the first
       if (.not. why%failed() .and. this%switches%on) &
-         call this%switches%locate(this%sys, this%stepper, this%t, this%y, switched, why)
-      located = located .or. switched
+         call this%switches%locate(this%sys, this%stepper, this%t, this%y, located, why)
       if (why%failed()) then
          ! keep the last accepted state in the output, then stop
          if (this%t > this%schedule%t_frame) call output_frame(this)

@@ -1,7 +1,7 @@
 !> The integrator of a run (C.3): built from the model's numerics (NINT,
 !! DT, the corrector's and the tolerances' settings), or given by the
 !! caller; and what the run loop must know of it (its grid, whether it can
-!! take a step again to a located jump).
+!! take a step again to a located switch).
 module stepper_factory
    use kinds, only: wp
    use model, only: model_t, nint_adams, nint_dopri, astart_rk4
@@ -22,8 +22,8 @@ module stepper_factory
       logical :: fixed_step = .false.
       real(wp) :: h = 0.0_wp
       !> it can take a step again to a fraction of it (RK4, Dormand-Prince;
-      !! Adams-Moulton by its starter, after a restart): a jump or switch an
-      !! effect locates inside a step is stepped to (D-C24b, issue 15)
+      !! Adams-Moulton by its starter, after a restart): a switch of an
+      !! effect inside a step is stepped to (issue 15)
       logical :: relocates = .false.
    end type stepper_traits_t
 
@@ -58,7 +58,7 @@ contains
 
    !> What the run loop must know of a stepper. A stepper of a type this
    !! module does not know is driven as an adaptive one that cannot take
-   !! a step again (steps that end at the print times, no located jumps).
+   !! a step again (steps that end at the print times, no located switches).
    function stepper_traits(stepper) result(tr)
       class(stepper_t), intent(in) :: stepper
       type(stepper_traits_t) :: tr
