@@ -144,7 +144,12 @@ contains
          call step_again(this, sys, stepper, t_to, t, y, retry)
          if (retry%failed()) exit           ! (the earliest state found past the switch is kept)
          call switch_values(sys, t, y, this%g_try, stepper%stats)
-         if (any(crossed(this%g_lo, this%g_try))) then
+         ! past a switch only where a function has the sign opposite to its
+         ! sign at the accepted state: a try on a root (g exactly 0, which
+         ! the regula falsi reaches often) is short of it, so the state
+         ! accepted has |g| > 0 and the effect's accept decides there as on
+         ! the far side (a dislocation landed on its limit was not taken)
+         if (any(passed(this%g_prev, this%g_try))) then
             side = 1                       ! past a switch: the bracket's end
             t_hi = t
             this%g_hi = this%g_try
@@ -215,6 +220,13 @@ contains
       real(wp), intent(in) :: a, b
       crossed = (a > 0.0_wp .and. .not. b > 0.0_wp) .or. (a < 0.0_wp .and. .not. b < 0.0_wp)
    end function crossed
+
+   !> Which switching functions have the sign opposite to a's in b (a
+   !! strict change: a zero is on neither side).
+   pure elemental logical function passed(a, b)
+      real(wp), intent(in) :: a, b
+      passed = (a > 0.0_wp .and. b < 0.0_wp) .or. (a < 0.0_wp .and. b > 0.0_wp)
+   end function passed
 
    !> The earliest time in (t_lo, t_hi) at which a switching function that
    !! changed sign over the bracket reaches zero, by the regula falsi of
