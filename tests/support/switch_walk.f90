@@ -9,8 +9,9 @@
 !! whether the forces jump or kink there (one-sided slopes at +-eps, eps =
 !! 1e-4 of the interval); in every other interval it asks whether they do
 !! anywhere inside (the slopes at its two ends differ by more than
-!! slope_tol, or the increment is not the trapezoid of the end slopes to
-!! jump_tol): a stray switch. So a kink or jump found only where a g
+!! slope_tol + slope_rel times the larger of them, or the increment is not
+!! the trapezoid of the end slopes to jump_tol + h times their difference):
+!! a stray switch. So a kink or jump found only where a g
 !! changes sign, and one found at every such place, is what the tests
 !! assert (n_stray = 0, n_switched = n_roots). The tolerances must exceed
 !! the smooth variation of the slope over an interval (|f''| h).
@@ -19,7 +20,8 @@
 !! steps (the memory changes there): g at a sample is compared, as the
 !! driver compares it, with g at the sample before after its accept; a
 !! memory change (accept's restart) in an interval where no g changed sign
-!! counts as stray (n_stray_memory).
+!! counts as stray (n_stray_memory); one that makes the forces jump (by
+!! more than jump_tol) is counted in n_memory_jumps.
 module switch_walk
    use kinds, only: wp
    implicit none
@@ -53,8 +55,10 @@ module switch_walk
       integer :: n_stray = 0          !< intervals without a change in which the forces jump or kink
       integer :: n_memory = 0         !< accepts that changed the memory (accepting)
       integer :: n_stray_memory = 0   !< of those, in an interval without a change of sign
+      integer :: n_memory_jumps = 0   !< of those, where the forces jump
       real(wp), allocatable :: roots(:)          !< where the changes of sign are
-      real(wp) :: first_stray = huge(1.0_wp)     !< the first stray interval's start
+      logical, allocatable :: switched(:)        !< whether the forces jump or kink at each
+      real(wp) :: first_stray = huge(1.0_wp)     !< the first stray interval's start (in the walk's direction)
    end type walk_t
 
 contains
@@ -70,20 +74,23 @@ contains
    end subroutine path_accept_at
 
    !> Walk path from s0 to s1 in n intervals (see the module's note).
-   function walk_path(path, s0, s1, n, slope_tol, jump_tol, accepting) result(w)
+   function walk_path(path, s0, s1, n, slope_tol, jump_tol, accepting, slope_rel) result(w)
       class(path_t), intent(inout) :: path
       real(wp), intent(in) :: s0, s1, slope_tol, jump_tol
       integer, intent(in) :: n
       logical, intent(in), optional :: accepting
+      real(wp), intent(in), optional :: slope_rel
       type(walk_t) :: w
-      real(wp) :: h, eps, s, a, b, mid, sr
-      real(wp), dimension(path%nf) :: f0, f1, fr0, fl1, fm2, fm1, fp1, fp2, sl, sr_slope
+      real(wp) :: h, eps, s, a, b, mid, sr, rel
+      real(wp), dimension(path%nf) :: f0, f1, fr0, fl1, fm2, fm1, fp1, fp2, sl, sr_slope, f_before
       real(wp), dimension(path%ng) :: g0, g1, gm, gdum
       logical :: acc, changed, root
       integer :: k, it
       acc = .false.
       if (present(accepting)) acc = accepting
-      allocate (w%roots(0))
+      rel = 0.0_wp
+      if (present(slope_rel)) rel = slope_rel
+      allocate (w%roots(0), w%switched(0))
       h = (s1 - s0)/real(n, wp)
       eps = 1.0e-4_wp*h
       if (acc) call path%accept_at(s0, changed)
@@ -117,20 +124,27 @@ contains
             call path%at(sr + 2.0_wp*eps, fp2, gdum)
             sl = (fm1 - fm2)/eps
             sr_slope = (fp2 - fp1)/eps
-            if (any(abs(sr_slope - sl) > slope_tol) .or. any(abs(fp1 - fm1 - eps*(sl + sr_slope)) > jump_tol)) &
-               w%n_switched = w%n_switched + 1
-         else if (any(abs((f1 - fl1)/eps - (fr0 - f0)/eps) > slope_tol) .or. &
-                  any(abs(f1 - f0 - 0.5_wp*h*((fr0 - f0)/eps + (f1 - fl1)/eps)) > jump_tol)) then
+            w%switched = [w%switched, any(abs(sr_slope - sl) > slope_tol + rel*max(abs(sl), abs(sr_slope))) .or. &
+                                      any(abs(fp1 - fm1 - eps*(sl + sr_slope)) > jump_tol)]
+            if (w%switched(size(w%switched))) w%n_switched = w%n_switched + 1
+         else if (any(abs((f1 - fl1)/eps - (fr0 - f0)/eps) > slope_tol + rel*max(abs((f1 - fl1)/eps), &
+                                                                                 abs((fr0 - f0)/eps))) .or. &
+                  any(abs(f1 - f0 - 0.5_wp*h*((fr0 - f0)/eps + (f1 - fl1)/eps)) > &
+                      jump_tol + abs(h)*abs((f1 - fl1)/eps - (fr0 - f0)/eps))) then
+            ! (a smooth f misses the trapezoid of its end slopes by less than
+            ! h times their difference)
             w%n_stray = w%n_stray + 1
-            w%first_stray = min(w%first_stray, s - h)
+            if (w%n_stray == 1) w%first_stray = s - h
          end if
          if (acc) then
+            f_before = f1
             call path%accept_at(s, changed)
+            call path%at(s, f1, g1)       ! (with the memory accepted here)
             if (changed) then
                w%n_memory = w%n_memory + 1
                if (.not. root) w%n_stray_memory = w%n_stray_memory + 1
+               if (any(abs(f1 - f_before) > jump_tol)) w%n_memory_jumps = w%n_memory_jumps + 1
             end if
-            call path%at(s, f1, g1)       ! (with the memory accepted here)
          end if
          f0 = f1
          g0 = g1
