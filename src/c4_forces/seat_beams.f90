@@ -37,9 +37,11 @@
 !! case (z = 0 and z = l), the hip's force coming on or off (delta_A beyond
 !! its reference reaching rho w), the leg taking the cantilever's tip over
 !! from the hip (delta_z = w_free), beam 1's stiffness reaching its cap
-!! (z = 0.05 l and 0.95 l), the leg's branch and its resting on the edge.
-!! (rho is C1 where the hip passes the cantilever's root, z = k l: no
-!! switch.) The hip's sliding direction is not declared (it chatters).
+!! (z = 0.05 l and 0.95 l), the hip passing the cantilever's root (z = k
+!! l, where rho is C1 but its curvature jumps: an unlocated crossing cost
+!! RK4 an order, 8.9 for 16 a halving in test_seat_switches_located_run),
+!! the leg's branch and its resting on the edge. The hip's sliding
+!! direction is not declared (it chatters).
 module seat_beams
    use kinds, only: wp, deg
    use strings, only: num
@@ -123,7 +125,7 @@ contains
       e%external = .true.
       e%has_memory = .true.
       e%has_energy = .true.
-      e%n_switch = 8
+      e%n_switch = 9
    end function seat_beams_effect
 
    !> Figure 14's case for the hip at z behind the front edge: over beam 1
@@ -308,6 +310,8 @@ contains
    !!   7  leg_rest_margin (in): figure 12's leg on the edge
    !!   8  x_knee - z_o (in), while the leg rests on the edge: the branch
    !!      (the leg's underside changes from thigh to shank: a corner)
+   !!   9  k l - z (in), while on: the cantilever's root, where rho's
+   !!      curvature jumps (rho and its slope are continuous)
    !! A function that does not apply in the memory held is +1.
    pure subroutine beams_switches(this, st, extra, aux, g)
       class(seat_beams_t), intent(in) :: this
@@ -325,6 +329,7 @@ contains
          g(3) = s%g_hip
          g(5) = s%z - end_fraction*this%p%ell
          g(6) = (1.0_wp - end_fraction)*this%p%ell - s%z
+         g(9) = this%p%k_ratio*this%p%ell - s%z
       end if
       if (s%leg) then
          g(4) = s%g_tip
