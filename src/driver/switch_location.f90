@@ -119,6 +119,7 @@ contains
       type(error_t) :: retry
       real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2)
       integer :: k, side, last_side
+      logical :: nudged, nudged_last
       located = .false.
       call switch_values(sys, t, y, this%g_hi, stepper%stats)
       if (.not. any(crossed(this%g_prev, this%g_hi))) return
@@ -132,12 +133,33 @@ contains
       w_hi = 1.0_wp
       last_side = 0
       width = huge(1.0_wp)       ! the bracket's width two tries ago and one
+      nudged_last = .false.
       do k = 1, max_tries
          if (t_hi - t_lo <= tol_t) exit
          t_to = first_crossing(this%g_lo, this%g_hi, w_lo, w_hi, t_lo, t_hi)
+         ! (the bracket's start on a root of a function that changed sign over
+         ! the step: the root is there)
+         if (any(crossed(this%g_prev, this%g_hi) .and. .not. abs(this%g_lo) > 0.0_wp)) t_to = t_lo
+         ! a try within tol_t/2 of an end (or on it: the end on a root, g
+         ! exactly 0) goes tol_t/2 inside it, as in Brent's method: the regula
+         ! falsi closes in on the root from one side, and the bracket then
+         ! closes at the next try instead of halving from the far end some
+         ! thirty times; not twice running, so that the middle below still
+         ! comes every few tries
+         nudged = .false.
+         if (.not. nudged_last) then
+            if (t_to >= t_hi - 0.5_wp*tol_t) then
+               t_to = t_hi - 0.5_wp*tol_t
+               nudged = .true.
+            else if (t_to <= t_lo + 0.5_wp*tol_t) then
+               t_to = t_lo + 0.5_wp*tol_t
+               nudged = .true.
+            end if
+         end if
+         nudged_last = nudged
          ! the middle when two tries did not halve the bracket: it at least
          ! halves every third try, whatever the switching functions' shape
-         if (t_hi - t_lo > 0.5_wp*width(1)) t_to = 0.5_wp*(t_lo + t_hi)
+         if (.not. nudged .and. t_hi - t_lo > 0.5_wp*width(1)) t_to = 0.5_wp*(t_lo + t_hi)
          width = [width(2), t_hi - t_lo]
          if (.not. (t_to > t_lo .and. t_to < t_hi)) t_to = 0.5_wp*(t_lo + t_hi)
          if (.not. (t_to > t_lo .and. t_to < t_hi)) exit     ! (below the time's resolution)
