@@ -141,7 +141,9 @@ contains
       s%dz = this%p%y_gu - s%y_g + ap*(tu - s%tg)
       ! C.4.d: F_s = sum beta_m Delta_s^m + c_s Delta_s', F'_s = s Delta_z; supports do not pull
       associate (beta => this%p%beta, d => s%ds)
-         if (d > 0.0_wp) then
+         ! (on the support's surface and pressing in, the damper acts at once:
+         ! as the spring seat's hip, seat_springs)
+         if (d > 0.0_wp .or. (.not. d < 0.0_wp .and. s%ds_dot > 0.0_wp)) then
             s%fs_el = poly_force(beta, d)
             s%f_s = max(0.0_wp, s%fs_el + this%p%c_s*s%ds_dot)
             s%e_support = poly_energy(beta, d)

@@ -173,7 +173,13 @@ contains
       ! the hip spring acts on the compression beyond its reference (D-25)
       s%u = s%d - mem%hip_ref
       associate (beta => this%p%beta, u => s%u)
-         if (u > 0.0_wp) then
+         ! in the cushion, or on its surface and pressing in: there the damper
+         ! acts at once (the force's limit along the motion), so that a hip at
+         ! rest on the undeflected cushion (decks/seat_drop.deck,
+         ! seat_child.deck at t = 0), where RK4's second stage sits on u = 0
+         ! with the rate of the first, is not taken off the cushion: that cost
+         ! RK4 two orders in the whole run (issue 15; docs/seat.md)
+         if (u > 0.0_wp .or. (.not. u < 0.0_wp .and. s%d_dot > 0.0_wp)) then
             if (mem%case == case_a) then
                ! C.4.d, sum beta_m d^m (A-S3) and its energy sum beta_m d^{m+1}/(m+1) (E6-1)
                s%f_el = poly_force(beta, u)
