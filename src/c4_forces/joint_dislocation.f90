@@ -2,6 +2,12 @@
 !! excessive relative angle. An effect without forces: its memory (which
 !! joints have dislocated) changes only when a step is accepted, and each
 !! first passage of a limit is an injury event.
+!!
+!! Switches (issue 15): its memory changes where a relative angle passes a
+!! limit for the first time; g = delta - lower and upper - delta (rad) per
+!! joint, so the event (and an end on injury, NEND = 3) falls on the time
+!! the limit is reached, not at the end of the step. A dislocated joint's
+!! two are +1: nothing more changes there.
 module joint_dislocation
    use kinds, only: wp, deg
    use model, only: n_joint, n_dof, restraint_t, joint_name
@@ -28,6 +34,7 @@ module joint_dislocation
    contains
       procedure :: add_forces => dislocation_add_forces
       procedure :: accept => dislocation_accept
+      procedure :: switches => dislocation_switches
    end type joint_dislocation_t
 
 contains
@@ -41,7 +48,30 @@ contains
       e%has_memory = .true.
       e%lower = restraint%dislocation_lower
       e%upper = restraint%dislocation_upper
+      e%n_switch = 2*n_joint
    end function joint_dislocation_effect
+
+   !> Issue 15: per joint, delta - lower and upper - delta (rad), negative
+   !! past the limit (dislocation_accept's test); +1 once dislocated.
+   pure subroutine dislocation_switches(this, st, extra, aux, g)
+      class(joint_dislocation_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: g(:)
+      integer :: i
+      real(wp) :: delta
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      do i = 1, n_joint
+         if (this%dislocated(i)) then
+            g(2*i - 1:2*i) = 1.0_wp
+         else
+            delta = relative_angle(st%z, i)
+            g(2*i - 1) = delta - this%lower(i)
+            g(2*i) = this%upper(i) - delta
+         end if
+      end do
+   end subroutine dislocation_switches
 
    !> No generalized force: the report's dislocation is an injury criterion.
    pure subroutine dislocation_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)

@@ -32,6 +32,16 @@
 !! the last accepted step, with the stiffnesses of the nearest point of beam
 !! 1. A beam that comes into action starts from its present deflection (its
 !! reference, D-25), so its force does not jump up.
+!!
+!! Switches (issue 15; docs/seat.md "Switches (issue 15)"): figure 14's
+!! case (z = 0 and z = l), the hip's force coming on or off (delta_A beyond
+!! its reference reaching rho w), the leg taking the cantilever's tip over
+!! from the hip (delta_z = w_free), beam 1's stiffness reaching its cap
+!! (z = 0.05 l and 0.95 l), the hip passing the cantilever's root (z = k
+!! l, where rho is C1 but its curvature jumps: an unlocated crossing cost
+!! RK4 an order, 8.9 for 16 a halving in test_seat_switches_located_run),
+!! the leg's branch and its resting on the edge. The hip's sliding
+!! direction is not declared (it chatters).
 module seat_beams
    use kinds, only: wp, deg
    use strings, only: num
@@ -42,7 +52,8 @@ module seat_beams
    use point_forces, only: point_force_list_t
    use output_series, only: output_series_t, series_new, column
    use seat_geometry, only: add_seat_point_forces, contact_reference, &
-      seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, hip_friction, &
+      seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, leg_rest_margin, leg_branch_margin, &
+      hip_friction, &
       slip_of, vehicle_power, add_hip_force, seg_thigh, seat_memory_t, rest_state, case_off, case_a
    implicit none
    private
@@ -66,6 +77,7 @@ module seat_beams
    contains
       procedure :: add_forces => beams_add_forces
       procedure :: accept => beams_accept
+      procedure :: switches => beams_switches
       procedure :: point_forces => beams_point_forces
       procedure :: energy => beams_energy
       procedure :: outputs => beams_outputs
@@ -79,6 +91,7 @@ module seat_beams
       logical :: on = .false., leg = .false.
       real(wp) :: z = 0.0_wp, delta_a = 0.0_wp, delta_z = 0.0_wp
       real(wp) :: k1 = 0.0_wp, rho = 0.0_wp, k2 = 0.0_wp, w = 0.0_wp
+      real(wp) :: g_hip = 0.0_wp, g_tip = 0.0_wp   !< beams_forces' switching functions (in)
       real(wp) :: f_s = 0.0_wp, fp_s = 0.0_wp, f = 0.0_wp
       real(wp) :: work_rate = 0.0_wp, dissipation = 0.0_wp, supply = 0.0_wp
    end type beams_state_t
@@ -105,13 +118,14 @@ contains
       ! puts the hip on beam 1)
       fr = seat_frame(rest_state([body%theta0, 0.0_wp, 0.0_wp], 0.0_wp), e%l7)
       e%mem%case = beams_case(p%z0 - fr%x1, p%ell)
-      e%mem%leg_on = e%mem%case /= case_off .and. leg_rests(fr, p%z0, e%l8)
+      e%mem%leg_on = e%mem%case /= case_off .and. leg_rests(fr, p%z0, e%l7, e%l8)
       e%mem%slip = 0
       e%n_aux = 3
       e%needs_vehicle = .true.
       e%external = .true.
       e%has_memory = .true.
       e%has_energy = .true.
+      e%n_switch = 9
    end function seat_beams_effect
 
    !> Figure 14's case for the hip at z behind the front edge: over beam 1
@@ -148,15 +162,23 @@ contains
 
    !> The forces of the reconstruction: the tip deflection w minimizes U with
    !! w >= delta_z; F_s = K_1 (delta_A - rho w) >= 0, F'_s = K_2 w - rho F_s >= 0.
-   pure subroutine beams_forces(k1, rho, k2, delta_a, delta_z, f_s, fp_s, w)
+   !! Issue 15: the forces' kinks are where g_hip = delta_A - rho w (in)
+   !! reaches 0 (F_s comes on; w_free's own kink at delta_A = 0 lies where
+   !! F_s is 0 on both sides) and where g_tip = delta_z - w_free (in) does
+   !! (the leg takes the tip over); F'_s's clip only guards rounding (K_2 w -
+   !! rho F_s >= 0 for w >= w_free).
+   pure subroutine beams_forces(k1, rho, k2, delta_a, delta_z, f_s, fp_s, w, g_hip, g_tip)
       real(wp), intent(in) :: k1, rho, k2, delta_a, delta_z
       real(wp), intent(out) :: f_s, fp_s, w
+      real(wp), intent(out), optional :: g_hip, g_tip
       real(wp) :: w_free
       w_free = 0.0_wp
       if (delta_a > 0.0_wp) w_free = rho*k1*delta_a/(k2 + rho**2*k1)
       w = max(delta_z, w_free)
       f_s = k1*max(delta_a - rho*w, 0.0_wp)
       fp_s = max(k2*w - rho*f_s, 0.0_wp)
+      if (present(g_hip)) g_hip = delta_a - rho*w
+      if (present(g_tip)) g_tip = delta_z - w_free
    end subroutine beams_forces
 
    !> Figure 14 (reconstructed) at state st with memory mem: the case and
@@ -190,7 +212,8 @@ contains
       end if
       call beams_stiffness(this%p%ell, this%p%k_ratio, this%p%e1, this%p%e2, s%z, s%k1, s%rho, s%k2)
       ! the deflections beyond their references (D-25)
-      call beams_forces(s%k1, s%rho, s%k2, s%delta_a - mem%hip_ref, s%delta_z - mem%edge_ref, s%f_s, s%fp_s, s%w)
+      call beams_forces(s%k1, s%rho, s%k2, s%delta_a - mem%hip_ref, s%delta_z - mem%edge_ref, s%f_s, s%fp_s, s%w, &
+                        s%g_hip, s%g_tip)
       if (.not. s%leg) s%fp_s = 0.0_wp
       s%f = hip_friction(this%p%mu, s%f_s + s%fp_s, mem%slip)
       ! the work the body does on the beams: F_s delta_A' + F'_s delta_z'
@@ -258,7 +281,7 @@ contains
       before = beams_state(this, st, this%mem)
       new = this%mem
       new%case = beams_case(before%z, this%p%ell)
-      new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l8)
+      new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l7, this%l8)
       ! the deflections and stiffnesses at this state, whatever the memory
       probe_mem = seat_memory_t(case=case_a, leg_on=.true., slip=0)
       probe = beams_state(this, st, probe_mem)
@@ -276,6 +299,44 @@ contains
       this%mem = new
       result%restart = .true.
    end subroutine beams_accept
+
+   !> Issue 15: the non-rigid beams' switching functions at st with their
+   !! memory (docs/seat.md, "Switches (issue 15)"):
+   !!   1  z (in): off beam 1 below 0;  2  l - z (in): off it at l
+   !!   3  delta_A - rho w beyond the references (in), while on: F_s's onset
+   !!   4  delta_z - w_free beyond the references (in), while the leg rests
+   !!      on the edge: the leg takes the tip over (a kink of both forces)
+   !!   5  z - 0.05 l and 6  0.95 l - z (in), while on: K_1 reaches its cap
+   !!   7  leg_rest_margin (in): figure 12's leg on the edge
+   !!   8  x_knee - z_o (in), while the leg rests on the edge: the branch
+   !!      (the leg's underside changes from thigh to shank: a corner)
+   !!   9  k l - z (in), while on: the cantilever's root, where rho's
+   !!      curvature jumps (rho and its slope are continuous)
+   !! A function that does not apply in the memory held is +1.
+   pure subroutine beams_switches(this, st, extra, aux, g)
+      class(seat_beams_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: g(:)
+      type(beams_state_t) :: s
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      s = beams_state(this, st, this%mem)
+      g = 1.0_wp
+      g(1) = s%z
+      g(2) = this%p%ell - s%z
+      if (s%on) then
+         g(3) = s%g_hip
+         g(5) = s%z - end_fraction*this%p%ell
+         g(6) = (1.0_wp - end_fraction)*this%p%ell - s%z
+         g(9) = this%p%k_ratio*this%p%ell - s%z
+      end if
+      if (s%leg) then
+         g(4) = s%g_tip
+         g(8) = leg_branch_margin(s%fr, this%p%z0)
+      end if
+      g(7) = leg_rest_margin(s%fr, this%p%z0, this%l7, this%l8)
+   end subroutine beams_switches
 
    pure subroutine beams_energy(this, st, extra, aux, e)
       class(seat_beams_t), intent(in) :: this

@@ -23,7 +23,7 @@ module seat_geometry
    implicit none
    private
 
-   public :: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests
+   public :: seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, leg_rest_margin, leg_branch_margin
    public :: seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state
    public :: case_off, case_a, case_b, seg_thigh, seg_shank, max_leg_slope
    public :: add_seat_point_forces, contact_reference, poly_force, poly_energy
@@ -131,7 +131,7 @@ contains
    pure integer function leg_branch(fr, x_e)
       type(seat_frame_t), intent(in) :: fr
       real(wp), intent(in) :: x_e
-      if (x_e <= fr%knee(1)) then
+      if (leg_branch_margin(fr, x_e) >= 0.0_wp) then
          leg_branch = seg_thigh
       else
          leg_branch = seg_shank
@@ -139,16 +139,43 @@ contains
    end function leg_branch
 
    !> The leg rests on the front edge: the segment over it is no steeper
-   !! than max_leg_slope and, for the shank, the foot reaches past the edge.
-   pure logical function leg_rests(fr, x_e, l8)
+   !! than max_leg_slope and, for the thigh, the hip is behind the edge; for
+   !! the shank, the foot reaches past it (leg_rest_margin >= 0).
+   pure logical function leg_rests(fr, x_e, l7, l8)
       type(seat_frame_t), intent(in) :: fr
-      real(wp), intent(in) :: x_e, l8
-      if (leg_branch(fr, x_e) == seg_thigh) then
-         leg_rests = fr%c7 >= cos(max_leg_slope) .and. x_e >= fr%x1
-      else
-         leg_rests = fr%c8 >= cos(max_leg_slope) .and. x_e - fr%knee(1) <= l8*fr%c8
-      end if
+      real(wp), intent(in) :: x_e, l7, l8
+      leg_rests = leg_rest_margin(fr, x_e, l7, l8) >= 0.0_wp
    end function leg_rests
+
+   !> By how much the leg rests on the front edge (in): the least of the
+   !! margins of leg_rests' conditions, each a length - the segment's
+   !! slope as L (cos Theta - cos 75 deg), the hip behind the edge x_e -
+   !! x_1 (thigh), the foot past it L_8 cos Theta_8 - (x_e - x_knee)
+   !! (shank). Its sign is leg_rests' answer, bit for bit (the sign of a
+   !! difference is exact); within a branch it is continuous in the state,
+   !! so it is the switching function of the leg's coming onto or off the
+   !! edge (issue 15). It may jump where the branch changes, which is a
+   !! switch of its own (leg_branch_margin).
+   pure real(wp) function leg_rest_margin(fr, x_e, l7, l8) result(margin)
+      type(seat_frame_t), intent(in) :: fr
+      real(wp), intent(in) :: x_e, l7, l8
+      ! (a segment of no length scales its slope's margin by 1 in; the
+      ! product of a positive length and a difference of cosines keeps its sign)
+      if (leg_branch(fr, x_e) == seg_thigh) then
+         margin = min(merge(l7, 1.0_wp, l7 > 0.0_wp)*(fr%c7 - cos(max_leg_slope)), x_e - fr%x1)
+      else
+         margin = min(merge(l8, 1.0_wp, l8 > 0.0_wp)*(fr%c8 - cos(max_leg_slope)), l8*fr%c8 - (x_e - fr%knee(1)))
+      end if
+   end function leg_rest_margin
+
+   !> Where the edge passes the knee (in): >= 0 when the thigh lies over
+   !! the edge (leg_branch), the shank's otherwise; the front-edge force
+   !! has a corner there (issue 15).
+   pure real(wp) function leg_branch_margin(fr, x_e)
+      type(seat_frame_t), intent(in) :: fr
+      real(wp), intent(in) :: x_e
+      leg_branch_margin = fr%knee(1) - x_e
+   end function leg_branch_margin
 
    !> The leg line of segment seg (7 thigh from the hip, 8 shank from the
    !! knee) at angle phi = Theta_seg + omega, offset by r from the joint to

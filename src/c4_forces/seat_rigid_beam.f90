@@ -16,6 +16,13 @@
 !!   m_s y_g'' = F_s + F'_s - F_hip - F_edge - m_s g cos Phi
 !!               - m_s (x_c'' sin Phi + y_c'' cos Phi) + m_s (Phi'' x_g + Phi'^2 y_g)
 !!   I_s gamma'' = sec^2 gamma [a'(F'_s - F_edge) - (a - a')F_s - (x_1 - x_g)F_hip] + I_s Phi''
+!!
+!! Switches (issue 15; docs/seat.md "Switches (issue 15)"): the hip
+!! leaving the beam or coming back (z = 0), the rear support's force coming
+!! on or off (its deflection, and the clip of spring and damper), the front
+!! support's, the hip's and the edge's contacts (penetration beyond the
+!! reference), the leg's branch (a corner) and its resting on the edge.
+!! The hip's sliding direction is not declared (it chatters: docs/seat.md).
 module seat_rigid_beam
    use kinds, only: wp, deg
    use strings, only: num
@@ -26,8 +33,8 @@ module seat_rigid_beam
    use point_forces, only: point_force_list_t
    use output_series, only: output_series_t, series_new, column
    use seat_geometry, only: add_seat_point_forces, contact_reference, &
-      seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
-      hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, poly_force, poly_energy
+      seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, leg_rest_margin, leg_branch_margin, &
+      seat_memory_t, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, poly_force, poly_energy
    implicit none
    private
 
@@ -42,6 +49,7 @@ module seat_rigid_beam
    contains
       procedure :: add_forces => beam_add_forces
       procedure :: accept => beam_accept
+      procedure :: switches => beam_switches
       procedure :: point_forces => beam_point_forces
       procedure :: energy => beam_energy
       procedure :: outputs => beam_outputs
@@ -90,10 +98,11 @@ contains
       e%external = .true.
       e%has_memory = .true.
       e%has_energy = .true.
+      e%n_switch = 7
       st = rest_state(z0, phi0)
       fr = seat_frame(st, e%l7)
       e%mem%case = case_a
-      e%mem%leg_on = leg_rests(fr, p%z0, e%l8)
+      e%mem%leg_on = leg_rests(fr, p%z0, e%l7, e%l8)
       ! the contact lines carry W_o and F-hat'_so at t = 0 (the hip at the origin)
       e%e_hip = p%yg0 + (0.0_wp - e%x_g)*tan(p%gamma0) - p%w0/p%k_hip
       ln = leg_line(fr, leg_branch(fr, p%z0), p%z0, 0.0_wp, 0.0_wp, e%l7)
@@ -132,7 +141,9 @@ contains
       s%dz = this%p%y_gu - s%y_g + ap*(tu - s%tg)
       ! C.4.d: F_s = sum beta_m Delta_s^m + c_s Delta_s', F'_s = s Delta_z; supports do not pull
       associate (beta => this%p%beta, d => s%ds)
-         if (d > 0.0_wp) then
+         ! (on the support's surface and pressing in, the damper acts at once:
+         ! as the spring seat's hip, seat_springs)
+         if (d > 0.0_wp .or. (.not. d < 0.0_wp .and. s%ds_dot > 0.0_wp)) then
             s%fs_el = poly_force(beta, d)
             s%f_s = max(0.0_wp, s%fs_el + this%p%c_s*s%ds_dot)
             s%e_support = poly_energy(beta, d)
@@ -232,7 +243,7 @@ contains
       before = beam_state(this, st, extra, this%mem)
       new = this%mem
       new%case = merge(case_off, case_a, before%z < 0.0_wp)
-      new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l8)
+      new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l7, this%l8)
       ! the penetrations at this state, whatever the memory
       probe_mem = new
       probe_mem%case = case_a
@@ -252,6 +263,40 @@ contains
       this%mem = new
       result%restart = .true.
    end subroutine beam_accept
+
+   !> Issue 15: the rigid beam's switching functions at st, beam state
+   !! extra, with its memory, each zero where a force comes on or off or
+   !! figure 12's decision changes (docs/seat.md, "Switches (issue 15)"):
+   !!   1  z (in): the hip off the beam below 0
+   !!   2  min(k Delta_s, F_s,el + c_s Delta_s') (lb), k = beta_1 (1 lb/in if
+   !!      0): the rear support's force is positive exactly where both are
+   !!   3  Delta_z (in): the front support's spring
+   !!   4  the hip's penetration beyond its reference (in), while on the beam
+   !!   5  the edge's penetration beyond its reference (in), while the leg
+   !!      rests on the edge
+   !!   6  x_knee - z_o (in), while the leg rests on the edge: the branch
+   !!   7  leg_rest_margin (in): figure 12's leg on the edge
+   !! A function that does not apply in the memory held is +1.
+   pure subroutine beam_switches(this, st, extra, aux, g)
+      class(seat_rigid_beam_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: g(:)
+      type(beam_state_t) :: s
+      associate (u1 => size(aux))
+      end associate
+      s = beam_state(this, st, extra, this%mem)
+      g = 1.0_wp
+      g(1) = s%z
+      g(2) = min(merge(this%p%beta(1), 1.0_wp, this%p%beta(1) > 0.0_wp)*s%ds, s%fs_el + this%p%c_s*s%ds_dot)
+      g(3) = s%dz
+      if (s%on) g(4) = s%p_hip - this%mem%hip_ref
+      if (s%leg) then
+         g(5) = s%p_edge - this%mem%edge_ref
+         g(6) = leg_branch_margin(s%fr, this%p%z0)
+      end if
+      g(7) = leg_rest_margin(s%fr, this%p%z0, this%l7, this%l8)
+   end subroutine beam_switches
 
    pure subroutine beam_energy(this, st, extra, aux, e)
       class(seat_rigid_beam_t), intent(in) :: this

@@ -22,6 +22,15 @@
 !! what the switches of figure 12 took from the springs (never negative,
 !! D-25); supplied = the integral of the power of the seat forces at the
 !! vehicle's material points (auxiliary quantity 2).
+!!
+!! Switches (issue 15; docs/seat.md "Switches (issue 15)"): figure 12's
+!! case (z = 0: off the seat; z = z-hat: regions A and B), the hip's force
+!! coming on or off (the compression beyond the reference, and the clip of
+!! the spring and damper), the front edge's (its compression beyond its
+!! reference), the leg's branch (a corner) and its resting on the edge.
+!! The hip's sliding direction is not declared: it reverses as soon as the
+!! friction it switches on stops the sliding (chatter; left to the lead's
+!! sliding mode, as the joints' friction).
 module seat_springs
    use kinds, only: wp, deg
    use strings, only: num
@@ -34,8 +43,8 @@ module seat_springs
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_state_t, segment_cg_state
    use seat_geometry, only: add_seat_point_forces, contact_reference, &
-      seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, seat_memory_t, &
-      seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, case_b, &
+      seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, leg_rest_margin, leg_branch_margin, &
+      seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, case_b, &
       poly_force, poly_energy
    implicit none
    private
@@ -55,6 +64,7 @@ module seat_springs
    contains
       procedure :: add_forces => springs_add_forces
       procedure :: accept => springs_accept
+      procedure :: switches => springs_switches
       procedure :: point_forces => springs_point_forces
       procedure :: energy => springs_energy
       procedure :: outputs => springs_outputs
@@ -97,10 +107,11 @@ contains
       e%external = .true.
       e%has_memory = .true.
       e%has_energy = .true.
+      e%n_switch = 6
       st = rest_state(z0, phi0)
       fr = seat_frame(st, e%l7)
       e%mem%case = seat_case(p%z0, p%z_hat)
-      e%mem%leg_on = e%mem%case /= case_off .and. leg_rests(fr, p%z0, e%l8)
+      e%mem%leg_on = e%mem%case /= case_off .and. leg_rests(fr, p%z0, e%l7, e%l8)
       e%mem%k_hat = p%beta(1)
       e%mem%slip = 0
       call static_loads(body, g, z0, phi0, p%z0, e%w_pred, e%fps_pred)
@@ -134,7 +145,7 @@ contains
          moment = moment - g*body%mass(i)*((dx*fr%c_phi - dy*fr%s_phi)*fr%c_phi + (dx*fr%s_phi + dy*fr%c_phi)*fr%s_phi)
       end do
       fps = 0.0_wp
-      if (leg_rests(fr, x_e, body%length(8))) then
+      if (leg_rests(fr, x_e, body%length(7), body%length(8))) then
          ln = leg_line(fr, leg_branch(fr, x_e), x_e, 0.0_wp, 0.0_wp, body%length(7))
          ! the moment about the hip of F'_s (-tan phi, 1) at the crossing is F'_s
          ! times the sum of dh/d alpha over the leg (a rotation of the whole body)
@@ -162,7 +173,13 @@ contains
       ! the hip spring acts on the compression beyond its reference (D-25)
       s%u = s%d - mem%hip_ref
       associate (beta => this%p%beta, u => s%u)
-         if (u > 0.0_wp) then
+         ! in the cushion, or on its surface and pressing in: there the damper
+         ! acts at once (the force's limit along the motion), so that a hip at
+         ! rest on the undeflected cushion (decks/seat_drop.deck,
+         ! seat_child.deck at t = 0), where RK4's second stage sits on u = 0
+         ! with the rate of the first, is not taken off the cushion: that cost
+         ! RK4 two orders in the whole run (issue 15; docs/seat.md)
+         if (u > 0.0_wp .or. (.not. u < 0.0_wp .and. s%d_dot > 0.0_wp)) then
             if (mem%case == case_a) then
                ! C.4.d, sum beta_m d^m (A-S3) and its energy sum beta_m d^{m+1}/(m+1) (E6-1)
                s%f_el = poly_force(beta, u)
@@ -262,7 +279,7 @@ contains
       end if
       new = this%mem
       new%case = seat_case(before%z, this%p%z_hat)
-      new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l8)
+      new%leg_on = new%case /= case_off .and. leg_rests(before%fr, this%p%z0, this%l7, this%l8)
       released = .false.
       if (new%case == case_off) then
          new%hip_ref = 0.0_wp
@@ -290,6 +307,41 @@ contains
       this%mem = new
       result%restart = .true.
    end subroutine springs_accept
+
+   !> Issue 15: the seat's switching functions at st with its memory,
+   !! each positive on one side of figure 12's decision or of a kink of the
+   !! forces, zero where it switches (docs/seat.md, "Switches (issue 15)"):
+   !!   1  z (in): off the seat below 0 (seat_case)
+   !!   2  z - z-hat (in): region B at or below 0, A above
+   !!   3  min(k u, F_el + c_s d') (lb), k = beta_1 (1 lb/in if 0): the
+   !!      hip force F_s is positive exactly where both are (u > 0 and the
+   !!      clip max(0, F_el + c_s d') open); its onset jumps by c_s d'
+   !!   4  the front compression beyond its reference (in), while the leg
+   !!      rests on the edge: F'_s's kink
+   !!   5  x_knee - z_o (in), while the leg rests on the edge: the branch
+   !!      thigh/shank, a corner of F'_s
+   !!   6  leg_rest_margin (in): figure 12's leg on the edge
+   !! A function that does not apply in the memory held is +1.
+   pure subroutine springs_switches(this, st, extra, aux, g)
+      class(seat_springs_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: g(:)
+      type(springs_state_t) :: s
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      s = springs_state(this, st, this%mem)
+      g = 1.0_wp
+      g(1) = s%z
+      g(2) = s%z - this%p%z_hat
+      if (s%case /= case_off) g(3) = min(merge(this%p%beta(1), 1.0_wp, this%p%beta(1) > 0.0_wp)*s%u, &
+                                         s%f_el + this%p%c_s*s%d_dot)
+      if (s%leg) then
+         g(4) = s%delta_e - this%mem%edge_ref
+         g(5) = leg_branch_margin(s%fr, this%p%z0)
+      end if
+      g(6) = leg_rest_margin(s%fr, this%p%z0, this%l7, this%l8)
+   end subroutine springs_switches
 
    !> The largest hip and front-edge forces over the accepted steps (none
    !! that never acted).

@@ -140,6 +140,7 @@ contains
       type(error_t) :: retry
       real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2), t_lo_start, t_seed
       integer :: k, side, last_side
+      logical :: on_root
       located = .false.
       call switch_values(sys, t, y, this%g_hi, stepper%stats, this%rates, this%counts)
       ! a function that sat on its root at the accepted state (a switch
@@ -168,19 +169,31 @@ contains
          ! secants of the functions that cross in it give lies that close
          ! to its end (a function past its root by a rounding)
          if (t_hi - t_lo <= tol_t) exit
-         if (t_hi - first_crossing(this%g_lo, this%g_hi, this%live, 1.0_wp, 1.0_wp, t_lo, t_hi) <= tol_t) exit
+         ! the bracket's start on a root of a function that changed sign
+         ! over the step (a try that landed on it, g exactly 0): the root is
+         ! there, and the next try goes just past it
+         on_root = any(this%live .and. crossed(this%g_prev, this%g_hi) .and. .not. abs(this%g_lo) > 0.0_wp)
+         if (.not. on_root) then
+            if (t_hi - first_crossing(this%g_lo, this%g_hi, this%live, 1.0_wp, 1.0_wp, t_lo, t_hi) <= tol_t) exit
+         end if
          t_to = first_crossing(this%g_lo, this%g_hi, this%live, w_lo, w_hi, t_lo, t_hi)
          if (k == 1) t_to = t_seed
+         if (on_root) t_to = min(t_lo + 0.5_wp*tol_t, 0.5_wp*(t_lo + t_hi))
          ! the middle when two tries did not halve the bracket: it at least
          ! halves every third try, whatever the switching functions' shape
-         if (t_hi - t_lo > 0.5_wp*width(1)) t_to = 0.5_wp*(t_lo + t_hi)
+         if (.not. on_root .and. t_hi - t_lo > 0.5_wp*width(1)) t_to = 0.5_wp*(t_lo + t_hi)
          width = [width(2), t_hi - t_lo]
          if (.not. (t_to > t_lo .and. t_to < t_hi)) t_to = 0.5_wp*(t_lo + t_hi)
          if (.not. (t_to > t_lo .and. t_to < t_hi)) exit     ! (below the time's resolution)
          call step_again(this, sys, stepper, t_to, t, y, retry)
          if (retry%failed()) exit           ! (the earliest state found past the switch is kept)
          call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
-         if (any(this%live .and. crossed(this%g_lo, this%g_try))) then
+         ! past a switch only where a function has the sign opposite to its
+         ! sign at the accepted state: a try on a root (g exactly 0, which
+         ! the regula falsi reaches) is short of it, so that the state
+         ! accepted has |g| > 0 and the effect's accept decides there as on
+         ! the far side (a dislocation landed on its limit was not taken)
+         if (any(this%live .and. passed(this%g_prev, this%g_try))) then
             side = 1                       ! past a switch: the bracket's end
             t_hi = t
             this%g_hi = this%g_try
@@ -311,6 +324,13 @@ contains
       real(wp), intent(in) :: a, b
       crossed = (a > 0.0_wp .and. .not. b > 0.0_wp) .or. (a < 0.0_wp .and. .not. b < 0.0_wp)
    end function crossed
+
+   !> Which switching functions have the sign opposite to a's in b (a
+   !! strict change: a zero is on neither side).
+   pure elemental logical function passed(a, b)
+      real(wp), intent(in) :: a, b
+      passed = (a > 0.0_wp .and. b < 0.0_wp) .or. (a < 0.0_wp .and. b > 0.0_wp)
+   end function passed
 
    !> The earliest time in (t_lo, t_hi) at which a switching function that
    !! changed sign over the bracket reaches zero, by the regula falsi of
