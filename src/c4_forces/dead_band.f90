@@ -11,7 +11,7 @@ module dead_band
    implicit none
    private
 
-   public :: slip_of, ramp_of
+   public :: slip_of, ramp_of, edge_at, edge_range, slip_released
 
 contains
 
@@ -32,4 +32,52 @@ contains
          f = real(slip_of(0.0_wp, v), wp)
       end if
    end function ramp_of
+
+   !> The edge of the dead band the sliding velocity v sits on, to within a
+   !! located switch's tolerance (issue 15, D-4b): +1 at +xi, -1 at -xi, 0 at
+   !! neither (a located switch leaves v within about 1e-10 of its edge).
+   pure integer function edge_at(xi, v) result(edge)
+      real(wp), intent(in) :: xi, v
+      real(wp) :: tol
+      tol = 1.0e-6_wp*max(xi, 1.0_wp)
+      edge = 0
+      if (abs(v - xi) <= tol) then
+         edge = 1
+      else if (abs(v + xi) <= tol) then
+         edge = -1
+      end if
+   end function edge_at
+
+   !> The range of the friction force (on the body, along the sliding
+   !! direction) that holds the motion on an edge of the dead band, the
+   !! law's magnitude c beyond it (D-4b): [-c, 0] at +xi, [0, c] at -xi,
+   !! [-c, c] with xi = 0 (Coulomb's sticking).
+   pure subroutine edge_range(xi, edge, c, lo, hi)
+      real(wp), intent(in) :: xi, c
+      integer, intent(in) :: edge
+      real(wp), intent(out) :: lo, hi
+      lo = -c
+      hi = c
+      if (xi > 0.0_wp) then
+         if (edge > 0) hi = 0.0_wp
+         if (edge < 0) lo = 0.0_wp
+      end if
+   end subroutine edge_range
+
+   !> The direction of sliding after the motion leaves its edge, its force
+   !! at the upper end of edge_range (at_upper) or the lower (D-4b): at +xi,
+   !! -c slides on (+1) and 0 returns to the dead band; at -xi, +c slides on
+   !! (-1) and 0 returns; with xi = 0, -c slides forward and +c backward.
+   pure integer function slip_released(xi, edge, at_upper) result(slip)
+      real(wp), intent(in) :: xi
+      integer, intent(in) :: edge
+      logical, intent(in) :: at_upper
+      if (xi > 0.0_wp) then
+         slip = 0
+         if (edge > 0) slip = merge(0, 1, at_upper)
+         if (edge < 0) slip = merge(-1, 0, at_upper)
+      else
+         slip = merge(-1, 1, at_upper)
+      end if
+   end function slip_released
 end module dead_band

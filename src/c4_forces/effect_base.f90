@@ -43,11 +43,12 @@ module effect_base
    use proximity_guard, only: proximity_guard_t
    use output_series, only: output_series_t
    use text_io, only: string_t
+   use sliding_surface, only: slide_t
    implicit none
    private
 
    !> (body_state_t: the interface's state argument, public here too)
-   public :: effect_t, body_state_t
+   public :: effect_t, body_state_t, slide_t
 
    type, abstract :: effect_t
       character(len=24) :: name = ' '    !< HDF5 group /effects/<name>; lower case, no blanks
@@ -150,34 +151,21 @@ contains
       g = 1.0_wp
    end subroutine effect_switches
 
-   !> The effect's sliding constraints at st (n_slide of them; issue 15).
-   !! Where a force that is discontinuous across a surface of the state
-   !! (friction's +-xi) points into the surface from both sides, the
-   !! motion slides on it (Filippov): a generalized force lambda*d, d a
-   !! direction in z, keeps the rate d.z' constant (d.z'' = 0; d does not
-   !! depend on the state where this is used), with lambda in [lo, hi],
-   !! the range the law's force spans across the surface. The effect holds
-   !! whether each is active (memory: entered in its accept, left by
-   !! `release`) and adds no force of its own for an active one; the
-   !! occupant's solve finds lambda (c5, sliding_constraints). The power
-   !! lambda*d.z' goes to the effect's auxiliary quantity aux_index (its
-   !! work; 0: none), with the sign the effect's own power has there
-   !! (dissipated = -lambda*d.z'). None by default.
-   pure subroutine effect_slides(this, st, extra, aux, active, d, lo, hi, aux_index)
+   !> The effect's sliding constraints at st (n_slide of them; issue 15,
+   !! sliding_surface): where a friction force that is discontinuous across
+   !! a surface of the state (its sliding velocity at an edge of the dead
+   !! band) points into the surface from both sides, the motion slides on it
+   !! (Filippov). The effect holds whether each is active (memory: entered
+   !! in its accept, left by `release`) and adds no force of its own for an
+   !! active one; the occupant's solve finds the multiplier (c5,
+   !! sliding_constraints). None by default.
+   pure subroutine effect_slides(this, st, extra, aux, s)
       class(effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
-      logical, intent(out) :: active(:)
-      real(wp), intent(out) :: d(:, :)          !< (n_dof, n_slide)
-      real(wp), intent(out) :: lo(:), hi(:)
-      integer, intent(out) :: aux_index(:)
-      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux))
+      type(slide_t), intent(out) :: s(:)
+      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux), u4 => size(s))
       end associate
-      active = .false.
-      d = 0.0_wp
-      lo = 0.0_wp
-      hi = 0.0_wp
-      aux_index = 0
    end subroutine effect_slides
 
    !> Sliding constraint k leaves the surface: its multiplier reached hi

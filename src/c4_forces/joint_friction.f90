@@ -16,10 +16,10 @@
 module joint_friction
    use kinds, only: wp
    use model, only: n_dof, n_joint, joint_partner
-   use effect_base, only: effect_t, body_state_t
+   use effect_base, only: effect_t, body_state_t, slide_t
    use effect_events, only: accept_result_t
    use effect_energies, only: energy_dissipated, n_energy_kinds
-   use dead_band, only: slip_of
+   use dead_band, only: slip_of, edge_at, edge_range, slip_released
    use output_series, only: output_series_t
    use joint_coupling, only: per_joint_series, joint_list_text
    implicit none
@@ -119,48 +119,27 @@ contains
       end do
    end subroutine friction_accept
 
-   !> The edge of the dead band the relative rate w sits on, to within a
-   !! located switch's tolerance: +1 at +xi, -1 at -xi, 0 at neither.
-   pure integer function edge_at(xi, w) result(edge)
-      real(wp), intent(in) :: xi, w
-      real(wp) :: tol
-      tol = 1.0e-6_wp*max(xi, 1.0_wp)       ! (rad/s: a located switch leaves w within ~1e-10)
-      edge = 0
-      if (abs(w - xi) <= tol) then
-         edge = 1
-      else if (abs(w + xi) <= tol) then
-         edge = -1
-      end if
-   end function edge_at
-
    !> D-4b (issue 15): a joint held on an edge of its dead band slides
    !! there, its relative rate constant; the torque lies between the
    !! law's on the two sides: [-C', 0] at +xi, [0, C'] at -xi, [-C', C']
    !! at xi = 0 (Coulomb's sticking). Its power is dissipated (aux n).
-   pure subroutine friction_slides(this, st, extra, aux, active, d, lo, hi, aux_index)
+   pure subroutine friction_slides(this, st, extra, aux, s)
       class(joint_friction_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
-      logical, intent(out) :: active(:)
-      real(wp), intent(out) :: d(:, :)
-      real(wp), intent(out) :: lo(:), hi(:)
-      integer, intent(out) :: aux_index(:)
+      type(slide_t), intent(out) :: s(:)
       integer :: n, i
       associate (u1 => size(extra) + size(aux), u2 => st%t)
       end associate
       do n = 1, size(this%joints)
          i = this%joints(n)
-         active(n) = this%edge(i) /= 0
-         d(:, n) = 0.0_wp
-         d(i, n) = 1.0_wp
-         d(joint_partner(i), n) = -1.0_wp
-         aux_index(n) = n
-         lo(n) = -this%c_friction(i)
-         hi(n) = this%c_friction(i)
-         if (this%xi(i) > 0.0_wp) then
-            if (this%edge(i) > 0) hi(n) = 0.0_wp
-            if (this%edge(i) < 0) lo(n) = 0.0_wp
-         end if
+         s(n)%active = this%edge(i) /= 0
+         if (.not. s(n)%active) cycle
+         ! the relative rate alpha-dot_i - alpha-dot_m: no offset, no bias
+         s(n)%d(i) = 1.0_wp
+         s(n)%d(joint_partner(i)) = -1.0_wp
+         s(n)%aux_dissipated = n
+         call edge_range(this%xi(i), this%edge(i), this%c_friction(i), s(n)%lo, s(n)%hi)
       end do
    end subroutine friction_slides
 
@@ -173,12 +152,7 @@ contains
       logical, intent(in) :: at_upper
       integer :: i
       i = this%joints(k)
-      if (this%xi(i) > 0.0_wp) then
-         if (this%edge(i) > 0) this%slip(i) = merge(0, 1, at_upper)
-         if (this%edge(i) < 0) this%slip(i) = merge(-1, 0, at_upper)
-      else
-         this%slip(i) = merge(-1, 1, at_upper)
-      end if
+      this%slip(i) = slip_released(this%xi(i), this%edge(i), at_upper)
       this%edge(i) = 0
    end subroutine friction_release
 

@@ -40,18 +40,19 @@
 !! (z = 0.05 l and 0.95 l), the hip passing the cantilever's root (z = k
 !! l, where rho is C1 but its curvature jumps: an unlocated crossing cost
 !! RK4 an order, 8.9 for 16 a halving in test_seat_switches_located_run),
-!! the leg's branch and its resting on the edge. The hip's sliding
-!! direction is not declared (it chatters).
+!! the leg's branch and its resting on the edge, and the hip's sliding at
+!! +-xi, held on an edge of its dead band (D-19a, seat_geometry's hip_slide).
 module seat_beams
    use kinds, only: wp, deg
    use strings, only: num
    use model, only: n_dof, seat_section_t, body_section_t
-   use effect_base, only: effect_t, body_state_t
+   use effect_base, only: effect_t, body_state_t, slide_t
    use effect_events, only: accept_result_t
    use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
    use point_forces, only: point_force_list_t
    use output_series, only: output_series_t, series_new, column
-   use seat_geometry, only: add_seat_point_forces, contact_reference, &
+   use seat_geometry, only: hip_slide, hip_slide_switches, hip_sliding_decided, hip_released, &
+      add_seat_point_forces, contact_reference, &
       seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, leg_rest_margin, leg_branch_margin, &
       hip_friction, &
       slip_of, vehicle_power, add_hip_force, seg_thigh, seat_memory_t, rest_state, case_off, case_a
@@ -78,6 +79,8 @@ module seat_beams
       procedure :: add_forces => beams_add_forces
       procedure :: accept => beams_accept
       procedure :: switches => beams_switches
+      procedure :: slides => beams_slides
+      procedure :: release => beams_release
       procedure :: point_forces => beams_point_forces
       procedure :: energy => beams_energy
       procedure :: outputs => beams_outputs
@@ -126,6 +129,11 @@ contains
       e%has_memory = .true.
       e%has_energy = .true.
       e%n_switch = 9
+      if (p%mu > 0.0_wp) then
+         ! the hip's sliding (issue 15, D-19a): its two switches, its constraint
+         e%n_switch = e%n_switch + 2
+         e%n_slide = 1
+      end if
    end function seat_beams_effect
 
    !> Figure 14's case for the hip at z behind the front edge: over beam 1
@@ -292,10 +300,9 @@ contains
       if (probe%delta_a > new%hip_ref) w_free = probe%rho*probe%k1*(probe%delta_a - new%hip_ref) &
                                                 /(probe%k2 + probe%rho**2*probe%k1)
       call contact_reference(new%leg_on, before%leg, probe%delta_z - w_free, probe%delta_z, new%edge_ref, released)
-      new%slip = 0
-      if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
+      call hip_sliding_decided(this%mem, new%case /= case_off, this%p%xi, before%fr%x1dot, new)
       if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip &
-          .and. .not. released) return
+          .and. new%edge == this%mem%edge .and. .not. released) return
       this%mem = new
       result%restart = .true.
    end subroutine beams_accept
@@ -336,7 +343,35 @@ contains
          g(8) = leg_branch_margin(s%fr, this%p%z0)
       end if
       g(7) = leg_rest_margin(s%fr, this%p%z0, this%l7, this%l8)
+      if (this%p%mu > 0.0_wp) call hip_slide_switches(s%fr, this%p%xi, this%mem%case /= case_off, this%mem%edge, &
+                                                     g(this%n_switch - 1:this%n_switch))
    end subroutine beams_switches
+
+   !> The hip held on an edge of its dead band (issue 15, D-19a): its
+   !! sliding constraint, the friction's range mu times the normal load.
+   pure subroutine beams_slides(this, st, extra, aux, s)
+      class(seat_beams_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(slide_t), intent(out) :: s(:)
+      type(beams_state_t) :: ss
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      if (this%mem%edge == 0 .or. this%mem%case == case_off) return
+      ss = beams_state(this, st, this%mem)
+      s(1) = hip_slide(ss%fr, st%vehicle%acc, this%p%mu, ss%f_s + ss%fp_s, this%p%xi, this%mem%edge, &
+                       2, 3)
+   end subroutine beams_slides
+
+   !> The hip leaves its edge (D-19a).
+   subroutine beams_release(this, k, at_upper)
+      class(seat_beams_t), intent(inout) :: this
+      integer, intent(in) :: k
+      logical, intent(in) :: at_upper
+      associate (u1 => k)
+      end associate
+      call hip_released(this%mem, this%p%xi, at_upper)
+   end subroutine beams_release
 
    pure subroutine beams_energy(this, st, extra, aux, e)
       class(seat_beams_t), intent(in) :: this

@@ -18,7 +18,8 @@ module seat_geometry
    use model, only: n_dof, n_seg, hip_x, hip_y
    use body_state, only: body_state_t
    use point_forces, only: point_force_list_t, point_force_add
-   use dead_band, only: slip_of    ! (the hip slides once |x_1'| reaches xi, A-S4)
+   use dead_band, only: slip_of, edge_at, edge_range, slip_released   ! (the hip slides once |x_1'| reaches xi, A-S4)
+   use sliding_surface, only: slide_t
    use seat_beam_statics, only: poly_force   ! (the statics at t = 0 use it too: C.2 below C.4)
    implicit none
    private
@@ -27,6 +28,7 @@ module seat_geometry
    public :: seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state
    public :: case_off, case_a, case_b, seg_thigh, seg_shank, max_leg_slope
    public :: add_seat_point_forces, contact_reference, poly_force, poly_energy
+   public :: hip_slide, hip_slide_switches, hip_sliding_decided, hip_released
 
    integer, parameter :: seg_thigh = 7, seg_shank = 8
    !> Figure 11's cases: off the seat (z < 0), case A (z > z-hat: hip
@@ -73,6 +75,9 @@ module seat_geometry
       integer :: case = case_a
       logical :: leg_on = .true.
       integer :: slip = 0
+      !> the hip held on an edge of the dead band (issue 15, D-19a): +1 at
+      !! x_1' = +xi, -1 at -xi (both at 0 when xi = 0), 0 not
+      integer :: edge = 0
       real(wp) :: k_hat = 0.0_wp
       real(wp) :: hip_ref = 0.0_wp, edge_ref = 0.0_wp
       real(wp) :: e_switch = 0.0_wp
@@ -245,6 +250,85 @@ contains
       integer, intent(in) :: slip
       f = mu*max(n, 0.0_wp)*real(slip, wp)
    end function hip_friction
+
+   !> The hip held on an edge of its dead band (issue 15, D-19a; as the
+   !! joints, D-4b): its sliding velocity x_1' stays there while the friction
+   !! the motion needs (on the body, along the interior x) lies within the
+   !! law's range on the two sides, mu n beyond the edge (edge_range). With
+   !! x_1' = (X_h' - x_c') . (cos Phi, -sin Phi) - y_1 Phi' (seat_frame):
+   !!   d      = (cos Phi, -sin Phi) in (x_h, y_h), the generalized force of a
+   !!            unit interior-x force at the hip (add_hip_force);
+   !!   offset = -(R c')_x - y_1 Phi', the vehicle's part;
+   !!   bias   = -(R c'')_x - 2 y_1' Phi' + x_1 Phi'^2 - y_1 Phi'', its rate's
+   !!            part that z'' does not give (y_1' the rotating frame's rate).
+   !! acc: the vehicle's accelerations (x_c'', y_c'', Phi''). The friction's
+   !! power goes to the seat's dissipated work (its auxiliary quantity
+   !! aux_dissipated), the vehicle's to the supplied (aux_supplied), as the
+   !! seat integrates its own.
+   pure function hip_slide(fr, acc, mu, n, xi, edge, aux_dissipated, aux_supplied) result(sl)
+      type(seat_frame_t), intent(in) :: fr
+      real(wp), intent(in) :: acc(3), mu, n, xi
+      integer, intent(in) :: edge, aux_dissipated, aux_supplied
+      type(slide_t) :: sl
+      sl%active = edge /= 0
+      if (.not. sl%active) return
+      sl%d(hip_x) = fr%c_phi
+      sl%d(hip_y) = -fr%s_phi
+      sl%offset = -(fr%vc(1) + fr%phi_dot*fr%y1)
+      sl%bias = -(acc(1)*fr%c_phi - acc(2)*fr%s_phi) - 2.0_wp*fr%y1dot*fr%phi_dot + fr%x1*fr%phi_dot**2 &
+                - fr%y1*acc(3)
+      call edge_range(xi, edge, mu*max(n, 0.0_wp), sl%lo, sl%hi)
+      sl%aux_dissipated = aux_dissipated
+      sl%aux_supplied = aux_supplied
+   end function hip_slide
+
+   !> The hip's sliding switches (issue 15, D-19a): x_1' - xi and x_1' + xi
+   !! (in/s) where the sliding direction changes (slip_of), while on the
+   !! seat and not held on an edge (held, it leaves by its friction's
+   !! range: the occupant's sliding switches); +1 otherwise.
+   pure subroutine hip_slide_switches(fr, xi, on, edge, g)
+      type(seat_frame_t), intent(in) :: fr
+      real(wp), intent(in) :: xi
+      logical, intent(in) :: on
+      integer, intent(in) :: edge
+      real(wp), intent(out) :: g(2)
+      g = 1.0_wp
+      if (.not. on .or. edge /= 0) return
+      g = [fr%x1dot - xi, fr%x1dot + xi]
+   end subroutine hip_slide_switches
+
+   !> Figure 12's hip sliding decided on an accepted state (D-19, D-19a):
+   !! off the seat nothing; held on an edge it stays (left by hip_released);
+   !! else the direction at x_1' = v, and where it changed with v on an edge
+   !! of the dead band (a located switch), held there.
+   pure subroutine hip_sliding_decided(old, on, xi, v, new)
+      type(seat_memory_t), intent(in) :: old
+      logical, intent(in) :: on
+      real(wp), intent(in) :: xi, v
+      type(seat_memory_t), intent(inout) :: new
+      new%slip = 0
+      new%edge = 0
+      if (.not. on) return
+      if (old%edge /= 0) then
+         new%edge = old%edge
+         return
+      end if
+      new%slip = slip_of(xi, v)
+      if (new%slip /= old%slip) then
+         new%edge = edge_at(xi, v)
+         if (new%edge /= 0) new%slip = 0
+      end if
+   end subroutine hip_sliding_decided
+
+   !> The hip leaves its edge (D-19a): its friction reached the upper end
+   !! of its range (at_upper) or the lower (slip_released).
+   pure subroutine hip_released(mem, xi, at_upper)
+      type(seat_memory_t), intent(inout) :: mem
+      real(wp), intent(in) :: xi
+      logical, intent(in) :: at_upper
+      mem%slip = slip_released(xi, mem%edge, at_upper)
+      mem%edge = 0
+   end subroutine hip_released
 
    !> The power that the vehicle delivers through a seat force f (on the
    !! body, interior components) acting at the interior point p: f . R u,

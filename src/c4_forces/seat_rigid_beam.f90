@@ -22,17 +22,18 @@
 !! on or off (its deflection, and the clip of spring and damper), the front
 !! support's, the hip's and the edge's contacts (penetration beyond the
 !! reference), the leg's branch (a corner) and its resting on the edge.
-!! The hip's sliding direction is not declared (it chatters: docs/seat.md).
+!! The hip's sliding at +-xi, held on an edge of its dead band (D-19a).
 module seat_rigid_beam
    use kinds, only: wp, deg
    use strings, only: num
    use model, only: n_dof, n_seg, seat_section_t, body_section_t
-   use effect_base, only: effect_t, body_state_t
+   use effect_base, only: effect_t, body_state_t, slide_t
    use effect_events, only: accept_result_t
    use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
    use point_forces, only: point_force_list_t
    use output_series, only: output_series_t, series_new, column
-   use seat_geometry, only: add_seat_point_forces, contact_reference, &
+   use seat_geometry, only: hip_slide, hip_slide_switches, hip_sliding_decided, hip_released, &
+      add_seat_point_forces, contact_reference, &
       seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, leg_rest_margin, leg_branch_margin, &
       seat_memory_t, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, poly_force, poly_energy
    implicit none
@@ -50,6 +51,8 @@ module seat_rigid_beam
       procedure :: add_forces => beam_add_forces
       procedure :: accept => beam_accept
       procedure :: switches => beam_switches
+      procedure :: slides => beam_slides
+      procedure :: release => beam_release
       procedure :: point_forces => beam_point_forces
       procedure :: energy => beam_energy
       procedure :: outputs => beam_outputs
@@ -99,6 +102,11 @@ contains
       e%has_memory = .true.
       e%has_energy = .true.
       e%n_switch = 7
+      if (p%mu > 0.0_wp) then
+         ! the hip's sliding (issue 15, D-19a): its two switches, its constraint
+         e%n_switch = e%n_switch + 2
+         e%n_slide = 1
+      end if
       st = rest_state(z0, phi0)
       fr = seat_frame(st, e%l7)
       e%mem%case = case_a
@@ -254,10 +262,9 @@ contains
       released = .false.
       call contact_reference(new%case /= case_off, before%on, probe%p_hip, probe%p_hip, new%hip_ref, released)
       call contact_reference(new%leg_on, before%leg, probe%p_edge, probe%p_edge, new%edge_ref, released)
-      new%slip = 0
-      if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
+      call hip_sliding_decided(this%mem, new%case /= case_off, this%p%xi, before%fr%x1dot, new)
       if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip &
-          .and. .not. released) return
+          .and. new%edge == this%mem%edge .and. .not. released) return
       after = beam_state(this, st, extra, new)
       new%e_switch = this%mem%e_switch + before%e_contact - after%e_contact
       this%mem = new
@@ -296,7 +303,35 @@ contains
          g(6) = leg_branch_margin(s%fr, this%p%z0)
       end if
       g(7) = leg_rest_margin(s%fr, this%p%z0, this%l7, this%l8)
+      if (this%p%mu > 0.0_wp) call hip_slide_switches(s%fr, this%p%xi, this%mem%case /= case_off, this%mem%edge, &
+                                                     g(this%n_switch - 1:this%n_switch))
    end subroutine beam_switches
+
+   !> The hip held on an edge of its dead band (issue 15, D-19a): its
+   !! sliding constraint, the friction's range mu times the normal load.
+   pure subroutine beam_slides(this, st, extra, aux, s)
+      class(seat_rigid_beam_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(slide_t), intent(out) :: s(:)
+      type(beam_state_t) :: ss
+      associate (u1 => size(aux))
+      end associate
+      if (this%mem%edge == 0 .or. this%mem%case == case_off) return
+      ss = beam_state(this, st, extra, this%mem)
+      s(1) = hip_slide(ss%fr, st%vehicle%acc, this%p%mu, ss%f_hip + ss%f_edge, this%p%xi, this%mem%edge, &
+                       1, 2)
+   end subroutine beam_slides
+
+   !> The hip leaves its edge (D-19a).
+   subroutine beam_release(this, k, at_upper)
+      class(seat_rigid_beam_t), intent(inout) :: this
+      integer, intent(in) :: k
+      logical, intent(in) :: at_upper
+      associate (u1 => k)
+      end associate
+      call hip_released(this%mem, this%p%xi, at_upper)
+   end subroutine beam_release
 
    pure subroutine beam_energy(this, st, extra, aux, e)
       class(seat_rigid_beam_t), intent(in) :: this

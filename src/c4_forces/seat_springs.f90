@@ -28,21 +28,22 @@
 !! coming on or off (the compression beyond the reference, and the clip of
 !! the spring and damper), the front edge's (its compression beyond its
 !! reference), the leg's branch (a corner) and its resting on the edge.
-!! The hip's sliding direction is not declared: it reverses as soon as the
-!! friction it switches on stops the sliding (chatter; left to the lead's
-!! sliding mode, as the joints' friction).
+!! The hip's sliding at +-xi: held on an edge of its dead band while the
+!! friction the motion needs lies within the law's range (D-19a; Filippov,
+!! as the joints' friction, D-4b).
 module seat_springs
    use kinds, only: wp, deg
    use strings, only: num
    use model, only: n_dof, n_seg, hip_x, hip_y, seat_section_t, body_section_t
-   use effect_base, only: effect_t, body_state_t
+   use effect_base, only: effect_t, body_state_t, slide_t
    use effect_events, only: accept_result_t
    use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
    use point_forces, only: point_force_list_t
    use effect_peaks, only: effect_peak_t
    use output_series, only: output_series_t, series_new, column
    use body_kinematics, only: point_state_t, segment_cg_state
-   use seat_geometry, only: add_seat_point_forces, contact_reference, &
+   use seat_geometry, only: hip_slide, hip_slide_switches, hip_sliding_decided, hip_released, &
+      add_seat_point_forces, contact_reference, &
       seat_frame_t, seat_frame, leg_line_t, leg_line, leg_branch, leg_rests, leg_rest_margin, leg_branch_margin, &
       seat_memory_t, seat_case, hip_friction, slip_of, vehicle_power, add_hip_force, rest_state, case_off, case_a, case_b, &
       poly_force, poly_energy
@@ -65,6 +66,8 @@ module seat_springs
       procedure :: add_forces => springs_add_forces
       procedure :: accept => springs_accept
       procedure :: switches => springs_switches
+      procedure :: slides => springs_slides
+      procedure :: release => springs_release
       procedure :: point_forces => springs_point_forces
       procedure :: energy => springs_energy
       procedure :: outputs => springs_outputs
@@ -108,6 +111,11 @@ contains
       e%has_memory = .true.
       e%has_energy = .true.
       e%n_switch = 6
+      if (p%mu > 0.0_wp) then
+         ! the hip's sliding (issue 15, D-19a): its two switches, its constraint
+         e%n_switch = e%n_switch + 2
+         e%n_slide = 1
+      end if
       st = rest_state(z0, phi0)
       fr = seat_frame(st, e%l7)
       e%mem%case = seat_case(p%z0, p%z_hat)
@@ -297,10 +305,9 @@ contains
          start = this%y_zo - ln%h
       end if
       call contact_reference(new%leg_on, before%leg, start, before%delta_e, new%edge_ref, released)
-      new%slip = 0
-      if (new%case /= case_off) new%slip = slip_of(this%p%xi, before%fr%x1dot)
+      call hip_sliding_decided(this%mem, new%case /= case_off, this%p%xi, before%fr%x1dot, new)
       if (new%case == this%mem%case .and. (new%leg_on .eqv. this%mem%leg_on) .and. new%slip == this%mem%slip &
-          .and. .not. released) return
+          .and. new%edge == this%mem%edge .and. .not. released) return
       after = springs_state(this, st, new)
       ! D-25: the switch only takes energy from the springs
       new%e_switch = this%mem%e_switch + (before%e_hip + before%e_edge) - (after%e_hip + after%e_edge)
@@ -341,7 +348,35 @@ contains
          g(5) = leg_branch_margin(s%fr, this%p%z0)
       end if
       g(6) = leg_rest_margin(s%fr, this%p%z0, this%l7, this%l8)
+      if (this%p%mu > 0.0_wp) call hip_slide_switches(s%fr, this%p%xi, this%mem%case /= case_off, this%mem%edge, &
+                                                     g(this%n_switch - 1:this%n_switch))
    end subroutine springs_switches
+
+   !> The hip held on an edge of its dead band (issue 15, D-19a): its
+   !! sliding constraint, the friction's range mu times the normal load.
+   pure subroutine springs_slides(this, st, extra, aux, s)
+      class(seat_springs_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(slide_t), intent(out) :: s(:)
+      type(springs_state_t) :: ss
+      associate (u1 => size(extra) + size(aux))
+      end associate
+      if (this%mem%edge == 0 .or. this%mem%case == case_off) return
+      ss = springs_state(this, st, this%mem)
+      s(1) = hip_slide(ss%fr, st%vehicle%acc, this%p%mu, ss%f_s + ss%fp_s, this%p%xi, this%mem%edge, &
+                       1, 2)
+   end subroutine springs_slides
+
+   !> The hip leaves its edge (D-19a).
+   subroutine springs_release(this, k, at_upper)
+      class(seat_springs_t), intent(inout) :: this
+      integer, intent(in) :: k
+      logical, intent(in) :: at_upper
+      associate (u1 => k)
+      end associate
+      call hip_released(this%mem, this%p%xi, at_upper)
+   end subroutine springs_release
 
    !> The largest hip and front-edge forces over the accepted steps (none
    !! that never acted).

@@ -8,7 +8,7 @@ module occupant
    use segment_trig, only: segment_cos_sin
    use model, only: model_t, body_section_t, n_dof, n_seg, solver_dense, injury_section_t, end_tests_section_t
    use preliminary, only: body_constants_t, body_constants, initial_state
-   use effect_base, only: effect_t, body_state_t
+   use effect_base, only: effect_t, body_state_t, slide_t
    use effect_slots, only: effect_slot_t
    use point_forces, only: point_force_list_t
    use proximity_guard, only: guard_none, guard_holds
@@ -67,6 +67,8 @@ module occupant
       real(wp) :: d(n_dof, max_slides) = 0.0_wp, y_cols(n_dof, max_slides) = 0.0_wp
       real(wp) :: lo(max_slides) = 0.0_wp, hi(max_slides) = 0.0_wp
       real(wp) :: lam(max_slides) = 0.0_wp, lam_clipped(max_slides) = 0.0_wp
+      real(wp) :: offset(max_slides) = 0.0_wp, bias(max_slides) = 0.0_wp
+      integer :: aux_supplied(max_slides) = 0
       integer :: aux_at(max_slides) = 0, owner(max_slides) = 0, slot(max_slides) = 0, pos(max_slides) = 0
    end type slide_set_t
 
@@ -317,8 +319,12 @@ contains
       if (info /= 0) return
       do c = 1, set%n
          zdd = zdd + set%y_cols(:, c)*set%lam_clipped(c)
+         ! the friction's power at its sliding velocity, dissipated, and the
+         ! rest of the force's power, supplied by the vehicle (sliding_surface)
          if (set%aux_at(c) > 0) dydt(set%aux_at(c)) = dydt(set%aux_at(c)) &
-                                                     - set%lam_clipped(c)*dot_product(set%d(:, c), st%zdot)
+                                                     - set%lam_clipped(c)*(dot_product(set%d(:, c), st%zdot) + set%offset(c))
+         if (set%aux_supplied(c) > 0) dydt(set%aux_supplied(c)) = dydt(set%aux_supplied(c)) &
+                                                                 - set%lam_clipped(c)*set%offset(c)
       end do
    end subroutine slide
 
@@ -373,7 +379,16 @@ contains
          v_max = 0.0_wp
          c_max = 0
          do c = 1, set%n
-            v = max(set%lo(c) - set%lam(c), set%lam(c) - set%hi(c))/max(set%hi(c) - set%lo(c), tiny(1.0_wp))
+            ! how far outside its range, relative to the range (an empty one,
+            ! a friction without load, lies outside by any excess)
+            v = max(set%lo(c) - set%lam(c), set%lam(c) - set%hi(c))
+            if (v > 0.0_wp) then
+               if (set%hi(c) - set%lo(c) > v/huge(1.0_wp)) then
+                  v = v/(set%hi(c) - set%lo(c))
+               else
+                  v = huge(1.0_wp)
+               end if
+            end if
             if (v > v_max) then
                v_max = v
                c_max = c
@@ -431,9 +446,8 @@ contains
       type(body_state_t), intent(in) :: st
       real(wp), intent(in), contiguous :: y(:)
       type(slide_set_t), intent(out) :: set
-      logical :: act(max_slides)
-      real(wp) :: dk(n_dof, max_slides), lk(max_slides), hk(max_slides)
-      integer :: ak(max_slides), q, k, j, ns, xo, ao, base
+      type(slide_t) :: sk(max_slides)
+      integer :: q, k, j, ns, xo, ao, base
       set%n = 0
       base = 0
       do q = 1, size(occ%sliding)
@@ -442,16 +456,19 @@ contains
          ao = occ%aux_offset(k)
          associate (e => occ%effects(k)%e)
             ns = min(e%n_slide, max_slides)
-            call e%slides(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), act(1:ns), dk(:, 1:ns), &
-                          lk(1:ns), hk(1:ns), ak(1:ns))
+            call e%slides(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), sk(1:ns))
             do j = 1, ns
-               if (.not. act(j) .or. set%n == max_slides) cycle
+               if (.not. sk(j)%active .or. set%n == max_slides) cycle
                set%n = set%n + 1
-               set%d(:, set%n) = dk(:, j)
-               set%lo(set%n) = lk(j)
-               set%hi(set%n) = hk(j)
+               set%d(:, set%n) = sk(j)%d
+               set%lo(set%n) = sk(j)%lo
+               set%hi(set%n) = sk(j)%hi
+               set%offset(set%n) = sk(j)%offset
+               set%bias(set%n) = sk(j)%bias
                set%aux_at(set%n) = 0
-               if (ak(j) > 0) set%aux_at(set%n) = ao + ak(j)
+               if (sk(j)%aux_dissipated > 0) set%aux_at(set%n) = ao + sk(j)%aux_dissipated
+               set%aux_supplied(set%n) = 0
+               if (sk(j)%aux_supplied > 0) set%aux_supplied(set%n) = ao + sk(j)%aux_supplied
                set%owner(set%n) = k
                set%slot(set%n) = j
                set%pos(set%n) = base + j
@@ -471,7 +488,7 @@ contains
       integer, intent(out) :: info
       integer :: n
       n = set%n
-      call sliding_multipliers(occ%bc, st%c, st%s, occ%solver, zdd0, set%d(:, 1:n), set%lam(1:n), &
+      call sliding_multipliers(occ%bc, st%c, st%s, occ%solver, zdd0, set%d(:, 1:n), set%bias(1:n), set%lam(1:n), &
                                set%y_cols(:, 1:n), info)
       set%lam_clipped(1:n) = max(set%lo(1:n), min(set%hi(1:n), set%lam(1:n)))
    end subroutine set_multipliers

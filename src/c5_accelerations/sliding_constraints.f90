@@ -3,10 +3,11 @@
 !! joint's friction at its relative rate +-xi, D-4a), the motion slides on
 !! the surface. Each active sliding constraint k has a direction d_k in z
 !! and a multiplier lambda_k (a generalized force lambda_k d_k) that keeps
-!! d_k.z' constant: with A z''_0 = b (C.5, all other forces),
+!! its sliding velocity d_k.z' + offset_k constant (c4, sliding_surface):
+!! with A z''_0 = b (C.5, all other forces),
 !!
-!!    z'' = z''_0 + A^-1 D lambda,   D^T z'' = 0
-!!    =>  (D^T A^-1 D) lambda = -D^T z''_0,
+!!    z'' = z''_0 + A^-1 D lambda,   D^T z'' + bias = 0
+!!    =>  (D^T A^-1 D) lambda = -D^T z''_0 - bias,
 !!
 !! D^T A^-1 D symmetric positive definite (A is, and the directions are
 !! independent). The multiplier must lie in the range [lo, hi] the law's
@@ -31,13 +32,14 @@ module sliding_constraints
 contains
 
    !> The multipliers lambda (not clipped to their ranges) of the active
-   !! constraints with directions d(:, 1:k), given z''_0 = A^-1 b, and
-   !! A^-1 d in y_cols. info /= 0: A or D^T A^-1 D is not positive definite.
-   pure subroutine sliding_multipliers(bc, c, s, solver, zdd0, d, lam, y_cols, info)
+   !! constraints with directions d(:, 1:k) and biases bias(1:k), given
+   !! z''_0 = A^-1 b, and A^-1 d in y_cols. info /= 0: A or D^T A^-1 D is
+   !! not positive definite.
+   pure subroutine sliding_multipliers(bc, c, s, solver, zdd0, d, bias, lam, y_cols, info)
       type(body_constants_t), intent(in) :: bc
       real(wp), intent(in) :: c(:), s(:)
       integer, intent(in) :: solver
-      real(wp), intent(in) :: zdd0(n_dof), d(:, :)
+      real(wp), intent(in) :: zdd0(n_dof), d(:, :), bias(:)
       real(wp), intent(out) :: lam(:), y_cols(:, :)
       integer, intent(out) :: info
       real(wp) :: m(max_slides, max_slides)     ! (no allocation: D^T A^-1 D in its corner)
@@ -54,7 +56,7 @@ contains
          do i = j, k
             m(i, j) = dot_product(d(:, i), y_cols(:, j))
          end do
-         lam(j) = -dot_product(d(:, j), zdd0)
+         lam(j) = -dot_product(d(:, j), zdd0) - bias(j)
       end do
       call dpotf2('L', k, m, max_slides, info)
       if (info /= 0) return

@@ -45,12 +45,20 @@ module switch_location
    !! taken at the step's end instead (chatter, issue 15): a law that
    !! reverses at once would otherwise be located ever closer.
    real(wp), parameter :: immediate = 1.0e-6_wp
+   !> At most this many steps running each end on a located switch: past
+   !! it, a switch is taken at the end of its step (counted as not located)
+   !! until a step crosses none. A law that reverses at once but not within
+   !! `immediate` (a stiff contact's friction ramp crossed in microseconds
+   !! under a far too large force) would otherwise cost some 80 evaluations
+   !! a switch for ever; no shipped deck comes near it (docs/accuracy.md).
+   integer, parameter :: max_run = 64
 
    type :: switch_locator_t
       !> some effect of the scene has switching functions and the stepper
       !! can take a step again
       logical :: on = .false.
       integer :: n_g = 0                   !< switching functions of the scene
+      integer :: n_run = 0                 !< steps running that ended on a located switch
       real(wp), allocatable :: g_prev(:)   !< at the last accepted state, with its memory
       real(wp), allocatable :: g_lo(:), g_hi(:), g_try(:), g_lo_try(:)
       logical, allocatable :: live(:)       !< the functions that may cross in this step
@@ -147,7 +155,15 @@ contains
       ! just located there, or a constraint just left) has no side to
       ! cross from: its memory there decided its side
       this%live = abs(this%g_prev) > at_root*abs(this%g_hi)
-      if (.not. any(this%live .and. crossed(this%g_prev, this%g_hi))) return
+      if (.not. any(this%live .and. crossed(this%g_prev, this%g_hi))) then
+         this%n_run = 0
+         return
+      end if
+      if (this%n_run >= max_run) then
+         ! (chatter the law does not resolve: the switch at the step's end)
+         stepper%stats%switches_unlocated = stepper%stats%switches_unlocated + 1
+         return
+      end if
       t_end = t
       this%y_end = y
       t_lo = this%t_prev
@@ -221,6 +237,7 @@ contains
       ! restarted (no back value, no controller memory from across it)
       call keep(this, sys, stepper, t_hi, this%y_hi, t, y, err)
       located = t_hi < t_end
+      this%n_run = merge(this%n_run + 1, 0, located)
       if (located) stepper%stats%switches_located = stepper%stats%switches_located + 1
    end subroutine locator_locate
 
