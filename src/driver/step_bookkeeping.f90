@@ -235,7 +235,10 @@ contains
             stepper%f = this%f_accepted
             call record_failure(why, t, summary, err)
             reason = end_failure
-         else if (estimated .and. .not. located) then
+         else
+            call sample_after_jump(this, sys, stepper, t, y, summary)
+         end if
+         if (.not. why%failed() .and. estimated .and. .not. located) then
             ! the memory took a switch that happened inside the step at its
             ! end: the jump of z'' there, for the accuracy estimate
             do o = 1, size(sys%occupants)
@@ -249,6 +252,34 @@ contains
       end if
 
    end subroutine books_accept
+
+   !> After the memory changed at an accepted point (t, y), z'' is the new
+   !! memory's (stepper%f): the head's and chest's accelerations there are
+   !! a second sample at the same time, so that the criteria's linear
+   !! pieces keep the jump (acceleration_criteria: "a jump is two samples
+   !! at one time") and the maxima see the far side. With one sample the
+   !! jump was spread over the next step: HIC15 converged at first order
+   !! (issue 15, section 3).
+   subroutine sample_after_jump(this, sys, stepper, t, y, summary)
+      class(step_books_t), intent(inout) :: this
+      type(crash_system_t), intent(in) :: sys
+      class(stepper_t), intent(in) :: stepper
+      real(wp), intent(in) :: t, y(:)
+      type(run_summary_t), intent(inout) :: summary
+      integer :: o
+      real(wp) :: a_head, a_chest
+      do o = 1, size(sys%occupants)
+         associate (occ => sys%occupants(o), os => summary%occ(o), st => this%st)
+            call occupant_state(occ, t, y, st)
+            call head_chest_acceleration(occ%body, st%c, st%s, st%zdot, &
+                                         stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), a_head, a_chest)
+            call raise(os%head_max, a_head, t)
+            call raise(os%chest_max, a_chest, t)
+            call os%head_criteria%add(t, a_head/g_std)
+            call os%chest_criteria%add(t, a_chest/g_std)
+         end associate
+      end do
+   end subroutine sample_after_jump
 
    !> The head acceleration of occupant o at the accepted point (t, y),
    !! a_head, against its value at the state moved by its estimated error
