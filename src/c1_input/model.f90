@@ -108,6 +108,10 @@ module model
    !> Program options (C.1, *OPTIONS).
    type :: options_section_t
       integer :: nbody = 0, nbelt = 0, nend = 0, nload = 0, nout = 0, nint = 0
+      !> the switches of the effects located inside a step (issue 15); no
+      !! card sets it: off only in the tests that show what location buys
+      !! (tests/test_hard_*.pf, issue 15 section 4)
+      logical :: locate_switches = .true.
    end type options_section_t
 
    !> Time controls (C.3, C.6, C.7, *TIME).

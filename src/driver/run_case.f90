@@ -53,6 +53,9 @@ module run_case_mod
       character(len=:), allocatable :: listing_file  !< '' = the listing goes to standard output
       character(len=:), allocatable :: h5_file       !< '' = no HDF5 file
       logical :: check_only = .false.                !< read and check the decks, run nothing
+      !> the switches located inside a step (issue 15); off only in the
+      !! tests that show what location buys (model_t%options)
+      logical :: locate_switches = .true.
    end type run_request_t
 
 contains
@@ -105,6 +108,7 @@ contains
       integer :: o, k
 
       call read_case_deck(req, deck, m, err)
+      m%options%locate_switches = req%locate_switches
       if (present(warnings)) then
          if (allocated(m%warnings)) then
             warnings = m%warnings

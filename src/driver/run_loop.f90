@@ -106,7 +106,8 @@ contains
       call this%sinks%record(this%schedule%frame)
       call this%books%accept(this%sys, this%stepper, this%t, this%y, .false., this%summary, this%sinks, this%reason, &
                              this%err)
-      call this%switches%init(this%sys, tr%relocates, this%t, this%y, this%stepper%stats)
+      call this%switches%init(this%sys, tr%relocates .and. m%options%locate_switches, this%t, this%y, &
+                             this%stepper%stats)
    end subroutine run_init
 
    !> One accepted step: a step of the integrator, or the state inside it
