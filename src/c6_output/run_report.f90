@@ -27,8 +27,9 @@ module run_report
    use acceleration_criteria, only: hic_result_t
    use event_text, only: event_description
    use end_tests, only: end_reason_text, end_failure, end_energy
-   use accuracy_estimate, only: accuracy_warnings, corrector_warning, angle_threshold, head_threshold
-   use text_io, only: string_t
+   use accuracy_estimate, only: accuracy_warnings, corrector_warning, angle_threshold, head_threshold, &
+      widened_ramp_warning
+   use text_io, only: string_t, append_string
    implicit none
    private
 
@@ -531,6 +532,11 @@ contains
                          //fixed(100.0_wp*head_threshold, 4, 1)//' % of the peak head acceleration')
             w = accuracy_warnings(a, '', os%head_max%value, res%t_end, m%time%dt)
             if (size(w) == 0) call lst%put('  within the thresholds')
+            ! what the estimate cannot see (docs/accuracy.md)
+            if (allocated(res%events) .and. o == 1) then
+               who = widened_ramp_warning(res%events, res%n_events)
+               if (len(who) > 0) call append_string(w, who)
+            end if
             do k = 1, size(w)
                call lst%put('  WARNING: '//w(k)%s, indent=11)
             end do

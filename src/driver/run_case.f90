@@ -5,13 +5,13 @@
 module run_case_mod
    use error_handling, only: error_t, error_set, exit_io
    use strings, only: num, itoa
-   use accuracy_estimate, only: accuracy_warnings, corrector_warning
+   use accuracy_estimate, only: accuracy_warnings, corrector_warning, widened_ramp_warning
    use text_io, only: string_t, append_string
    use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
    use deck_cards, only: g_pulsefile
    use default_deck, only: default_deck_lines
    use model_builder, only: build_model
-   use model, only: model_t, nint_adams
+   use model, only: model_t, nint_adams, nint_dopri
    use simulation, only: run_to_end, initial_warnings
    use run_loop, only: run_t
    use sink_list, only: sink_list_t
@@ -176,6 +176,10 @@ contains
             call append_string(notes, accuracy(k)%s)
          end do
       end do
+      if (m%options%nint /= nint_dopri .and. allocated(res%events)) then
+         who = widened_ramp_warning(res%events, res%n_events)
+         if (len(who) > 0) call append_string(notes, who)
+      end if
       if (m%options%nint == nint_adams) then
          who = corrector_warning(res%stats, m%time%corrector_tol, m%time%corrector_max_iter)
          if (len(who) > 0) call append_string(notes, who)

@@ -242,7 +242,8 @@ contains
          if (line(1:1) == achar(12)) line = line(2:)
          if (index(line, 'INPUT DECK') == 1) in_echo = .true.
          if (index(line, 'PARAMETERS') == 1 .or. index(line, 'RUN') == 1) in_echo = .false.
-         if (index(line, 'WARNING: the estimated error') > 0) out%warned = .true.
+         if (index(line, 'WARNING: the estimated error') > 0 .or. index(line, 'WARNING: the fixed step widened') > 0) &
+            out%warned = .true.
          if (in_echo .or. len(out%listing_problem) > 0) cycle
          if (index(line, '**') > 0 .or. has_word(line, 'NaN') .or. has_word(line, 'nan') .or. &
              has_word(line, 'Inf') .or. has_word(line, 'Infinity')) &
