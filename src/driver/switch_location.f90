@@ -38,9 +38,14 @@ module switch_location
    !! located: far below the step's own error in time.
    real(wp), parameter :: relative_tol = 1.0e-8_wp
    !> A switching function within this fraction of its value at the step's
-   !! end sat on its root at the step's start (a switch located there
-   !! leaves it within about relative_tol of the step's change).
-   real(wp), parameter :: at_root = 1.0e-8_wp
+   !! end sat on its root at the step's start: a switch located there leaves
+   !! it within about relative_tol of the step's change, and a sliding
+   !! constraint released there leaves its rate on the edge it was held on
+   !! (seat_drop's neck: 2.7e-12 rad/s against 4.9e-5 over the step). A
+   !! crossing within `immediate` of the step's start is taken at its end
+   !! anyway; so is this one, by the effect's accept, without being counted
+   !! as chatter.
+   real(wp), parameter :: at_root = 1.0e-6_wp
    !> A switch located within this fraction of the step from its start is
    !! taken at the step's end instead (chatter, issue 15): a law that
    !! reverses at once would otherwise be located ever closer.
