@@ -16,6 +16,7 @@ module command_line
       logical :: help = .false., version = .false.
       logical :: deck_format = .false., print_default_deck = .false., check_only = .false.
       logical :: outputs = .false.
+      logical :: refine = .false.   !< --refine: the convergence check (issue 16)
    end type options_t
 
 contains
@@ -72,6 +73,8 @@ contains
             opts%check_only = .true.
          case ('--outputs')
             opts%outputs = .true.
+         case ('--refine')
+            opts%refine = .true.
          case ('-o', '--output')
             if (.not. value_of(opts%listing_file, listing_named, 'the listing file (-o, --output)')) return
             ! '-' is standard output, where the listing goes without -o
@@ -133,11 +136,12 @@ contains
       call take(opts%print_default_deck, '--default-deck')
       call take(opts%outputs, '--outputs')
       call take(opts%check_only, '--check')
+      call take(opts%refine, '--refine')
       if (len(other) > 0) then
          call error_set(err, exit_usage, mode//' and '//other//' cannot go together; give one of them')
       else if ((opts%deck_format .or. opts%print_default_deck) .and. size(opts%decks) > 0) then
          call error_set(err, exit_usage, mode//' reads no deck; "'//opts%decks(1)%s//'" would be ignored')
-      else if (h5_named .and. (opts%deck_format .or. opts%print_default_deck .or. opts%outputs)) then
+      else if (h5_named .and. (opts%deck_format .or. opts%print_default_deck .or. opts%outputs .or. opts%refine)) then
          call error_set(err, exit_usage, mode//' writes no HDF5 file; --h5 would be ignored')
       end if
    contains
@@ -172,13 +176,16 @@ contains
           'stands for the built-in default deck (e.g. hsri2d '//builtin_deck_name//' pulse.deck),'//nl// &
           'and '//standard_input_path//' for standard input (e.g. make-deck | hsri2d '//standard_input_path//').'//nl//nl// &
           'options:'//nl// &
-          '  -o, --output FILE   write the listing (or what --outputs, --deck-format or'//nl// &
-          '                      --default-deck print) to FILE; - or no -o: standard output'//nl// &
+          '  -o, --output FILE   write the listing (or what --outputs, --refine, --deck-format'//nl// &
+          '                      or --default-deck print) to FILE; - or no -o: standard output'//nl// &
           '  --h5 FILE           write the time histories to the HDF5 file FILE'//nl// &
           '  --check             read and check the decks (and that -o and --h5 would not'//nl// &
           '                      overwrite an input), run nothing, write nothing'//nl// &
           '  --outputs           print the output series the decks would write (HDF5 datasets, '//nl// &
           '                      listing tables) and exit'//nl// &
+          '  --refine            run the decks at their step or tolerance and at a refined'//nl// &
+          '                      one (DT/2, or RTOL/100) and print how far each criterion,'//nl// &
+          '                      peak and angle moved, with a verdict; writes nothing else'//nl// &
           '  --deck-format       print the card reference (docs/deck-format.md) and exit'//nl// &
           '  --default-deck      print the built-in default deck and exit'//nl// &
           '  -V, --version       print the version and exit'//nl// &

@@ -9,7 +9,7 @@ program hsri2d
    use command_line, only: options_t, parse_command_line, usage_text
    use deck_doc, only: deck_format_lines
    use default_deck, only: default_deck_lines
-   use run_case_mod, only: run_request_t, run_case, describe_outputs
+   use run_case_mod, only: run_request_t, run_case, describe_outputs, refine_case
    use output_files, only: output_file_t
    use posix_files, only: posix_ignore_output_signals
    use version_info, only: hsri2d_version
@@ -62,6 +62,13 @@ program hsri2d
    req%check_only = opts%check_only
    if (opts%outputs) then
       call describe_outputs(req, builtin, err)
+      if (err%failed()) call quit(err)
+      call say(builtin, opts%listing_file)
+      call finish(exit_ok)
+   end if
+   if (opts%refine) then
+      ! issue 16: the convergence check, a table on standard output (or -o)
+      call refine_case(req, builtin, err)
       if (err%failed()) call quit(err)
       call say(builtin, opts%listing_file)
       call finish(exit_ok)

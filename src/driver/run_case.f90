@@ -27,10 +27,11 @@ module run_case_mod
    use output_producers, only: registry_build
    use output_doc, only: output_table_lines
    use version_info, only: hsri2d_version
+   use refine_check, only: refine_table
    implicit none
    private
 
-   public :: run_request_t, run_case, read_case_deck, builtin_deck_name, describe_outputs
+   public :: run_request_t, run_case, read_case_deck, builtin_deck_name, describe_outputs, refine_case
 
    !> The outputs of a case: the listing, and the HDF5 file when asked for.
    type, extends(output_sink_t) :: case_sink_t
@@ -83,6 +84,23 @@ contains
       if (.not. err%failed()) call build_model(deck, m, err)
       if (.not. err%failed()) m%warnings = [m%warnings, initial_warnings(m)]
    end subroutine read_case_deck
+
+   !> `hsri2d --refine`: read the decks and run the case at its setting and
+   !! at a refined one (refine_check), writing nothing; lines: the table.
+   !! A run that fails numerically is err (exit 3), as a plain run's.
+   subroutine refine_case(req, lines, err)
+      type(run_request_t), intent(in) :: req
+      type(string_t), allocatable, intent(out) :: lines(:)
+      type(error_t), intent(inout) :: err
+      type(deck_t) :: deck
+      type(model_t) :: m
+      logical :: converged
+      allocate (lines(0))
+      call read_case_deck(req, deck, m, err)
+      if (err%failed()) return
+      m%options%locate_switches = req%locate_switches
+      call refine_table(m, lines, converged, err)
+   end subroutine refine_case
 
    !> Run one case: read the decks, simulate (C.2-C.7), write the listing
    !! and the HDF5 file. err says what went wrong, its code being the exit
