@@ -228,15 +228,17 @@ contains
       type(deformation_split_t) :: dsp
       type(loading_point_t) :: pt
       type(branch_point_t) :: bp
-      real(wp) :: xf(max_chain), fb(max_chain), w(max_chain), g(max_chain), r_dot, t, total
+      real(wp) :: xf(max_chain), fb(max_chain), w(max_chain), r_dot, t, total
       integer :: i, j, n, n_flat, a
 
       n = ch%n
-      sp%x(1:n) = 0.0_wp
-      sp%rate(1:n) = 0.0_wp
-      sp%aux_rate(1:n + 1 + ch%n_states) = 0.0_wp
-      g = chain_gates(ch)
-      sp%gate(1:n) = g(1:n)
+      ! (whole arrays, not 1:n: stores in line rather than a call of memset
+      ! each; the elements beyond the chain's are never read)
+      sp%x = 0.0_wp
+      sp%rate = 0.0_wp
+      sp%aux_rate = 0.0_wp
+      sp%gate = 0.0_wp
+      if (any(ch%gated(2:n))) sp%gate = chain_gates(ch)    ! (none gated: all 0)
       if (.not. (ieee_is_finite(s) .and. ieee_is_finite(s_dot))) then
          sp%status = split_not_finite
          return
@@ -257,7 +259,7 @@ contains
       end if
 
       ! the rate-independent elements share what the states leave (held there)
-      xf(1:n) = 0.0_wp
+      xf = 0.0_wp
       do i = 1, n
          if (ch%stateful(i)) xf(i) = ch%x_offset(i) + aux(n + 1 + ch%state(i))
       end do
@@ -300,7 +302,7 @@ contains
       end do
       ! the rest shared by the rate-independent elements: their compliances
       ! (loaded), their residual deformations (taken up but unloaded)
-      w(1:n) = 0.0_wp
+      w = 0.0_wp
       select case (dsp%region)
       case (region_loaded)
          n_flat = 0

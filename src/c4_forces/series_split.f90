@@ -104,11 +104,14 @@ contains
       type(branch_point_t) :: bp
       integer :: seg
 
-      c(1:n) = 0.0_wp
-      g(1:n) = 0.0_wp
-      fx(1:n) = .false.
-      xf(1:n) = 0.0_wp
-      ks(1:n) = 0.0_wp
+      ! (whole arrays of max_chain, not 1:n: stores in line, where a length
+      ! known only at run time is a call of memset each, some 15 % of a slack
+      ! chain's split; the elements beyond n are never read)
+      c = 0.0_wp
+      g = 0.0_wp
+      fx = .false.
+      xf = 0.0_wp
+      ks = 0.0_wp
       if (present(cap)) c(1:n) = cap(1:n)
       if (present(cap_slope)) ks(1:n) = cap_slope(1:n)
       if (present(gate)) g(1:n) = max(gate(1:n), 0.0_wp)
@@ -119,9 +122,9 @@ contains
       sp%path = path_none
       sp%status = split_ok
       sp%force = 0.0_wp
-      sp%x(1:n) = 0.0_wp
-      sp%slope(1:n) = 0.0_wp
-      sp%loading(1:n) = .false.
+      sp%x = 0.0_wp
+      sp%slope = 0.0_wp
+      sp%loading = .false.
       if (.not. ieee_is_finite(s)) then
          sp%status = split_not_finite
          return
