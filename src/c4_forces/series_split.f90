@@ -133,20 +133,25 @@ contains
          if (fx(i)) then
             sp%x(i) = xf(i)
             sp%slope(i) = rigid_slope
-            z(i) = xf(i)
-         else
-            z(i) = zero_extent(law(i), mem(i))
          end if
       end do
       ! the part of s the free elements share
       sfree = s - sum(xf(1:n), mask=fx(1:n))
-      zfree = sum(z(1:n), mask=.not. fx(1:n))
       nfree = count(.not. fx(1:n))
       sp%region = region_slack
       if (.not. sfree > 0.0_wp .or. nfree < 1) then
          sp%guess = 0.0_wp
          return
       end if
+      ! (the residual deformations only past the slack, which most splits are)
+      do i = 1, n
+         if (fx(i)) then
+            z(i) = xf(i)
+         else
+            z(i) = zero_extent(law(i), mem(i))
+         end if
+      end do
+      zfree = sum(z(1:n), mask=.not. fx(1:n))
       if (sfree <= zfree) then
          ! taken up within the residual deformations: no force; the free
          ! deformation is shared in proportion to them (continuous with the
