@@ -28,6 +28,12 @@ module dormand_prince
    ! error weights: 5th-order minus embedded 4th-order weights
    real(wp), parameter :: e1 = 71.0_wp/57600, e3 = -71.0_wp/16695, e4 = 71.0_wp/1920, &
                           e5 = -17253.0_wp/339200, e6 = 22.0_wp/525, e7 = -1.0_wp/40
+   ! continuous extension of order 4 (Hairer, Norsett & Wanner, II.6, the
+   ! dense output of DOPRI5): y(t0 + theta*h) = c1 + theta*(c2 + (1 -
+   ! theta)*(c3 + theta*(c4 + (1 - theta)*c5))), from the step's stages
+   real(wp), parameter :: d1 = -12715105075.0_wp/11282082432.0_wp, d3 = 87487479700.0_wp/32700410799.0_wp, &
+                          d4 = -10690763975.0_wp/1880347072.0_wp, d5 = 701980252875.0_wp/199316789632.0_wp, &
+                          d6 = -1453857185.0_wp/822651844.0_wp, d7 = 69997945.0_wp/29380423.0_wp
    ! step-size control
    real(wp), parameter :: safety = 0.9_wp, fac_min = 0.2_wp, fac_max = 5.0_wp
    real(wp), parameter :: beta = 0.04_wp, alpha = 0.2_wp - 0.75_wp*beta
@@ -43,11 +49,22 @@ module dormand_prince
       real(wp), allocatable :: k2(:), k3(:), k4(:), k5(:), k6(:), k7(:), yt(:), ynew(:), e(:)
       !> the entries of y in the error norm (the system's error_controlled)
       integer, allocatable :: controlled(:)
+      !> switches are located on the continuous extension (issue 15); off,
+      !! the locator takes the step again to them (tests compare the two)
+      logical :: dense_output = .true.
+      !> the continuous extension of the last step taken, from t_dense0 over
+      !! h_dense (its five coefficient vectors, columns of dense_c)
+      real(wp), allocatable :: dense_c(:, :)
+      real(wp) :: t_dense0 = 0.0_wp, h_dense = 0.0_wp
+      logical :: dense_ready = .false.
    contains
       procedure :: init => dopri_init
       procedure :: advance => dopri_advance
       procedure :: restart => dopri_restart
       procedure :: retake => dopri_retake
+      procedure :: resume => dopri_resume
+      procedure :: has_dense => dopri_has_dense
+      procedure :: dense => dopri_dense
    end type dopri_stepper_t
 
 contains
@@ -61,9 +78,9 @@ contains
       integer :: n, i
       n = size(y0)
       if (allocated(this%f)) deallocate (this%f, this%k2, this%k3, this%k4, this%k5, this%k6, &
-                                         this%k7, this%yt, this%ynew, this%e, this%y_failed)
+                                         this%k7, this%yt, this%ynew, this%e, this%y_failed, this%dense_c)
       allocate (this%f(n), this%k2(n), this%k3(n), this%k4(n), this%k5(n), this%k6(n), this%k7(n), &
-                this%yt(n), this%ynew(n), this%e(n), this%y_failed(n))
+                this%yt(n), this%ynew(n), this%e(n), this%y_failed(n), this%dense_c(n, 5))
       this%controlled = pack([(i, i=1, n)], sys%error_controlled(n))
       call dopri_begin(this, sys, t0, y0, err)
    end subroutine dopri_init
@@ -81,6 +98,44 @@ contains
       this%stats%restarts = this%stats%restarts + 1
       call dopri_begin(this, sys, t, y, err)
    end subroutine dopri_restart
+
+   !> See stepper_t: f at (t, y) is the caller's (no evaluation); the
+   !! first-same-as-last stage is f, the controller has no past, h (the
+   !! next step to try) is kept, as at a restart.
+   subroutine dopri_resume(this, sys, t, y, f, err)
+      class(dopri_stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:), f(:)
+      type(error_t), intent(inout) :: err
+      associate (unused => sys, u2 => t)
+      end associate
+      if (.not. this%restartable(y, err)) return
+      this%f = f
+      this%err_old = dopri_err_old_initial
+      this%dense_ready = .false.
+   end subroutine dopri_resume
+
+   !> See stepper_t: the continuous extension of the last step, unless
+   !! switched off (dense_output) or no step was taken since a restart.
+   pure logical function dopri_has_dense(this)
+      class(dopri_stepper_t), intent(in) :: this
+      dopri_has_dense = this%dense_output .and. this%dense_ready
+   end function dopri_has_dense
+
+   !> See stepper_t: y at t on the last step's continuous extension (order
+   !! 4, Hairer's DOPRI5 dense output; exact at the step's ends).
+   pure subroutine dopri_dense(this, t, y)
+      class(dopri_stepper_t), intent(in) :: this
+      real(wp), intent(in) :: t
+      real(wp), intent(out), contiguous :: y(:)
+      real(wp) :: th, th1
+      th = (t - this%t_dense0)/this%h_dense
+      th1 = 1.0_wp - th
+      associate (c => this%dense_c)
+         y = c(:, 1) + th*(c(:, 2) + th1*(c(:, 3) + th*(c(:, 4) + th1*c(:, 5))))
+      end associate
+   end subroutine dopri_dense
 
    !> See stepper_t: the step to t_to at once (its part of a step the
    !! controller accepted), not the controller's next step size.
@@ -104,6 +159,7 @@ contains
       real(wp), intent(in), contiguous :: y(:)
       type(error_t), intent(inout) :: err
       this%err_old = dopri_err_old_initial
+      this%dense_ready = .false.
       if (.not. this%evaluate(sys, t, y, this%f)) call this%give_up_rhs(sys, err)
    end subroutine dopri_begin
 
@@ -157,6 +213,17 @@ contains
       fac = min(fac_max, max(fac_min, fac))
       if (rejections > 0) fac = min(fac, 1.0_wp)
       this%err_old = max(err_norm, dopri_err_old_initial)
+      ! the step's continuous extension (before y and f become the step's end)
+      associate (c => this%dense_c)
+         c(:, 1) = y
+         c(:, 2) = this%ynew - y
+         c(:, 3) = h*this%f - c(:, 2)
+         c(:, 4) = c(:, 2) - h*this%k7 - c(:, 3)
+         c(:, 5) = h*(d1*this%f + d3*this%k3 + d4*this%k4 + d5*this%k5 + d6*this%k6 + d7*this%k7)
+      end associate
+      this%t_dense0 = t
+      this%h_dense = h
+      this%dense_ready = .true.
       if (clipped) then
          ! a step shortened to meet t_limit does not shrink the next one
          this%h = max(this%h, h*fac)

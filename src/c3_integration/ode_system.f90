@@ -86,6 +86,9 @@ module ode_system
       procedure(advance_interface), deferred :: advance
       procedure(restart_interface), deferred :: restart
       procedure :: retake => stepper_retake
+      procedure :: resume => stepper_resume
+      procedure :: has_dense => stepper_has_dense
+      procedure :: dense => stepper_dense
       procedure, non_overridable :: evaluate => stepper_evaluate
       procedure, non_overridable :: restartable => stepper_restartable
       procedure, non_overridable :: give_up_rhs => stepper_give_up_rhs
@@ -152,6 +155,48 @@ contains
       type(error_t), intent(inout) :: err
       call this%advance(sys, t, y, t_to, err)
    end subroutine stepper_retake
+
+   !> Continue from the accepted point (t, y) whose derivative f, with the
+   !! right-hand side as it is now, the caller already holds (the state a
+   !! step started from, to take it again; the end of a step just taken):
+   !! as restart, but a stepper that needs no more than f there may take
+   !! it instead of evaluating it again (Dormand-Prince). Not counted as a
+   !! restart. By default restart (f evaluated again, the count undone).
+   subroutine stepper_resume(this, sys, t, y, f, err)
+      class(stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:), f(:)
+      type(error_t), intent(inout) :: err
+      associate (unused => size(f))
+      end associate
+      call this%restart(sys, t, y, err)
+      if (.not. err%failed()) this%stats%restarts = this%stats%restarts - 1
+   end subroutine stepper_resume
+
+   !> Whether dense can give the state anywhere in the step the last
+   !! advance (or retake) took: its continuous extension (issue 15, the
+   !! switches located on it without taking the step again). None by
+   !! default: a caller interpolates itself (switch_location: Hermite's
+   !! cubic through the step's ends).
+   pure logical function stepper_has_dense(this)
+      class(stepper_t), intent(in) :: this
+      associate (unused => this%stats%steps)
+      end associate
+      stepper_has_dense = .false.
+   end function stepper_has_dense
+
+   !> y at time t inside the step the last advance took, on the stepper's
+   !! continuous extension (only when has_dense; no evaluation). The
+   !! default, never called, gives y = 0.
+   pure subroutine stepper_dense(this, t, y)
+      class(stepper_t), intent(in) :: this
+      real(wp), intent(in) :: t
+      real(wp), intent(out), contiguous :: y(:)
+      associate (unused => this%stats%steps, u2 => t)
+      end associate
+      y = 0.0_wp
+   end subroutine stepper_dense
 
    !> f(t, y) for a step of this stepper, counted in its statistics: true
    !! when the system could evaluate it. A failure is an outcome here (the

@@ -57,6 +57,9 @@ module switch_location
    !! under a far too large force) would otherwise cost some 80 evaluations
    !! a switch for ever; no shipped deck comes near it (docs/accuracy.md).
    integer, parameter :: max_run = 64
+   !> Steps taken again to a root of the continuous extension (shifted to
+   !! the last one's switching functions) before the regula falsi takes over
+   integer, parameter :: max_dense_tries = 3
 
    type :: switch_locator_t
       !> some effect of the scene has switching functions and the stepper
@@ -66,6 +69,9 @@ module switch_location
       integer :: n_run = 0                 !< steps running that ended on a located switch
       real(wp), allocatable :: g_prev(:)   !< at the last accepted state, with its memory
       real(wp), allocatable :: g_lo(:), g_hi(:), g_try(:), g_lo_try(:)
+      !> on the continuous extension: its bracket's ends and trial, and its
+      !! shift to the step's own switching functions (locate_on_dense)
+      real(wp), allocatable :: g_da(:), g_db(:), g_dt(:), g_shift(:)
       logical, allocatable :: live(:)       !< the functions that may cross in this step
       real(wp) :: t_prev = 0.0_wp          !< the last accepted state before the step
       real(wp), allocatable :: y_prev(:)
@@ -107,6 +113,7 @@ contains
       this%on = relocates .and. n > 0
       if (.not. this%on) return
       allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%g_lo_try(n), this%live(n))
+      allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n))
       allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)))
       allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)))
       allocate (this%counts(size(sys%counts, 1)))
@@ -153,7 +160,7 @@ contains
       type(error_t) :: retry
       real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2), t_lo_start, t_seed
       integer :: k, side, last_side
-      logical :: on_root
+      logical :: on_root, on_dense, current_is_hi, dense_done
       located = .false.
       call switch_values(sys, t, y, this%g_hi, stepper%stats, this%rates, this%counts)
       ! a function that sat on its root at the accepted state (a switch
@@ -177,15 +184,26 @@ contains
       this%g_lo = this%g_prev
       this%y_hi = y
       tol_t = max(relative_tol*(t_end - t_lo), 8.0_wp*spacing(t_end))
-      ! the first try: the switch on Hermite's cubic through the step's
-      ! ends (no evaluation of forces; its error is the step's own order)
       this%f_end = stepper%f
-      t_seed = hermite_crossing(this, sys, t_lo, t_end, tol_t, stepper%stats)
+      current_is_hi = .true.
+      on_dense = stepper%has_dense()
+      if (on_dense) then
+         ! Dormand-Prince: the switch on the step's continuous extension,
+         ! then ONE step from the marked state to just past it (an
+         ! integrator's state, not an interpolated one)
+         call locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, dense_done)
+      else
+         ! the first try: the switch on Hermite's cubic through the step's
+         ! ends (no evaluation of forces; its error is the step's own order)
+         t_seed = hermite_crossing(this, sys, t_lo, t_end, tol_t, stepper%stats)
+         dense_done = .false.
+      end if
       w_lo = 1.0_wp        ! Illinois' weights of the bracket's ends
       w_hi = 1.0_wp
       last_side = 0
       width = huge(1.0_wp)       ! the bracket's width two tries ago and one
       do k = 1, max_tries
+         if (dense_done) exit
          ! located: the bracket is that narrow, or the first root the
          ! secants of the functions that cross in it give lies that close
          ! to its end (a function past its root by a rounding)
@@ -198,7 +216,7 @@ contains
             if (t_hi - first_crossing(this%g_lo, this%g_hi, this%live, 1.0_wp, 1.0_wp, t_lo, t_hi) <= tol_t) exit
          end if
          t_to = first_crossing(this%g_lo, this%g_hi, this%live, w_lo, w_hi, t_lo, t_hi)
-         if (k == 1) t_to = t_seed
+         if (k == 1 .and. .not. on_dense) t_to = t_seed
          if (on_root) t_to = min(t_lo + 0.5_wp*tol_t, 0.5_wp*(t_lo + t_hi))
          ! the middle when two tries did not halve the bracket: it at least
          ! halves every third try, whatever the switching functions' shape
@@ -207,6 +225,7 @@ contains
          if (.not. (t_to > t_lo .and. t_to < t_hi)) t_to = 0.5_wp*(t_lo + t_hi)
          if (.not. (t_to > t_lo .and. t_to < t_hi)) exit     ! (below the time's resolution)
          call step_again(this, sys, stepper, t_to, t, y, retry)
+         current_is_hi = .false.
          if (retry%failed()) exit           ! (the earliest state found past the switch is kept)
          call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
          ! past a switch only where a function has the sign opposite to its
@@ -221,6 +240,7 @@ contains
             this%y_hi = y
             if (last_side == 1) w_lo = 0.5_wp*w_lo
             w_hi = 1.0_wp
+            current_is_hi = .true.
          else
             side = -1                      ! short of every switch: the bracket's start
             t_lo = t
@@ -235,12 +255,13 @@ contains
          ! rounding on a root): not located, the step kept as first taken,
          ! the memory decided at its end (counted: the listing says so)
          stepper%stats%switches_unlocated = stepper%stats%switches_unlocated + 1
+         current_is_hi = t_hi >= t_end
          t_hi = t_end
          this%y_hi = this%y_end
       end if
       ! the earliest state past the switch: accepted there, the stepper
       ! restarted (no back value, no controller memory from across it)
-      call keep(this, sys, stepper, t_hi, this%y_hi, t, y, err)
+      call keep(this, sys, stepper, t_hi, this%y_hi, current_is_hi, t, y, err)
       located = t_hi < t_end
       this%n_run = merge(this%n_run + 1, 0, located)
       if (located) stepper%stats%switches_located = stepper%stats%switches_located + 1
@@ -298,6 +319,111 @@ contains
       this%g_lo = this%g_prev
    end function hermite_crossing
 
+   !> Location on the stepper's continuous extension (Dormand-Prince,
+   !! issue 15): the first root of the live switching functions on it,
+   !! bracketed to tol_t/8 by switching functions alone (no evaluation of
+   !! forces); then ONE step from the marked state to tol_t/2 past it. When
+   !! the state that step gives is past a switch (a strict sign change),
+   !! it is the state accepted (done; (t_hi, y_hi) set, current_is_hi).
+   !! Otherwise the step's own trajectory crosses a little later than the
+   !! extension: its state is the bracket's start (t_lo, g_lo), the
+   !! extension is shifted by the difference of the switching functions
+   !! there, and the root of the shifted extension is tried in the same
+   !! way, at most max_dense_tries times in all; then the caller's
+   !! regula falsi goes on from the bracket (done false). Each try is a
+   !! step taken again (stats%retaken).
+   subroutine locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, done)
+      type(switch_locator_t), intent(inout) :: this
+      type(crash_system_t), intent(inout) :: sys
+      class(stepper_t), intent(inout) :: stepper
+      real(wp), intent(in) :: t_end, tol_t
+      real(wp), intent(inout) :: t_lo, t_hi
+      logical, intent(inout) :: current_is_hi
+      real(wp), intent(inout) :: t
+      real(wp), intent(inout), contiguous :: y(:)
+      logical, intent(out) :: done
+      type(error_t) :: retry
+      real(wp) :: t_to
+      integer :: j
+      done = .false.
+      this%g_shift = 0.0_wp
+      do j = 1, max_dense_tries
+         t_to = dense_crossing(this, sys, stepper, t_lo, t_end, tol_t, stepper%stats)
+         t_to = t_to + 0.5_wp*tol_t
+         if (.not. (t_to > t_lo .and. t_to < t_end)) return
+         call step_again(this, sys, stepper, t_to, t, y, retry)
+         current_is_hi = .false.
+         if (retry%failed()) return
+         call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
+         if (any(this%live .and. passed(this%g_prev, this%g_try))) then
+            t_hi = t
+            this%g_hi = this%g_try
+            this%y_hi = y
+            current_is_hi = .true.
+            done = .true.
+            return
+         end if
+         ! short of every switch: the bracket's start, and the extension
+         ! shifted to the step's switching functions there
+         t_lo = t
+         this%g_lo = this%g_try
+         call stepper%dense(t, this%y_work)
+         call switch_values(sys, t, this%y_work, this%g_shift, stepper%stats, this%rates, this%counts)
+         this%g_shift = this%g_try - this%g_shift
+      end do
+   end subroutine locate_on_dense
+
+   !> The earliest time in (t_a, t_b) (t_a: the marked state's time or a
+   !! try short of the switch, where g_lo; t_b: the step's end, where g_hi)
+   !! at which a live switching function, on the stepper's continuous
+   !! extension shifted by g_shift, crosses from its side at t_a: Illinois'
+   !! regula falsi to within tol_t/8, the end past the root returned
+   !! (switching functions only; counted in stats). t_b when none crosses
+   !! in the shifted extension.
+   function dense_crossing(this, sys, stepper, t_a, t_b, tol_t, stats) result(t_past)
+      type(switch_locator_t), intent(inout) :: this
+      type(crash_system_t), intent(in) :: sys
+      class(stepper_t), intent(in) :: stepper
+      real(wp), intent(in) :: t_a, t_b, tol_t
+      type(step_stats_t), intent(inout) :: stats
+      real(wp) :: t_past
+      real(wp) :: lo, hi, tau, w_lo, w_hi
+      integer :: k, last_side
+      lo = t_a
+      hi = t_b
+      this%g_da = this%g_lo
+      this%g_db = this%g_hi + this%g_shift
+      t_past = t_b
+      if (.not. any(this%live .and. crossed(this%g_da, this%g_db))) return
+      w_lo = 1.0_wp
+      w_hi = 1.0_wp
+      last_side = 0
+      do k = 1, max_tries
+         if (hi - lo <= 0.125_wp*tol_t) exit
+         tau = first_crossing(this%g_da, this%g_db, this%live, w_lo, w_hi, lo, hi)
+         if (mod(k, 4) == 0) tau = 0.5_wp*(lo + hi)
+         if (.not. (tau > lo .and. tau < hi)) tau = 0.5_wp*(lo + hi)
+         if (.not. (tau > lo .and. tau < hi)) exit
+         call stepper%dense(tau, this%y_work)
+         call switch_values(sys, tau, this%y_work, this%g_dt, stats, this%rates, this%counts)
+         this%g_dt = this%g_dt + this%g_shift
+         if (any(this%live .and. crossed(this%g_da, this%g_dt))) then
+            hi = tau
+            this%g_db = this%g_dt
+            if (last_side == 1) w_lo = 0.5_wp*w_lo
+            w_hi = 1.0_wp
+            last_side = 1
+         else
+            lo = tau
+            this%g_da = this%g_dt
+            if (last_side == -1) w_hi = 0.5_wp*w_hi
+            w_lo = 1.0_wp
+            last_side = -1
+         end if
+      end do
+      t_past = hi
+   end function dense_crossing
+
    !> The step taken again from the marked state to t_to, into (t, y); the
    !! step taken before is not kept (counted as taken again, stats%retaken).
    subroutine step_again(this, sys, stepper, t_to, t, y, err)
@@ -314,20 +440,23 @@ contains
       stepper%stats%retaken = stepper%stats%retaken + 1
       stepper%stats%h_min = this%stats_prev%h_min
       stepper%stats%h_max = this%stats_prev%h_max
-      call stepper%restart(sys, t, y, err)
-      stepper%stats%restarts = stepper%stats%restarts - 1
+      ! (y' there is known: f_prev, with the memory unchanged since)
+      call stepper%resume(sys, t, y, this%f_prev, err)
       if (.not. err%failed()) call stepper%retake(sys, t, y, t_to, err)
       if (err%failed()) stepper%stats%steps = stepper%stats%steps + 1
    end subroutine step_again
 
    !> Keep the step from the marked state to t_keep (state y_keep) as the
    !! accepted one: (t, y) set to it, its size among the accepted ones,
-   !! the stepper restarted there (not counted as a restart after a jump).
-   subroutine keep(this, sys, stepper, t_keep, y_keep, t, y, err)
-      type(switch_locator_t), intent(in) :: this
+   !! the stepper restarted there (not counted as a restart after a jump);
+   !! current: the stepper's last step ended there, so its f is y' there
+   !! (resumed with it: Dormand-Prince evaluates nothing).
+   subroutine keep(this, sys, stepper, t_keep, y_keep, current, t, y, err)
+      type(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
       real(wp), intent(in) :: t_keep, y_keep(:)
+      logical, intent(in) :: current
       real(wp), intent(out) :: t
       real(wp), intent(out), contiguous :: y(:)
       type(error_t), intent(inout) :: err
@@ -335,8 +464,14 @@ contains
       t = t_keep
       stepper%stats%h_min = min(this%stats_prev%h_min, t_keep - this%t_prev)
       stepper%stats%h_max = max(this%stats_prev%h_max, t_keep - this%t_prev)
-      call stepper%restart(sys, t, y, err)
-      stepper%stats%restarts = stepper%stats%restarts - 1
+      if (current) then
+         ! (a copy: resume sets the stepper's f from it)
+         this%y_work = stepper%f
+         call stepper%resume(sys, t, y, this%y_work, err)
+      else
+         call stepper%restart(sys, t, y, err)
+         stepper%stats%restarts = stepper%stats%restarts - 1
+      end if
    end subroutine keep
 
    !> Which switching functions changed sign from a to b: a strict change,
