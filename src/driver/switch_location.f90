@@ -68,7 +68,7 @@ module switch_location
       integer :: n_g = 0                   !< switching functions of the scene
       integer :: n_run = 0                 !< steps running that ended on a located switch
       real(wp), allocatable :: g_prev(:)   !< at the last accepted state, with its memory
-      real(wp), allocatable :: g_lo(:), g_hi(:), g_try(:), g_lo_try(:)
+      real(wp), allocatable :: g_lo(:), g_hi(:), g_try(:)
       !> on the continuous extension: its bracket's ends and trial, and its
       !! shift to the step's own switching functions (locate_on_dense)
       real(wp), allocatable :: g_da(:), g_db(:), g_dt(:), g_shift(:)
@@ -112,7 +112,7 @@ contains
       this%n_g = n
       this%on = relocates .and. n > 0
       if (.not. this%on) return
-      allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%g_lo_try(n), this%live(n))
+      allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%live(n))
       allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n))
       allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)))
       allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)))
@@ -195,7 +195,7 @@ contains
       else
          ! the first try: the switch on Hermite's cubic through the step's
          ! ends (no evaluation of forces; its error is the step's own order)
-         t_seed = hermite_crossing(this, sys, t_lo, t_end, tol_t, stepper%stats)
+         t_seed = hermite_crossing(this, sys, stepper, t_lo, t_end, tol_t, stepper%stats)
          dense_done = .false.
       end if
       w_lo = 1.0_wp        ! Illinois' weights of the bracket's ends
@@ -270,53 +270,17 @@ contains
    !> The earliest time in (t_a, t_b) - the step from the marked state to
    !! its end, where y_end, f_end - at which a switching function that
    !! changed sign over it reaches zero on the cubic Hermite interpolant
-   !! of the step: Illinois' regula falsi to within tol_t/8, the end past
-   !! the root returned (switching functions only; counted in stats).
-   function hermite_crossing(this, sys, t_a, t_b, tol_t, stats) result(t_past)
+   !! of the step (interpolant_crossing, unshifted).
+   function hermite_crossing(this, sys, stepper, t_a, t_b, tol_t, stats) result(t_past)
       type(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(in) :: sys
+      class(stepper_t), intent(in) :: stepper
       real(wp), intent(in) :: t_a, t_b, tol_t
       type(step_stats_t), intent(inout) :: stats
       real(wp) :: t_past
-      real(wp) :: lo, hi, tau, w_lo, w_hi, h, sig
-      integer :: k, last_side
-      lo = t_a
-      hi = t_b
-      h = t_b - t_a
+      this%g_shift = 0.0_wp
       this%g_lo = this%g_prev
-      this%g_try = this%g_hi
-      w_lo = 1.0_wp
-      w_hi = 1.0_wp
-      last_side = 0
-      do k = 1, max_tries
-         if (hi - lo <= 0.125_wp*tol_t) exit
-         tau = first_crossing(this%g_lo, this%g_try, this%live, w_lo, w_hi, lo, hi)
-         if (mod(k, 4) == 0) tau = 0.5_wp*(lo + hi)
-         if (.not. (tau > lo .and. tau < hi)) tau = 0.5_wp*(lo + hi)
-         if (.not. (tau > lo .and. tau < hi)) exit
-         ! y(tau) on the cubic with the ends' values and slopes
-         sig = (tau - t_a)/h
-         this%y_work = (2.0_wp*sig**3 - 3.0_wp*sig**2 + 1.0_wp)*this%y_prev &
-                       + (sig**3 - 2.0_wp*sig**2 + sig)*h*this%f_prev &
-                       + (-2.0_wp*sig**3 + 3.0_wp*sig**2)*this%y_end + (sig**3 - sig**2)*h*this%f_end
-         call switch_values(sys, tau, this%y_work, this%g_lo_try, stats, this%rates, this%counts)
-         if (any(this%live .and. crossed(this%g_lo, this%g_lo_try))) then
-            hi = tau
-            this%g_try = this%g_lo_try
-            if (last_side == 1) w_lo = 0.5_wp*w_lo
-            w_hi = 1.0_wp
-            last_side = 1
-         else
-            lo = tau
-            this%g_lo = this%g_lo_try
-            if (last_side == -1) w_hi = 0.5_wp*w_hi
-            w_lo = 1.0_wp
-            last_side = -1
-         end if
-      end do
-      t_past = hi
-      ! (the bracket's values again those at the step's ends)
-      this%g_lo = this%g_prev
+      t_past = interpolant_crossing(this, sys, stepper, t_a, t_b, tol_t, stats, .false.)
    end function hermite_crossing
 
    !> Location on the stepper's continuous extension (Dormand-Prince,
@@ -348,7 +312,7 @@ contains
       done = .false.
       this%g_shift = 0.0_wp
       do j = 1, max_dense_tries
-         t_to = dense_crossing(this, sys, stepper, t_lo, t_end, tol_t, stepper%stats)
+         t_to = interpolant_crossing(this, sys, stepper, t_lo, t_end, tol_t, stepper%stats, .true.)
          t_to = t_to + 0.5_wp*tol_t
          if (.not. (t_to > t_lo .and. t_to < t_end)) return
          call step_again(this, sys, stepper, t_to, t, y, retry)
@@ -375,22 +339,25 @@ contains
 
    !> The earliest time in (t_a, t_b) (t_a: the marked state's time or a
    !! try short of the switch, where g_lo; t_b: the step's end, where g_hi)
-   !! at which a live switching function, on the stepper's continuous
-   !! extension shifted by g_shift, crosses from its side at t_a: Illinois'
-   !! regula falsi to within tol_t/8, the end past the root returned
-   !! (switching functions only; counted in stats). t_b when none crosses
-   !! in the shifted extension.
-   function dense_crossing(this, sys, stepper, t_a, t_b, tol_t, stats) result(t_past)
+   !! at which a live switching function, on an interpolant of the step
+   !! shifted by g_shift, crosses from its side at t_a: Illinois' regula
+   !! falsi to within tol_t/8, the end past the root returned (switching
+   !! functions only; counted in stats). t_b when none crosses. The
+   !! interpolant: the stepper's continuous extension (dense), or the cubic
+   !! Hermite through the step's ends' values and slopes.
+   function interpolant_crossing(this, sys, stepper, t_a, t_b, tol_t, stats, dense) result(t_past)
       type(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(in) :: sys
       class(stepper_t), intent(in) :: stepper
       real(wp), intent(in) :: t_a, t_b, tol_t
       type(step_stats_t), intent(inout) :: stats
+      logical, intent(in) :: dense
       real(wp) :: t_past
-      real(wp) :: lo, hi, tau, w_lo, w_hi
+      real(wp) :: lo, hi, tau, w_lo, w_hi, h, sig
       integer :: k, last_side
       lo = t_a
       hi = t_b
+      h = t_b - t_a
       this%g_da = this%g_lo
       this%g_db = this%g_hi + this%g_shift
       t_past = t_b
@@ -404,7 +371,15 @@ contains
          if (mod(k, 4) == 0) tau = 0.5_wp*(lo + hi)
          if (.not. (tau > lo .and. tau < hi)) tau = 0.5_wp*(lo + hi)
          if (.not. (tau > lo .and. tau < hi)) exit
-         call stepper%dense(tau, this%y_work)
+         if (dense) then
+            call stepper%dense(tau, this%y_work)
+         else
+            ! y(tau) on the cubic with the ends' values and slopes
+            sig = (tau - t_a)/h
+            this%y_work = (2.0_wp*sig**3 - 3.0_wp*sig**2 + 1.0_wp)*this%y_prev &
+                          + (sig**3 - 2.0_wp*sig**2 + sig)*h*this%f_prev &
+                          + (-2.0_wp*sig**3 + 3.0_wp*sig**2)*this%y_end + (sig**3 - sig**2)*h*this%f_end
+         end if
          call switch_values(sys, tau, this%y_work, this%g_dt, stats, this%rates, this%counts)
          this%g_dt = this%g_dt + this%g_shift
          if (any(this%live .and. crossed(this%g_da, this%g_dt))) then
@@ -422,7 +397,7 @@ contains
          end if
       end do
       t_past = hi
-   end function dense_crossing
+   end function interpolant_crossing
 
    !> The step taken again from the marked state to t_to, into (t, y); the
    !! step taken before is not kept (counted as taken again, stats%retaken).
