@@ -14,7 +14,7 @@ module output_calc
    implicit none
    private
 
-   public :: body_outputs_t, body_outputs_compute, head_chest_acceleration, body_series, body_series_values
+   public :: body_outputs_t, body_outputs_compute, head_chest_acceleration, head_chest_motion, body_series, body_series_values
    public :: body_kinetic_energy
 
    !> Segments whose centre-of-gravity accelerations C.6 prints.
@@ -46,22 +46,45 @@ contains
       type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: c(n_seg), s(n_seg), zdot(n_dof), zdd(n_dof)
       real(wp), intent(out) :: a_head, a_chest
-      real(wp) :: spine(2), chest_cg(2), head_cg(2)
-      spine = [zdd(hip_x), zdd(hip_y)] + link(1, body%length(1)) + link(2, body%length(2))
-      chest_cg = spine + link(chest, body%rho(chest))
-      head_cg = spine + link(chest, body%length(3)) + link(head, body%rho(head))
+      real(wp) :: head_cg(2), chest_cg(2), v_head(2), v_chest(2)
+      call head_chest_motion(body, c, s, zdot, zdd, head_cg, chest_cg, v_head, v_chest)
       a_head = hypot(head_cg(1), head_cg(2))
       a_chest = hypot(chest_cg(1), chest_cg(2))
+   end subroutine head_chest_acceleration
+
+   !> The head's and chest's centres of gravity: their acceleration vectors
+   !! (as head_chest_acceleration, whose resultants they are) and velocity
+   !! vectors, in the frame of z, for the criteria's interpolant between
+   !! accepted steps (acceleration_criteria: dv/dt = a exactly).
+   pure subroutine head_chest_motion(body, c, s, zdot, zdd, a_head, a_chest, v_head, v_chest)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: c(n_seg), s(n_seg), zdot(n_dof), zdd(n_dof)
+      real(wp), intent(out) :: a_head(2), a_chest(2), v_head(2), v_chest(2)
+      real(wp) :: spine(2)
+      spine = [zdd(hip_x), zdd(hip_y)] + link_acc(1, body%length(1)) + link_acc(2, body%length(2))
+      a_chest = spine + link_acc(chest, body%rho(chest))
+      a_head = spine + link_acc(chest, body%length(3)) + link_acc(head, body%rho(head))
+      spine = [zdot(hip_x), zdot(hip_y)] + link_vel(1, body%length(1)) + link_vel(2, body%length(2))
+      v_chest = spine + link_vel(chest, body%rho(chest))
+      v_head = spine + link_vel(chest, body%length(3)) + link_vel(head, body%rho(head))
    contains
-      !> acceleration of a point len along segment j relative to its joint
-      pure function link(j, len) result(a)
+      !> velocity of a point len along segment j relative to its joint
+      pure function link_vel(j, len) result(v)
+         integer, intent(in) :: j
+         real(wp), intent(in) :: len
+         real(wp) :: v(2)
+         v(1) = -len*zdot(j)*s(j)
+         v(2) = len*zdot(j)*c(j)
+      end function link_vel
+      !> its acceleration, the derivative of link_vel
+      pure function link_acc(j, len) result(a)
          integer, intent(in) :: j
          real(wp), intent(in) :: len
          real(wp) :: a(2)
          a(1) = -len*(zdd(j)*s(j) + zdot(j)**2*c(j))
          a(2) = len*(zdd(j)*c(j) - zdot(j)**2*s(j))
-      end function link
-   end subroutine head_chest_acceleration
+      end function link_acc
+   end subroutine head_chest_motion
 
    !> Kinetic energy of each segment (C.6, erratum E-65).
    pure function body_kinetic_energy(body, z, zdot) result(ke)

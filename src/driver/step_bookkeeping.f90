@@ -21,7 +21,7 @@ module step_bookkeeping
    use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined, force_injury_event, event_tension, &
       event_compression, event_shear
    use joint_coupling, only: relative_angle
-   use output_calc, only: head_chest_acceleration
+   use output_calc, only: head_chest_acceleration, head_chest_motion
    use output_producers, only: frame_energy, energy_balance_t
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t, raise, summary_add_event
    use accuracy_estimate, only: accuracy_t
@@ -190,12 +190,7 @@ contains
                   call sinks%event(ar%events(j))
                end do
             end do
-            call head_chest_acceleration(occ%body, st%c, st%s, st%zdot, &
-                                         stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), a_head, a_chest)
-            call raise(os%head_max, a_head, t)
-            call raise(os%chest_max, a_chest, t)
-            call os%head_criteria%add(t, a_head/g_std)
-            call os%chest_criteria%add(t, a_chest/g_std)
+            call sample_criteria(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), t, os)
             do k = 1, n_joint
                delta = st%z(k) - st%z(joint_partner(k))
                if (delta < os%joint_min(k)%value) os%joint_min(k) = extreme_t(delta, t)
@@ -267,19 +262,29 @@ contains
       real(wp), intent(in) :: t, y(:)
       type(run_summary_t), intent(inout) :: summary
       integer :: o
-      real(wp) :: a_head, a_chest
       do o = 1, size(sys%occupants)
          associate (occ => sys%occupants(o), os => summary%occ(o), st => this%st)
             call occupant_state(occ, t, y, st)
-            call head_chest_acceleration(occ%body, st%c, st%s, st%zdot, &
-                                         stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), a_head, a_chest)
-            call raise(os%head_max, a_head, t)
-            call raise(os%chest_max, a_chest, t)
-            call os%head_criteria%add(t, a_head/g_std)
-            call os%chest_criteria%add(t, a_chest/g_std)
+            call sample_criteria(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), t, os)
          end associate
       end do
    end subroutine sample_after_jump
+
+   !> The head's and chest's accelerations at the accepted point t, z''
+   !! = zdd, to the criteria, whose interpolant between accepted steps
+   !! gives the peaks (acceleration_criteria, in g).
+   pure subroutine sample_criteria(occ, st, zdd, t, os)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: zdd(n_dof), t
+      type(occupant_summary_t), intent(inout) :: os
+      real(wp) :: a_head(2), a_chest(2), v_head(2), v_chest(2)
+      call head_chest_motion(occ%body, st%c, st%s, st%zdot, zdd, a_head, a_chest, v_head, v_chest)
+      call os%head_criteria%add_motion(t, a_head/g_std, v_head/g_std)
+      call os%chest_criteria%add_motion(t, a_chest/g_std, v_chest/g_std)
+      call raise(os%head_max, g_std*os%head_criteria%peak, os%head_criteria%t_peak)
+      call raise(os%chest_max, g_std*os%chest_criteria%peak, os%chest_criteria%t_peak)
+   end subroutine sample_criteria
 
    !> The head acceleration of occupant o at the accepted point (t, y),
    !! a_head, against its value at the state moved by its estimated error
