@@ -19,6 +19,11 @@ rounds):
           the *ARCS radii, the shin a capsule; the surfaces of the deck's
           listing as thin boxes on the vehicle).
 
+and, like for like (issue 16 section 5): the belted analogue without joint
+friction and stops in both programs (hsri2d: the deck's *JOINTS with C' = 0,
+stops and dislocation limits at +-360 deg and no stop stiffness; MuJoCo: no
+frictionloss and no joint limits), beside the belted case with them in both.
+
 All with classic RK4 at a step of 1e-4 s for 0.2 s (2000 steps). The MuJoCo
 models are simpler than hsri2d's: linear webbing springs without hysteresis,
 shared deflection or load limiter, contacts by MuJoCo's soft constraints
@@ -28,8 +33,15 @@ sets the cost of an evaluation, and they move alike (the script prints the
 belts' stretch and the contacts' count to show that the belts pull and the
 body strikes). Use the result as an order of magnitude.
 
-  python3 -m venv /tmp/mj && /tmp/mj/bin/pip install mujoco
+  python3 -m venv /tmp/mj && /tmp/mj/bin/pip install mujoco h5py
   /tmp/mj/bin/python tools/bench/engine_comparison.py [--repeat N] [--rounds R]
+  /tmp/mj/bin/python tools/bench/engine_comparison.py --accuracy
+
+--accuracy: time to accuracy on the belted analogue, each program on its own
+model against its own refined run (RK4 at 2e-6 s, about 1/16 of the finest step): the
+largest joint-angle error (alpha_i - alpha_m, all seven joints, every 5 ms)
+and the CPU time of the run, for RK4 over dt (both programs) and, for hsri2d,
+Dormand-Prince over RTOL; the cheapest setting within 0.1 deg of each.
 
 hsri2d is timed by build/release/hsri2d_bench --run-only (tools/bench/bench
 builds it); docs/performance.md keeps the figures.
@@ -128,10 +140,10 @@ def initial_velocity(m, posture, v0=0.0):
     return v
 
 
-def mjcf(posture, friction=False, body_extra=None, world="", tail="", contacts=False):
+def mjcf(posture, friction=False, body_extra=None, world="", tail="", contacts=False, dt=DT):
     flags = "" if contacts else '<flag contact="disable"/>'
     return (f'<mujoco><compiler angle="degree"/>'
-            f'<option timestep="{DT}" integrator="RK4" gravity="0 0 {-G}">{flags}</option>'
+            f'<option timestep="{dt}" integrator="RK4" gravity="0 0 {-G}">{flags}</option>'
             f'<worldbody>{body_xml(1, posture, friction, body_extra or {})}{world}</worldbody>{tail}</mujoco>')
 
 
@@ -146,9 +158,9 @@ def fmt(v):
     return " ".join(f"{c:.6f}" for c in v)
 
 
-def pulse(n, v0=528.0, duration=0.1074, peak_g=20.0):
+def pulse(n, v0=528.0, duration=0.1074, peak_g=20.0, dt=DT):
     """The decks' 30 mph frontal pulse: a half-sine of 20 g over 107.4 ms."""
-    t = np.arange(n) * DT
+    t = np.arange(n) * dt
     return np.where(t < duration, -peak_g * G * np.sin(math.pi * t / duration), 0.0)
 
 
@@ -161,7 +173,7 @@ def vehicle_xml(sites="", geoms=""):
 
 
 def belted_model(posture, anchors, points, stiffness, slack, body_geoms=None, vehicle_geoms="",
-                 pairs=""):
+                 pairs="", friction=True, dt=DT):
     """The body in a vehicle driven by the pulse (a motor on its slide), three belt
     tendons from vehicle sites to body sites, slack as a dead band of the spring."""
     def build(lengths, where):
@@ -175,8 +187,8 @@ def belted_model(posture, anchors, points, stiffness, slack, body_geoms=None, ve
         tail = f'<tendon>{ten}</tendon><actuator><motor joint="vx" gear="1"/></actuator>'
         if pairs:
             tail += f"<contact>{pairs}</contact>"
-        return mujoco.MjModel.from_xml_string(mjcf(posture, True, extra, vehicle_xml(sites, vehicle_geoms),
-                                                   tail, contacts=bool(pairs)))
+        return mujoco.MjModel.from_xml_string(mjcf(posture, friction, extra, vehicle_xml(sites, vehicle_geoms),
+                                                   tail, contacts=bool(pairs), dt=dt))
     m = build([1e3] * 3, {n: (0, 0, 0) for n in points})
     d = mujoco.MjData(m)
     mujoco.mj_forward(m, d)
@@ -193,7 +205,7 @@ def belted_model(posture, anchors, points, stiffness, slack, body_geoms=None, ve
 BELT_PATHS = [("lap_l", "pelvis_front", "lap_r"), ("buckle", "low_chest"), ("chest", "d_ring")]
 
 
-def belted_driver():
+def belted_driver(friction=True, dt=DT):
     anchors = {"lap_l": (-6.88, -9.83), "lap_r": (-6.88, -9.83), "buckle": (-3.0, -2.0), "d_ring": (-16.0, 23.0)}
     posture = BELTED
     a = [math.radians(x) for x in posture["angles"]]
@@ -202,7 +214,8 @@ def belted_driver():
     p3 = (LENGTH[0] * math.cos(a[0]) + LENGTH[1] * math.cos(a[1]) + 9 * math.cos(a[2]),
           LENGTH[0] * math.sin(a[0]) + LENGTH[1] * math.sin(a[1]) + 9 * math.sin(a[2]))
     points = {"pelvis_front": (1, 3.4, 0.0), "low_chest": (2, *p2), "chest": (3, *p3)}
-    return belted_model(posture, anchors, points, [2500.0, 1250.0, 800.0], [0.25, 0.25, 0.5])
+    return belted_model(posture, anchors, points, [2500.0, 1250.0, 800.0], [0.25, 0.25, 0.5],
+                        friction=friction, dt=dt)
 
 
 # the default deck's interior, from its listing (INTERIOR SURFACES): k -> ends (x, y)
@@ -257,7 +270,7 @@ def interior_driver():
     return m, lengths
 
 
-def mujoco_cpu(m, v, ctrl, repeat):
+def mujoco_cpu(m, v, ctrl, repeat, nstep=N_STEP):
     d = mujoco.MjData(m)
     d.qvel[:] = v
     spec = mujoco.mjtState.mjSTATE_FULLPHYSICS
@@ -266,9 +279,132 @@ def mujoco_cpu(m, v, ctrl, repeat):
     times = []
     for _ in range(repeat):
         t0 = time.process_time()
-        rollout.rollout(m, d, s0, control=ctrl, nstep=N_STEP)
+        rollout.rollout(m, d, s0, control=ctrl, nstep=nstep)
         times.append(time.process_time() - t0)
     return statistics.median(times)
+
+
+JOINT_CHAIN = {k: (seg, parent) for seg, (parent, _, k) in TREE.items()}
+
+
+def mujoco_angles(m, v, ctrl, dt, every):
+    """alpha_k - alpha_m(k) (rad) of the seven joints at every `every` s, with the
+    initial relative angles removed (MuJoCo's hinges start at 0): each row the
+    hinge angle with the sign of the decks' pairing."""
+    d = mujoco.MjData(m)
+    d.qvel[:] = v
+    n = int(round(0.2 / dt))
+    stride = int(round(every / dt))
+    rows = []
+    for k in range(n + 1):
+        if k % stride == 0:
+            rows.append([d.qpos[m.joint(f"j{j}").qposadr[0]] for j in range(1, 8)])
+        if k == n:
+            break
+        d.ctrl[0] = ctrl[k, 0]
+        mujoco.mj_step(m, d)
+    return np.array(rows)
+
+
+def smooth_deck(text):
+    """decks/belted_driver.deck without joint friction and stops: *JOINTS with C' = 0,
+    the stops at -+360 deg without stiffness, *RESTRAINTS' dislocation limits there too."""
+    out, group = [], None
+    for line in text.splitlines():
+        if line.startswith("*"):
+            group = line.split()[0]
+        elif group == "*JOINTS" and line[:2].strip().isdigit():
+            line = line[:12] + f"{0.0:10.1f}" + line[22:32] + f"{-360.0:10.1f}{360.0:10.1f}{0.0:10.1f}{0.0:10.1f}"
+        elif group == "*RESTRAINTS" and line[:2].strip().isdigit():
+            line = line[:52].ljust(52) + f"{-360.0:10.1f}{360.0:10.1f}"
+        out.append(line)
+    return "\n".join(out) + "\n"
+
+
+def with_time(text, dt=None, rtol=None):
+    """The deck with its *TIME card's DT (RK4) or RTOL (Dormand-Prince, ATOL = RTOL/100)
+    and its *OPTIONS NINT set."""
+    out, group, card = [], None, 0
+    for line in text.splitlines():
+        if line.startswith("*"):
+            group, card = line.split()[0], 0
+        elif group in ("*TIME", "*OPTIONS") and line.strip() and not line.startswith("$"):
+            card += 1
+            if card == 1 and group == "*OPTIONS":
+                line = line.ljust(62)[:52] + f"{2 if dt else 3:10d}" + line.ljust(62)[62:]   # NINT, 53-62
+            if card == 1 and group == "*TIME":
+                # the fields TMAX ... ATOL in columns 3-12, 13-22, ...
+                f = [line.ljust(72)[2 + 10 * i:12 + 10 * i] for i in range(7)]
+                if dt:
+                    f[1] = f" {dt:9.4g}"
+                else:
+                    f[5], f[6] = f"{rtol:10.1e}", f"{rtol / 100:10.1e}"
+                line = line[:2] + "".join(f)
+        out.append(line)
+    return "\n".join(out) + "\n"
+
+
+def hsri2d_angles(program, deck, every):
+    """Run the program on deck (its HDF5 file): the joint angles every `every` s."""
+    import h5py
+    h5 = deck[:-5] + ".h5"
+    subprocess.run([program, deck, "-o", os.devnull, "--h5", h5], check=True, capture_output=True)
+    with h5py.File(h5, "r") as f:
+        t, a = f["time"][:], f["joints/angle"][:]
+    keep = [i for i, ti in enumerate(t) if abs(ti / every - round(ti / every)) < 1e-6]
+    return a[keep]
+
+
+def accuracy(args):
+    import tempfile
+    print("time to accuracy on the belted analogue: each program against its own refined run; largest "
+          "joint-angle error (deg) every 5 ms; CPU ms of the run (hsri2d: the simulation alone, "
+          f"hsri2d_bench --run-only; MuJoCo: rollout), medians of {args.repeat}")
+    with open(os.path.join(TOP, "decks/belted_driver.deck")) as f:
+        base = f.read()
+    dts = [5e-4, 2.5e-4, 1.25e-4, 6.25e-5, 3.125e-5]     # (DTPRINT 5 ms a multiple of each)
+    ref_dt = 2.0e-6                    # (a divisor of 5 ms; about dts[-1] / 16)
+    every = 5e-3
+    with tempfile.TemporaryDirectory() as work:
+        for label, friction in (("with joint friction and stops", True), ("without", False)):
+            text = base if friction else smooth_deck(base)
+            program = os.path.join(os.path.dirname(args.bench), "hsri2d")
+
+            def write(name, body):
+                path = os.path.join(work, name + ".deck")
+                with open(path, "w") as f:
+                    f.write(body)
+                return path
+            ref = hsri2d_angles(program, write(f"ref{friction}", with_time(text, dt=ref_dt)), every)
+            rows = []
+            for dt in dts:
+                deck = write(f"rk4_{dt:g}_{friction}", with_time(text, dt=dt))
+                err = np.degrees(np.abs(hsri2d_angles(program, deck, every) - ref)).max()
+                rows.append(("hsri2d RK4", f"dt {dt:g}", err, hsri2d_cpu(args.bench, [deck], args.repeat)[os.path.basename(deck)]))
+            for rtol in [1e-4, 1e-5, 1e-6, 1e-7, 1e-8]:
+                deck = write(f"dp_{rtol:g}_{friction}", with_time(text, rtol=rtol))
+                err = np.degrees(np.abs(hsri2d_angles(program, deck, every) - ref)).max()
+                rows.append(("hsri2d DP", f"RTOL {rtol:g}", err, hsri2d_cpu(args.bench, [deck], args.repeat)[os.path.basename(deck)]))
+            m_ref, _ = belted_driver(friction, ref_dt)
+            n_ref = int(round(0.2 / ref_dt))
+            ctrl = (VEHICLE_MASS * pulse(n_ref, dt=ref_dt)).reshape(n_ref, 1)
+            mref = mujoco_angles(m_ref, initial_velocity(m_ref, BELTED, 528.0), ctrl, ref_dt, every)
+            for dt in dts:
+                m, _ = belted_driver(friction, dt)
+                n = int(round(0.2 / dt))
+                ctrl = (VEHICLE_MASS * pulse(n, dt=dt)).reshape(n, 1)
+                v = initial_velocity(m, BELTED, 528.0)
+                err = np.degrees(np.abs(mujoco_angles(m, v, ctrl, dt, every) - mref)).max()
+                rows.append(("MuJoCo RK4", f"dt {dt:g}", err, 1e3 * mujoco_cpu(m, v, ctrl, args.repeat, n)))
+            print(f"\nbelted analogue, {label}")
+            print(f"  {'program':12s} {'setting':>12s} {'error (deg)':>12s} {'CPU (ms)':>9s}")
+            for who, setting, err, ms in rows:
+                print(f"  {who:12s} {setting:>12s} {err:12.3e} {ms:9.2f}")
+            for who in ("hsri2d RK4", "hsri2d DP", "MuJoCo RK4"):
+                ok = [r for r in rows if r[0] == who and r[2] <= 0.1]
+                best = min(ok, key=lambda r: r[3]) if ok else None
+                print(f"  cheapest within 0.1 deg, {who}: " +
+                      (f"{best[1]}, {best[3]:.2f} ms" if best else "none of these settings"))
 
 
 def what_happens(m, v, ctrl, lengths):
@@ -303,15 +439,26 @@ def main():
     ap.add_argument("--repeat", type=int, default=11)
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--bench", default=os.path.join(TOP, "build/release/hsri2d_bench"))
+    ap.add_argument("--accuracy", action="store_true", help="time to accuracy on the belted analogue")
     args = ap.parse_args()
+    if args.accuracy:
+        accuracy(args)
+        return
     ctrl = (VEHICLE_MASS * pulse(N_STEP)).reshape(N_STEP, 1)
     body = mujoco.MjModel.from_xml_string(mjcf(BODY_ALONE))
     belted, belted_len = belted_driver()
+    smooth, smooth_len = belted_driver(friction=False)
     interior, interior_len = interior_driver()
+    import tempfile
+    work = tempfile.mkdtemp()
+    smooth_path = os.path.join(work, "belted_driver_smooth.deck")
+    with open(os.path.join(TOP, "decks/belted_driver.deck")) as f, open(smooth_path, "w") as g:
+        g.write(smooth_deck(f.read()))
     cases = [("tools/bench/body_alone.deck", body, initial_velocity(body, BODY_ALONE), None, []),
              ("decks/belted_driver.deck", belted, initial_velocity(belted, BELTED, 528.0), ctrl, belted_len),
+             (smooth_path, smooth, initial_velocity(smooth, BELTED, 528.0), ctrl, smooth_len),
              ("decks/default.deck", interior, initial_velocity(interior, INTERIOR, 528.0), ctrl, interior_len)]
-    decks = [os.path.join(TOP, c[0]) for c in cases]
+    decks = [os.path.join(TOP, c[0]) for c in cases]     # (an absolute path stays itself)
     ours = {c[0]: [] for c in cases}
     theirs = {c[0]: [] for c in cases}
     for _ in range(args.rounds):
@@ -326,7 +473,8 @@ def main():
     for name, m, v, u, lengths in cases:
         a, b = statistics.median(ours[name]), statistics.median(theirs[name])
         stretch, ncon = what_happens(m, v, u, lengths)
-        print(f"{name:32s} {a:8.2f} {b:8.2f} {b / a:6.2f}  {m.nv} dof, {m.ntendon} belts, {m.npair} pairs; "
+        shown = "belted, no joint friction/stops" if name == smooth_path else name
+        print(f"{shown:32s} {a:8.2f} {b:8.2f} {b / a:6.2f}  {m.nv} dof, {m.ntendon} belts, {m.npair} pairs; "
               f"{' '.join(f'{s:.2f}' for s in stretch) or '-'}; up to {ncon}")
 
 
