@@ -481,7 +481,7 @@ contains
    !! whole rate) cannot decide its turning point or new cycle from its own
    !! rate, 0: once another element's memory changed there, the split with
    !! the new memories gives it the rate it has from here on, and it decides
-   !! from that, at the same state (issue 15, docs/contacts.md 3.6: the
+   !! from that, at the same state (issue 15, docs/contacts.md D-C31: the
    !! steering column that stops yielding holds, and the face in front of
    !! it unloads from there; its switch, the rate the elements share, is
    !! located with the column's - decided a step later, the face's turning
