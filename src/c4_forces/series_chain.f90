@@ -476,6 +476,16 @@ contains
    !! is slack moves with the motion, chain_split: nothing jumps here.)
    !! changed: the right-hand side is a different function from here on (the
    !! stepper restarts).
+   !! An element that does not move at the accepted state (held at its cap,
+   !! by its gate or at f_max, or beside a flat element, which takes the
+   !! whole rate) cannot decide its turning point or new cycle from its own
+   !! rate, 0: once another element's memory changed there, the split with
+   !! the new memories gives it the rate it has from here on, and it decides
+   !! from that, at the same state (issue 15, docs/contacts.md D-C31: the
+   !! steering column that stops yielding holds, and the face in front of
+   !! it unloads from there; its switch, the rate the elements share, is
+   !! located with the column's - decided a step later, the face's turning
+   !! point was not on an accepted state).
    pure subroutine chain_accept(ch, s, s_dot, aux, changed, guess, split)
       type(series_chain_t), intent(inout) :: ch
       real(wp), intent(in) :: s, s_dot
@@ -484,10 +494,10 @@ contains
       real(wp), intent(in), optional :: guess
       !> the chain's split at this state, when the caller has it (chain_split's)
       type(chain_split_t), intent(in), optional :: split
-      type(chain_split_t) :: sp
+      type(chain_split_t) :: sp, sp_new
       real(wp) :: gate_work(max_chain), g_new(max_chain), e0
-      logical :: c
-      integer :: i, n
+      logical :: c, still(max_chain), pass_changed
+      integer :: i, n, pass
       changed = .false.
       n = ch%n
       if (present(split)) then
@@ -501,13 +511,33 @@ contains
       do i = 1, n
          gate_work(i) = 0.0_wp
          if (sp%gate(i) > 0.0_wp) gate_work(i) = sp%gate(i)*max(0.0_wp, sp%x(i) - hold(i))
+         still(i) = .true.
          if (ch%cap_slope(i) > 0.0_wp .and. sp%x(i) > ch%cap(i)) then
             ! crushed solid: its own deformation the cap's, not moving
             call recurrent_accept(ch%law(i), ch%mem(i), ch%cap(i), 0.0_wp, c)
          else
             call recurrent_accept(ch%law(i), ch%mem(i), sp%x(i), sp%rate(i), c)
+            still(i) = .not. abs(sp%rate(i)) > 0.0_wp
          end if
+         still(i) = still(i) .and. .not. c
          changed = changed .or. c
+      end do
+      ! the elements that did not move, with the rates the new memories give
+      pass_changed = changed
+      do pass = 1, n
+         if (.not. (pass_changed .and. any(still(1:n)))) exit
+         pass_changed = .false.
+         call chain_split(ch, s, s_dot, aux, sp_new, guess)
+         if (sp_new%status /= split_ok) exit
+         do i = 1, n
+            if (.not. still(i)) cycle
+            if (ch%cap_slope(i) > 0.0_wp .and. sp_new%x(i) > ch%cap(i)) cycle
+            if (.not. abs(sp_new%rate(i)) > 0.0_wp) cycle
+            call recurrent_accept(ch%law(i), ch%mem(i), sp_new%x(i), sp_new%rate(i), c)
+            still(i) = .false.
+            pass_changed = pass_changed .or. c
+         end do
+         changed = changed .or. pass_changed
       end do
       ! a gate's work past a hold that moved (the column stopped) is dissipated
       g_new = chain_gates(ch)

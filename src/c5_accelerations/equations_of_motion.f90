@@ -21,7 +21,8 @@ module equations_of_motion
    use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init
    use body_state, only: body_state_t
    use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_initial_y, &
-      occupant_add_effect, occupant_vehicle, occupant_settle
+      occupant_add_effect, occupant_vehicle, occupant_settle, slides_overflow
+   use sliding_constraints, only: max_slides
    use effect_base, only: effect_t
    implicit none
    private
@@ -34,6 +35,7 @@ module equations_of_motion
    integer, parameter :: rhs_not_positive_definite = 1
    integer, parameter :: rhs_not_finite = 2
    integer, parameter :: rhs_diverged = 3
+   integer, parameter :: rhs_too_many_slides = 4
 
    !> Bounds of any physical state (rad, in, rad/s, in/s), far beyond any
    !! motion a valid deck can produce (TMAX <= 1000 s, speeds and rates
@@ -184,6 +186,7 @@ contains
             call occupant_rhs(occ, st, y, dydt, this%counts(:, o), info)
             if (info /= 0) then
                status = rhs_not_positive_definite
+               if (info == slides_overflow) status = rhs_too_many_slides
                return
             end if
          end associate
@@ -208,7 +211,9 @@ contains
       detail = ''
       do o = 1, size(this%occupants)
          associate (occ => this%occupants(o))
-            if (code == rhs_diverged .and. .not. in_range(occ, y)) then
+            if (code == rhs_too_many_slides .and. occ%n_slide > max_slides) then
+               detail = trim(occ%label)//'''s effects may hold '//itoa(occ%n_slide)
+            else if (code == rhs_diverged .and. .not. in_range(occ, y)) then
                detail = out_of_range(occ%label, y(occ%z_offset + 1:occ%z_offset + n_dof), &
                                      y(occ%zdot_offset + 1:occ%zdot_offset + n_dof))
             else if (code == rhs_not_finite) then
@@ -298,6 +303,9 @@ contains
       select case (status)
       case (rhs_not_positive_definite)
          text = 'the body matrix A (figure 27) is not positive definite (a pivot of its factorization is not positive and finite)'
+      case (rhs_too_many_slides)
+         text = 'the effects of an occupant may hold more sliding constraints than the solve has room for (at most ' &
+                //itoa(max_slides)//', max_slides of sliding_constraints)'
       case (rhs_not_finite)
          text = 'the accelerations are not finite'
       case (rhs_diverged)

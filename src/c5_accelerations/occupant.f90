@@ -26,6 +26,14 @@ module occupant
    public :: occupant_vehicle
    public :: occupant_initial_y, occupant_add_effect, occupant_point_forces
    public :: occupant_slide_switches, occupant_settle, occupant_slide_forces
+   public :: slides_overflow
+
+   !> occupant_rhs's info for an occupant whose effects may hold more
+   !! sliding constraints (n_slide, all of them active at once) than the
+   !! solve has room for (max_slides): refused at its every evaluation, so
+   !! that none is ever left out (before, gather_slides kept the first
+   !! max_slides active ones and dropped the rest without a word)
+   integer, parameter :: slides_overflow = -1000
 
    type :: occupant_t
       character(len=16) :: label = 'occupant'
@@ -295,6 +303,7 @@ contains
       real(wp) :: b(n_dof), zdd(n_dof)
       call occupant_forces(occ, st, y, b, dydt, counts)
       call body_accelerations(occ%bc, st%c, st%s, b, zdd, info, occ%solver)
+      if (info == 0 .and. occ%n_slide > max_slides) info = slides_overflow
       if (info == 0 .and. occ%n_slide > 0) call slide(occ, st, y, zdd, dydt, info)
       dydt(occ%z_offset + 1:occ%z_offset + n_dof) = st%zdot
       dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = zdd
@@ -440,7 +449,9 @@ contains
       call body_accelerations(occ%bc, st%c, st%s, b, zdd, info, occ%solver)
    end subroutine unconstrained
 
-   !> The active sliding constraints of occ's effects at st, packed.
+   !> The active sliding constraints of occ's effects at st, packed: all of
+   !! them, as occ%n_slide <= max_slides (occupant_rhs refuses an occupant
+   !! with more, slides_overflow; such an occupant gets none here).
    pure subroutine gather_slides(occ, st, y, set)
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
@@ -450,15 +461,16 @@ contains
       integer :: q, k, j, ns, xo, ao, base
       set%n = 0
       base = 0
+      if (occ%n_slide > max_slides) return
       do q = 1, size(occ%sliding)
          k = occ%sliding(q)
          xo = occ%extra_offset(k)
          ao = occ%aux_offset(k)
          associate (e => occ%effects(k)%e)
-            ns = min(e%n_slide, max_slides)
+            ns = e%n_slide
             call e%slides(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), sk(1:ns))
             do j = 1, ns
-               if (.not. sk(j)%active .or. set%n == max_slides) cycle
+               if (.not. sk(j)%active) cycle
                set%n = set%n + 1
                set%d(:, set%n) = sk(j)%d
                set%lo(set%n) = sk(j)%lo
