@@ -8,9 +8,10 @@ test_name=io_numerical_failure
 exe=$1
 start_work "$2"
 
-# Cubic stops of 1e12 with a 2 ms step: the integration diverges at 0.07 s
+# Cubic stops of 1e12 with a 2 ms RK4 step: the integration diverges at 0.07 s
 # (the energy balance is let go on, so that the divergence ends the run).
 {
+    printf '*OPTIONS\n           1         3         1         2         3         2\n'
     printf '*TIME\n         0.2     0.002     0.002   1.0E-06        10   1.0E-07   1.0E-09\n'
     printf '*NUMERICS\n%40s\n*RESTRAINTS\n' CONTINUE
     for j in 1 2 3 4 5 6 7; do

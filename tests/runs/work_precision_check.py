@@ -61,7 +61,8 @@ if re.search(r"\bnan\b|\binf\b", p.stdout, re.IGNORECASE):
 
 # standard output: the deck's settings and the time to accuracy against the body alone
 settings = ["Adams-Moulton DT 0.00025 s, CTOL 1e-06", "RK4 DT 0.00025 s", "Adams-Moulton DT 0.0001 s, CTOL 1e-06",
-            "RK4 DT 0.0001 s (deck)", "Dormand-Prince RTOL 1e-04", "Dormand-Prince RTOL 1e-06"]
+            "RK4 DT 0.0001 s", "Dormand-Prince RTOL 1e-04", "Dormand-Prince RTOL 1e-06",
+            "Dormand-Prince RTOL 1e-05 (deck)"]
 for s in settings:
     if not re.search(rf"^  {re.escape(s)} +[0-9.]+ +\d+ +\d+ +\d+ +\d+ +\d+ +[0-9.]+ +[0-9.]+  (yes|no)$",
                      p.stdout, re.MULTILINE):
