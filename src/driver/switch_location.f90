@@ -74,6 +74,10 @@ module switch_location
       real(wp), allocatable :: g_da(:), g_db(:), g_dt(:), g_shift(:)
       logical, allocatable :: live(:)       !< the functions that may cross in this step
       real(wp) :: t_prev = 0.0_wp          !< the last accepted state before the step
+      !> a step taken again with the stepper's continuous extension stops
+      !! this much short of its end and crosses the rest on the slope there
+      !! (locator_locate; 0: not)
+      real(wp) :: hop = 0.0_wp
       real(wp), allocatable :: y_prev(:)
       type(step_stats_t) :: stats_prev     !< the stepper's statistics then
       real(wp), allocatable :: y_hi(:)     !< the earliest state found past a switch
@@ -149,7 +153,16 @@ contains
    !! changes. A step taken again that fails gives the step as first taken
    !! back (the switch then at its end, as without location); only if that
    !! fails too does the run fail (err: the stepper's why).
-   subroutine locator_locate(this, sys, stepper, t, y, located, err)
+   !!
+   !! trial: the stepper offered a trial step it rejected (trial_offered,
+   !! ending at t_trial; (t, y) is still the marked state): when a switch
+   !! lies in it, the trial is cut there as an accepted step would be (its
+   !! error was the switch's; the step to the switch is smooth); when none
+   !! does, or the switch cannot be located (the step to it is rejected
+   !! too, or a switch at once), nothing changes (located false, the
+   !! stepper back at the marked state) and the stepper goes on with its
+   !! shorter step.
+   subroutine locator_locate(this, sys, stepper, t, y, located, err, trial)
       class(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
@@ -157,19 +170,36 @@ contains
       real(wp), intent(inout), contiguous :: y(:)
       logical, intent(out) :: located
       type(error_t), intent(inout) :: err
+      logical, intent(in), optional :: trial
       type(error_t) :: retry
       real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2), t_lo_start, t_seed
       integer :: k, side, last_side
-      logical :: on_root, on_dense, current_is_hi, dense_done
+      logical :: on_root, on_dense, current_is_hi, dense_done, is_trial, short, current
       located = .false.
-      call switch_values(sys, t, y, this%g_hi, stepper%stats, this%rates, this%counts)
+      is_trial = .false.
+      if (present(trial)) is_trial = trial
+      if (is_trial) then
+         call stepper%dense(stepper%t_trial, this%y_work)
+         call switch_values(sys, stepper%t_trial, this%y_work, this%g_hi, stepper%stats, this%rates, this%counts)
+      else
+         call switch_values(sys, t, y, this%g_hi, stepper%stats, this%rates, this%counts)
+      end if
       ! a function that sat on its root at the accepted state (a switch
       ! just located there, or a constraint just left) has no side to
       ! cross from: its memory there decided its side
       this%live = abs(this%g_prev) > at_root*abs(this%g_hi)
       if (.not. any(this%live .and. crossed(this%g_prev, this%g_hi))) then
-         this%n_run = 0
+         if (.not. is_trial) this%n_run = 0
          return
+      end if
+      if (is_trial) then
+         if (this%n_run >= max_run) return
+         ! the trial, cut at the switch, counted as a step taken again
+         ! (as an accepted step that crosses one), not as rejected
+         t = stepper%t_trial
+         y = this%y_work
+         stepper%stats%rejected = stepper%stats%rejected - 1
+         stepper%stats%steps = stepper%stats%steps + 1
       end if
       if (this%n_run >= max_run) then
          ! (chatter the law does not resolve: the switch at the step's end)
@@ -187,11 +217,21 @@ contains
       this%f_end = stepper%f
       current_is_hi = .true.
       on_dense = stepper%has_dense()
+      ! a step taken again ends a little short of the time asked and crosses
+      ! the rest on its slope: its stages then do not reach past a jump of
+      ! the right-hand side (whose stage at the step's end would count it
+      ! in the step's value as a first-order error, and in its estimate)
+      this%hop = merge(tol_t, 0.0_wp, on_dense)
+      short = .false.
       if (on_dense) then
          ! Dormand-Prince: the switch on the step's continuous extension,
          ! then ONE step from the marked state to just past it (an
          ! integrator's state, not an interpolated one)
-         call locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, dense_done)
+         call locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, dense_done, short)
+         if (is_trial .and. short) then
+            call give_up_trial()
+            return
+         end if
       else
          ! the first try: the switch on Hermite's cubic through the step's
          ! ends (no evaluation of forces; its error is the step's own order)
@@ -224,9 +264,10 @@ contains
          width = [width(2), t_hi - t_lo]
          if (.not. (t_to > t_lo .and. t_to < t_hi)) t_to = 0.5_wp*(t_lo + t_hi)
          if (.not. (t_to > t_lo .and. t_to < t_hi)) exit     ! (below the time's resolution)
-         call step_again(this, sys, stepper, t_to, t, y, retry)
+         call step_again(this, sys, stepper, t_to, t, y, retry, short, current)
          current_is_hi = .false.
          if (retry%failed()) exit           ! (the earliest state found past the switch is kept)
+         if (is_trial .and. short) exit
          call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
          ! past a switch only where a function has the sign opposite to its
          ! sign at the accepted state: a try on a root (g exactly 0, which
@@ -240,7 +281,7 @@ contains
             this%y_hi = y
             if (last_side == 1) w_lo = 0.5_wp*w_lo
             w_hi = 1.0_wp
-            current_is_hi = .true.
+            current_is_hi = current
          else
             side = -1                      ! short of every switch: the bracket's start
             t_lo = t
@@ -250,6 +291,12 @@ contains
          end if
          last_side = side
       end do
+      if (is_trial .and. (retry%failed() .or. short .or. t_hi >= t_end &
+                          .or. t_hi - t_lo_start < immediate*(t_end - t_lo_start))) then
+         ! (the trial's end is no state to accept)
+         call give_up_trial()
+         return
+      end if
       if (t_hi - t_lo_start < immediate*(t_end - t_lo_start)) then
          ! a switch at once after the last (chatter the law leaves, or
          ! rounding on a root): not located, the step kept as first taken,
@@ -265,6 +312,19 @@ contains
       located = t_hi < t_end
       this%n_run = merge(this%n_run + 1, 0, located)
       if (located) stepper%stats%switches_located = stepper%stats%switches_located + 1
+   contains
+      !> The trial stays rejected: the stepper back at the marked state
+      !! (with y' there), to go on with its shorter step.
+      subroutine give_up_trial()
+         stepper%stats%rejected = stepper%stats%rejected + 1
+         stepper%stats%steps = stepper%stats%steps - 1
+         stepper%stats%h_min = this%stats_prev%h_min
+         stepper%stats%h_max = this%stats_prev%h_max
+         t = this%t_prev
+         y = this%y_prev
+         this%y_work = this%f_prev
+         call stepper%resume(sys, t, y, this%y_work, err)
+      end subroutine give_up_trial
    end subroutine locator_locate
 
    !> The earliest time in (t_a, t_b) - the step from the marked state to
@@ -296,7 +356,7 @@ contains
    !! way, at most max_dense_tries times in all; then the caller's
    !! regula falsi goes on from the bracket (done false). Each try is a
    !! step taken again (stats%retaken).
-   subroutine locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, done)
+   subroutine locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, done, short)
       type(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
@@ -306,24 +366,27 @@ contains
       real(wp), intent(inout) :: t
       real(wp), intent(inout), contiguous :: y(:)
       logical, intent(out) :: done
+      logical, intent(out) :: short     !< a step taken again ended short of the time asked
       type(error_t) :: retry
       real(wp) :: t_to
       integer :: j
+      logical :: current
       done = .false.
+      short = .false.
       this%g_shift = 0.0_wp
       do j = 1, max_dense_tries
          t_to = interpolant_crossing(this, sys, stepper, t_lo, t_end, tol_t, stepper%stats, .true.)
          t_to = t_to + 0.5_wp*tol_t
          if (.not. (t_to > t_lo .and. t_to < t_end)) return
-         call step_again(this, sys, stepper, t_to, t, y, retry)
+         call step_again(this, sys, stepper, t_to, t, y, retry, short, current)
          current_is_hi = .false.
-         if (retry%failed()) return
+         if (retry%failed() .or. short) return
          call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
          if (any(this%live .and. passed(this%g_prev, this%g_try))) then
             t_hi = t
             this%g_hi = this%g_try
             this%y_hi = y
-            current_is_hi = .true.
+            current_is_hi = current
             done = .true.
             return
          end if
@@ -401,7 +464,11 @@ contains
 
    !> The step taken again from the marked state to t_to, into (t, y); the
    !! step taken before is not kept (counted as taken again, stats%retaken).
-   subroutine step_again(this, sys, stepper, t_to, t, y, err)
+   !! With a hop, the step ends hop short of t_to and y goes on to t_to on
+   !! its slope there (an error of hop times the jump of y' at most, far
+   !! below the tolerance); current: the stepper's f is y' at (t, y) (no
+   !! hop). short: the stepper rejected the step and ended before t_to.
+   subroutine step_again(this, sys, stepper, t_to, t, y, err, short, current)
       type(switch_locator_t), intent(in) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
@@ -409,6 +476,12 @@ contains
       real(wp), intent(out) :: t
       real(wp), intent(out), contiguous :: y(:)
       type(error_t), intent(inout) :: err
+      logical, intent(out), optional :: short, current
+      real(wp) :: hop, t_stop
+      hop = min(this%hop, 0.5_wp*(t_to - this%t_prev))
+      t_stop = t_to - hop
+      if (present(short)) short = .false.
+      if (present(current)) current = .true.
       y = this%y_prev
       t = this%t_prev
       stepper%stats%steps = stepper%stats%steps - 1
@@ -417,8 +490,16 @@ contains
       stepper%stats%h_max = this%stats_prev%h_max
       ! (y' there is known: f_prev, with the memory unchanged since)
       call stepper%resume(sys, t, y, this%f_prev, err)
-      if (.not. err%failed()) call stepper%retake(sys, t, y, t_to, err)
-      if (err%failed()) stepper%stats%steps = stepper%stats%steps + 1
+      if (.not. err%failed()) call stepper%retake(sys, t, y, t_stop, err)
+      if (err%failed()) then
+         stepper%stats%steps = stepper%stats%steps + 1
+      else if (t < t_stop) then
+         if (present(short)) short = .true.
+      else if (hop > 0.0_wp) then
+         y = y + (t_to - t)*stepper%f
+         t = t_to
+         if (present(current)) current = .false.
+      end if
    end subroutine step_again
 
    !> Keep the step from the marked state to t_keep (state y_keep) as the
