@@ -60,7 +60,6 @@ module dormand_prince
       !> trials rejected in a row so far (across advances that offered a
       !! rejected trial to the caller: offers_trials)
       integer :: rejections_in_row = 0
-      logical :: retaking = .false.    !< inside retake: no trial is offered
    contains
       procedure :: init => dopri_init
       procedure :: advance => dopri_advance
@@ -153,9 +152,7 @@ contains
       real(wp), intent(in) :: t_to
       type(error_t), intent(inout) :: err
       this%h = max(this%h, t_to - t)
-      this%retaking = .true.
       call this%advance(sys, t, y, t_to, err)
-      this%retaking = .false.
    end subroutine dopri_retake
 
    !> Start (or start again) from (t, y): the first stage f(t, y) and a
@@ -220,7 +217,7 @@ contains
             this%rejections_in_row = 0
             return
          end if
-         if (this%offers_trials .and. this%dense_output .and. .not. this%retaking .and. stages_ok &
+         if (this%offers_trials .and. this%dense_output .and. stages_ok &
              .and. err_norm < huge(1.0_wp)) then
             ! the caller sees whether the trial crossed a switch (issue 15)
             call set_dense(h)

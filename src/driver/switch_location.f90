@@ -72,6 +72,7 @@ module switch_location
       !> on the continuous extension: its bracket's ends and trial, and its
       !! shift to the step's own switching functions (locate_on_dense)
       real(wp), allocatable :: g_da(:), g_db(:), g_dt(:), g_shift(:)
+      real(wp), allocatable :: g_end(:)     !< at the step's end (locate_on_dense)
       logical, allocatable :: live(:)       !< the functions that may cross in this step
       real(wp) :: t_prev = 0.0_wp          !< the last accepted state before the step
       !> a step taken again with the stepper's continuous extension stops
@@ -117,7 +118,7 @@ contains
       this%on = relocates .and. n > 0
       if (.not. this%on) return
       allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%live(n))
-      allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n))
+      allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n), this%g_end(n))
       allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)))
       allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)))
       allocate (this%counts(size(sys%counts, 1)))
@@ -368,19 +369,37 @@ contains
       logical, intent(out) :: done
       logical, intent(out) :: short     !< a step taken again ended short of the time asked
       type(error_t) :: retry
-      real(wp) :: t_to
+      real(wp) :: t_to, t_b
       integer :: j
       logical :: current
       done = .false.
       short = .false.
       this%g_shift = 0.0_wp
+      this%g_end = this%g_hi
+      t_b = t_end
       do j = 1, max_dense_tries
-         t_to = interpolant_crossing(this, sys, stepper, t_lo, t_end, tol_t, stepper%stats, .true.)
+         t_to = interpolant_crossing(this, sys, stepper, t_lo, t_b, tol_t, stepper%stats, .true.)
          t_to = t_to + 0.5_wp*tol_t
-         if (.not. (t_to > t_lo .and. t_to < t_end)) return
-         call step_again(this, sys, stepper, t_to, t, y, retry, short, current)
+         if (.not. (t_to > t_lo .and. t_to < t_b)) exit
+         call step_again(this, sys, stepper, t_to, t, y, retry, short, current, allow_trial=j < max_dense_tries)
          current_is_hi = .false.
-         if (retry%failed() .or. short) return
+         if (retry%failed()) exit
+         if (stepper%trial_offered) then
+            ! the step to the switch was rejected: the trajectory crosses
+            ! earlier than the extension said (a jump inside the step).
+            ! When this shorter trial crosses, its own extension (nearer
+            ! the trajectory) is searched next; otherwise short
+            call stepper%dense(stepper%t_trial, this%y_work)
+            call switch_values(sys, stepper%t_trial, this%y_work, this%g_dt, stepper%stats, this%rates, this%counts)
+            short = .true.
+            if (.not. any(this%live .and. crossed(this%g_lo, this%g_dt))) exit
+            t_b = stepper%t_trial
+            this%g_hi = this%g_dt
+            this%g_shift = 0.0_wp
+            short = .false.
+            cycle
+         end if
+         if (short) exit
          call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
          if (any(this%live .and. passed(this%g_prev, this%g_try))) then
             t_hi = t
@@ -398,6 +417,8 @@ contains
          call switch_values(sys, t, this%y_work, this%g_shift, stepper%stats, this%rates, this%counts)
          this%g_shift = this%g_try - this%g_shift
       end do
+      ! (the caller's bracket ends at the step's end)
+      this%g_hi = this%g_end
    end subroutine locate_on_dense
 
    !> The earliest time in (t_a, t_b) (t_a: the marked state's time or a
@@ -468,7 +489,7 @@ contains
    !! its slope there (an error of hop times the jump of y' at most, far
    !! below the tolerance); current: the stepper's f is y' at (t, y) (no
    !! hop). short: the stepper rejected the step and ended before t_to.
-   subroutine step_again(this, sys, stepper, t_to, t, y, err, short, current)
+   subroutine step_again(this, sys, stepper, t_to, t, y, err, short, current, allow_trial)
       type(switch_locator_t), intent(in) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
@@ -477,7 +498,12 @@ contains
       real(wp), intent(out), contiguous :: y(:)
       type(error_t), intent(inout) :: err
       logical, intent(out), optional :: short, current
+      !> a trial of the step rejected is offered to the caller (the
+      !! stepper back at the marked state, stepper%trial_offered; short);
+      !! otherwise the stepper shortens the step itself
+      logical, intent(in), optional :: allow_trial
       real(wp) :: hop, t_stop
+      logical :: offers
       hop = min(this%hop, 0.5_wp*(t_to - this%t_prev))
       t_stop = t_to - hop
       if (present(short)) short = .false.
@@ -490,7 +516,11 @@ contains
       stepper%stats%h_max = this%stats_prev%h_max
       ! (y' there is known: f_prev, with the memory unchanged since)
       call stepper%resume(sys, t, y, this%f_prev, err)
+      offers = stepper%offers_trials
+      stepper%offers_trials = offers .and. present(allow_trial)
+      if (stepper%offers_trials) stepper%offers_trials = allow_trial
       if (.not. err%failed()) call stepper%retake(sys, t, y, t_stop, err)
+      stepper%offers_trials = offers
       if (err%failed()) then
          stepper%stats%steps = stepper%stats%steps + 1
       else if (t < t_stop) then
