@@ -82,6 +82,10 @@ module switch_location
       real(wp), allocatable :: y_prev(:)
       type(step_stats_t) :: stats_prev     !< the stepper's statistics then
       real(wp), allocatable :: y_hi(:)     !< the earliest state found past a switch
+      !> the latest state found short of every switch, and y' there (on the
+      !! stepper's slope: locator_locate crosses from it when a step taken
+      !! again past the switch was rejected)
+      real(wp), allocatable :: y_lo(:), f_lo(:)
       real(wp), allocatable :: y_end(:)    !< the step as first taken
       real(wp), allocatable :: f_prev(:), f_end(:)   !< y' at the step's ends (Hermite's interpolant)
       real(wp), allocatable :: y_work(:)   !< a state of the interpolant
@@ -119,7 +123,7 @@ contains
       if (.not. this%on) return
       allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%live(n))
       allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n), this%g_end(n))
-      allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)))
+      allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)), this%y_lo(size(y)), this%f_lo(size(y)))
       allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)))
       allocate (this%counts(size(sys%counts, 1)))
       call this%accepted(sys, t, y, stats)
@@ -175,7 +179,7 @@ contains
       type(error_t) :: retry
       real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2), t_lo_start, t_seed
       integer :: k, side, last_side
-      logical :: on_root, on_dense, current_is_hi, dense_done, is_trial, short, current
+      logical :: on_root, on_dense, current_is_hi, dense_done, is_trial, short, current, hi_bound
       located = .false.
       is_trial = .false.
       if (present(trial)) is_trial = trial
@@ -242,6 +246,11 @@ contains
       w_lo = 1.0_wp        ! Illinois' weights of the bracket's ends
       w_hi = 1.0_wp
       last_side = 0
+      ! t_hi a bound without a state past the switch (a step taken again to
+      ! it was rejected): the bracket is halved, the state crossed to at last
+      hi_bound = .false.
+      this%y_lo = this%y_prev
+      this%f_lo = this%f_prev
       width = huge(1.0_wp)       ! the bracket's width two tries ago and one
       do k = 1, max_tries
          if (dense_done) exit
@@ -253,7 +262,7 @@ contains
          ! over the step (a try that landed on it, g exactly 0): the root is
          ! there, and the next try goes just past it
          on_root = any(this%live .and. crossed(this%g_prev, this%g_hi) .and. .not. abs(this%g_lo) > 0.0_wp)
-         if (.not. on_root) then
+         if (.not. on_root .and. .not. hi_bound) then
             if (t_hi - first_crossing(this%g_lo, this%g_hi, this%live, 1.0_wp, 1.0_wp, t_lo, t_hi) <= tol_t) exit
          end if
          t_to = first_crossing(this%g_lo, this%g_hi, this%live, w_lo, w_hi, t_lo, t_hi)
@@ -263,12 +272,21 @@ contains
          ! halves every third try, whatever the switching functions' shape
          if (.not. on_root .and. t_hi - t_lo > 0.5_wp*width(1)) t_to = 0.5_wp*(t_lo + t_hi)
          width = [width(2), t_hi - t_lo]
+         if (hi_bound) t_to = 0.5_wp*(t_lo + t_hi)
          if (.not. (t_to > t_lo .and. t_to < t_hi)) t_to = 0.5_wp*(t_lo + t_hi)
          if (.not. (t_to > t_lo .and. t_to < t_hi)) exit     ! (below the time's resolution)
          call step_again(this, sys, stepper, t_to, t, y, retry, short, current)
          current_is_hi = .false.
          if (retry%failed()) exit           ! (the earliest state found past the switch is kept)
          if (is_trial .and. short) exit
+         if (short .and. on_dense) then
+            ! rejected: a jump of the right-hand side before t_to, the
+            ! switch's (the state the stepper shortened to is no bracket's end)
+            t_hi = t_to
+            hi_bound = .true.
+            short = .false.
+            cycle
+         end if
          call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
          ! past a switch only where a function has the sign opposite to its
          ! sign at the accepted state: a try on a root (g exactly 0, which
@@ -280,6 +298,7 @@ contains
             t_hi = t
             this%g_hi = this%g_try
             this%y_hi = y
+            hi_bound = .false.
             if (last_side == 1) w_lo = 0.5_wp*w_lo
             w_hi = 1.0_wp
             current_is_hi = current
@@ -287,11 +306,20 @@ contains
             side = -1                      ! short of every switch: the bracket's start
             t_lo = t
             this%g_lo = this%g_try
+            this%y_lo = y
+            this%f_lo = stepper%f
             if (last_side == -1) w_hi = 0.5_wp*w_hi
             w_lo = 1.0_wp
          end if
          last_side = side
       end do
+      if (hi_bound) then
+         ! the switch within the bracket, no state past it taken: crossed
+         ! to from the state short of it on its slope (an error of the
+         ! bracket's width times the jump of y')
+         this%y_hi = this%y_lo + (t_hi - t_lo)*this%f_lo
+         current_is_hi = .false.
+      end if
       if (is_trial .and. (retry%failed() .or. short .or. t_hi >= t_end &
                           .or. t_hi - t_lo_start < immediate*(t_end - t_lo_start))) then
          ! (the trial's end is no state to accept)
