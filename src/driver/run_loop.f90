@@ -134,7 +134,11 @@ contains
       do while (this%stepper%trial_offered .and. .not. why%failed())
          call this%switches%locate(this%sys, this%stepper, this%t, this%y, located, why, trial=.true.)
          if (located .or. why%failed()) exit
+         ! (a switch there that could not be located: the stepper's own
+         ! shorter steps, as without trials offered)
+         this%stepper%offers_trials = .not. this%switches%trial_given_up
          call this%stepper%advance(this%sys, this%t, this%y, t_limit, why)
+         this%stepper%offers_trials = .true.
       end do
       t_step_end = this%t
       ! a switch inside the step: the state just past the first

@@ -67,6 +67,9 @@ module switch_location
       logical :: on = .false.
       integer :: n_g = 0                   !< switching functions of the scene
       integer :: n_run = 0                 !< steps running that ended on a located switch
+      !> the last trial offered crossed a switch that could not be located
+      !! (locator_locate): the stepper shortens its next step itself
+      logical :: trial_given_up = .false.
       real(wp), allocatable :: g_prev(:)   !< at the last accepted state, with its memory
       real(wp), allocatable :: g_lo(:), g_hi(:), g_try(:)
       !> on the continuous extension: its bracket's ends and trial, and its
@@ -179,10 +182,12 @@ contains
       type(error_t) :: retry
       real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2), t_lo_start, t_seed
       integer :: k, side, last_side
+      integer(i8) :: rejected_before
       logical :: on_root, on_dense, current_is_hi, dense_done, is_trial, short, current, hi_bound
       located = .false.
       is_trial = .false.
       if (present(trial)) is_trial = trial
+      this%trial_given_up = .false.
       if (is_trial) then
          call stepper%dense(stepper%t_trial, this%y_work)
          call switch_values(sys, stepper%t_trial, this%y_work, this%g_hi, stepper%stats, this%rates, this%counts)
@@ -275,16 +280,20 @@ contains
          if (hi_bound) t_to = 0.5_wp*(t_lo + t_hi)
          if (.not. (t_to > t_lo .and. t_to < t_hi)) t_to = 0.5_wp*(t_lo + t_hi)
          if (.not. (t_to > t_lo .and. t_to < t_hi)) exit     ! (below the time's resolution)
+         rejected_before = stepper%stats%rejected
          call step_again(this, sys, stepper, t_to, t, y, retry, short, current)
          current_is_hi = .false.
          if (retry%failed()) exit           ! (the earliest state found past the switch is kept)
          if (is_trial .and. short) exit
          if (short .and. on_dense) then
             ! rejected: a jump of the right-hand side before t_to, the
-            ! switch's (the state the stepper shortened to is no bracket's end)
+            ! switch's (the state the stepper shortened to is no bracket's
+            ! end; its trials are counted as taken again, not rejected)
             t_hi = t_to
             hi_bound = .true.
             short = .false.
+            stepper%stats%retaken = stepper%stats%retaken + (stepper%stats%rejected - rejected_before)
+            stepper%stats%rejected = rejected_before
             cycle
          end if
          call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
@@ -345,6 +354,7 @@ contains
       !> The trial stays rejected: the stepper back at the marked state
       !! (with y' there), to go on with its shorter step.
       subroutine give_up_trial()
+         this%trial_given_up = .true.
          stepper%stats%rejected = stepper%stats%rejected + 1
          stepper%stats%steps = stepper%stats%steps - 1
          stepper%stats%h_min = this%stats_prev%h_min
@@ -421,6 +431,9 @@ contains
             call switch_values(sys, stepper%t_trial, this%y_work, this%g_dt, stepper%stats, this%rates, this%counts)
             short = .true.
             if (.not. any(this%live .and. crossed(this%g_lo, this%g_dt))) exit
+            ! (a try of the location, counted as taken again, not rejected)
+            stepper%stats%rejected = stepper%stats%rejected - 1
+            stepper%stats%retaken = stepper%stats%retaken + 1
             t_b = stepper%t_trial
             this%g_hi = this%g_dt
             this%g_shift = 0.0_wp
