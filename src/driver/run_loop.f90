@@ -132,7 +132,8 @@ contains
       ! was the switch's, and it is cut there as an accepted step would be;
       ! otherwise the stepper goes on with a shorter step
       do while (this%stepper%trial_offered .and. .not. why%failed())
-         call this%switches%locate(this%sys, this%stepper, this%t, this%y, located, why, trial=.true.)
+         call this%switches%locate(this%sys, this%stepper, this%t, this%y, located, why, trial=.true., &
+                                      t_limit=t_limit)
          if (located .or. why%failed()) exit
          ! (a switch there that could not be located: the stepper's own
          ! shorter steps, as without trials offered)
@@ -143,7 +144,10 @@ contains
       t_step_end = this%t
       ! a switch inside the step: the state just past the first
       if (.not. located .and. .not. why%failed() .and. this%switches%on) &
-         call this%switches%locate(this%sys, this%stepper, this%t, this%y, located, why)
+         call this%switches%locate(this%sys, this%stepper, this%t, this%y, located, why, t_limit=t_limit)
+      ! (switches taken together with a print time just after them: the
+      ! state there is a print time's, as a step's that ends there)
+      if (located .and. this%t >= t_limit) located = .false.
       if (why%failed()) then
          ! keep the last accepted state in the output, then stop
          if (this%t > this%schedule%t_frame) call output_frame(this)

@@ -57,6 +57,13 @@ module switch_location
    !! under a far too large force) would otherwise cost some 80 evaluations
    !! a switch for ever; no shipped deck comes near it (docs/accuracy.md).
    integer, parameter :: max_run = 64
+   !> Dormand-Prince: switches less than this far apart (s), or from the
+   !! step's start, or from the next print time, are taken together at
+   !! one accepted state past all of them (locator_locate): no accepted
+   !! step is shorter (issue 15, section 2). The error this costs is this
+   !! time times the jump of y' at most (1e-9 s: 5 orders below the
+   !! stiffest contact's period), far below any tolerance's.
+   real(wp), parameter, public :: merge_window = 1.0e-9_wp
    !> Steps taken again to a root of the continuous extension (shifted to
    !! the last one's switching functions) before the regula falsi takes over
    integer, parameter :: max_dense_tries = 3
@@ -170,7 +177,7 @@ contains
    !! too, or a switch at once), nothing changes (located false, the
    !! stepper back at the marked state) and the stepper goes on with its
    !! shorter step.
-   subroutine locator_locate(this, sys, stepper, t, y, located, err, trial)
+   subroutine locator_locate(this, sys, stepper, t, y, located, err, trial, t_limit)
       class(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
@@ -179,6 +186,9 @@ contains
       logical, intent(out) :: located
       type(error_t), intent(inout) :: err
       logical, intent(in), optional :: trial
+      !> the next print time (or TMAX): a located state within merge_window
+      !! of it is placed on it
+      real(wp), intent(in), optional :: t_limit
       type(error_t) :: retry
       real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2), t_lo_start, t_seed
       integer :: k, side, last_side
@@ -344,13 +354,57 @@ contains
          t_hi = t_end
          this%y_hi = this%y_end
       end if
+      if (on_dense .and. t_hi < t_end) call merge_near(t_hi)
       ! the earliest state past the switch: accepted there, the stepper
       ! restarted (no back value, no controller memory from across it)
       call keep(this, sys, stepper, t_hi, this%y_hi, current_is_hi, t, y, err)
-      located = t_hi < t_end
+      located = t_hi < t_end .or. (on_dense .and. t_hi > t_end)
       this%n_run = merge(this%n_run + 1, 0, located)
       if (located) stepper%stats%switches_located = stepper%stats%switches_located + 1
    contains
+      !> Switches within merge_window after the one located at t_hi (or of
+      !! the step's start, or before the print time t_limit) taken with
+      !! it: t_hi and y_hi moved past the last of them (on y's slope, no
+      !! evaluation of forces), or onto the print time.
+      subroutine merge_near(t_hi)
+         real(wp), intent(inout) :: t_hi
+         real(wp) :: t_w, t_m, frac
+         integer :: i
+         logical :: later
+         ! the state no earlier than merge_window after the step's start
+         t_w = max(t_hi, this%t_prev) + merge_window + 8.0_wp*spacing(t_end)
+         this%y_work = this%y_hi + (t_w - t_hi)*stepper%f
+         call switch_values(sys, t_w, this%y_work, this%g_try, stepper%stats, this%rates, this%counts)
+         ! the switches still ahead at t_hi that lie before t_w: past the last
+         t_m = max(t_hi, this%t_prev + merge_window + 8.0_wp*spacing(t_end))
+         later = .false.
+         do i = 1, size(this%g_try)
+            if (.not. (this%live(i) .and. .not. passed(this%g_prev(i), this%g_hi(i)) &
+                       .and. passed(this%g_prev(i), this%g_try(i)))) cycle
+            later = .true.
+            frac = 1.0_wp
+            if (abs(this%g_hi(i) - this%g_try(i)) > 0.0_wp) frac = this%g_hi(i)/(this%g_hi(i) - this%g_try(i))
+            t_m = max(t_m, t_hi + max(0.0_wp, min(1.0_wp, frac))*(t_w - t_hi) + 0.5_wp*tol_t)
+         end do
+         t_m = min(t_m, t_w)
+         if (later) then
+            ! past all of them at t_m, or else at t_w
+            this%y_work = this%y_hi + (t_m - t_hi)*stepper%f
+            call switch_values(sys, t_m, this%y_work, this%g_dt, stepper%stats, this%rates, this%counts)
+            if (any(this%live .and. .not. passed(this%g_prev, this%g_dt) .and. passed(this%g_prev, this%g_try))) &
+               t_m = t_w
+         end if
+         if (present(t_limit)) then
+            t_m = min(t_m, t_limit)
+            if (t_limit > t_m .and. t_limit - t_m < merge_window) t_m = t_limit
+         end if
+         if (t_m > t_hi) then
+            this%y_hi = this%y_hi + (t_m - t_hi)*stepper%f
+            t_hi = t_m
+            current_is_hi = .false.
+         end if
+      end subroutine merge_near
+
       !> The trial stays rejected: the stepper back at the marked state
       !! (with y' there), to go on with its shorter step.
       subroutine give_up_trial()
