@@ -8,6 +8,7 @@ module dormand_prince
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
    use error_handling, only: error_t, error_set, exit_numerical
+   use strings, only: num
    use ode_system, only: ode_system_t, stepper_t
    implicit none
    private
@@ -45,6 +46,11 @@ module dormand_prince
    type, extends(stepper_t) :: dopri_stepper_t
       real(wp) :: h = 0.0_wp           !< the next step to try
       real(wp) :: rtol = 1.0e-7_wp, atol = 1.0e-9_wp
+      !> an accepted step after which the controller proposes less than this
+      !! (s) ends the run as a numerical failure: the run would need more
+      !! than about 1e10 steps (a fuzzed hand arc of 1500 in, deep in every
+      !! surface, went on at 1e-13 s a step for ever). 0: no such floor.
+      real(wp) :: h_least = 0.0_wp
       real(wp) :: err_old = dopri_err_old_initial  !< the PI controller's memory
       real(wp), allocatable :: k2(:), k3(:), k4(:), k5(:), k6(:), k7(:), yt(:), ynew(:), e(:)
       !> the entries of y in the error norm (the system's error_controlled)
@@ -250,6 +256,9 @@ contains
       this%stats%steps = this%stats%steps + 1
       this%stats%h_min = min(this%stats%h_min, h)
       this%stats%h_max = max(this%stats%h_max, h)
+      if (.not. clipped .and. this%h < this%h_least) &
+         call error_set(err, exit_numerical, 'the step size fell below its floor of '//num(this%h_least) &
+                        //' s (1e-10 of the run: the problem is too stiff for Dormand-Prince at these tolerances)')
    contains
       !> The continuous extension of the trial step of size h from (t, y).
       subroutine set_dense(h)
