@@ -8,6 +8,7 @@ module dormand_prince
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp
    use error_handling, only: error_t, error_set, exit_numerical
+   use strings, only: num
    use ode_system, only: ode_system_t, stepper_t
    implicit none
    private
@@ -45,6 +46,11 @@ module dormand_prince
    type, extends(stepper_t) :: dopri_stepper_t
       real(wp) :: h = 0.0_wp           !< the next step to try
       real(wp) :: rtol = 1.0e-7_wp, atol = 1.0e-9_wp
+      !> an accepted step after which the controller proposes less than this
+      !! (s) ends the run as a numerical failure: the run would need more
+      !! than about 1e10 steps (a fuzzed hand arc of 1500 in, deep in every
+      !! surface, went on at 1e-13 s a step for ever). 0: no such floor.
+      real(wp) :: h_least = 0.0_wp
       real(wp) :: err_old = dopri_err_old_initial  !< the PI controller's memory
       real(wp), allocatable :: k2(:), k3(:), k4(:), k5(:), k6(:), k7(:), yt(:), ynew(:), e(:)
       !> the entries of y in the error norm (the system's error_controlled)
@@ -57,6 +63,9 @@ module dormand_prince
       real(wp), allocatable :: dense_c(:, :)
       real(wp) :: t_dense0 = 0.0_wp, h_dense = 0.0_wp
       logical :: dense_ready = .false.
+      !> trials rejected in a row so far (across advances that offered a
+      !! rejected trial to the caller: offers_trials)
+      integer :: rejections_in_row = 0
    contains
       procedure :: init => dopri_init
       procedure :: advance => dopri_advance
@@ -114,6 +123,8 @@ contains
       this%f = f
       this%err_old = dopri_err_old_initial
       this%dense_ready = .false.
+      this%trial_offered = .false.
+      this%rejections_in_row = 0
    end subroutine dopri_resume
 
    !> See stepper_t: the continuous extension of the last step, unless
@@ -160,12 +171,17 @@ contains
       type(error_t), intent(inout) :: err
       this%err_old = dopri_err_old_initial
       this%dense_ready = .false.
+      this%trial_offered = .false.
+      this%rejections_in_row = 0
       if (.not. this%evaluate(sys, t, y, this%f)) call this%give_up_rhs(sys, err)
    end subroutine dopri_begin
 
    !> Try steps until one is accepted (or the step collapses). A trial
    !! whose evaluation fails is an outcome answered here, by a shorter
-   !! step; only when the step falls below its floor (or too many trials in
+   !! step. With offers_trials (and the continuous extension on), a trial
+   !! rejected for its error is given to the caller instead (t and y
+   !! unchanged, trial_offered, its extension ready): the next advance
+   !! goes on with the shorter step. Only when the step falls below its floor (or too many trials in
    !! a row were rejected) does err say why: the last trial's evaluation
    !! failed (the system's reason), or its error stayed too large.
    subroutine dopri_advance(this, sys, t, y, t_limit, err)
@@ -179,7 +195,8 @@ contains
       logical :: clipped, stages_ok
       integer :: rejections
 
-      rejections = 0
+      rejections = this%rejections_in_row
+      this%trial_offered = .false.
       h_floor = 16.0_wp*epsilon(1.0_wp)*max(abs(t), 1.0e-3_wp)
       do
          h = this%h
@@ -203,9 +220,20 @@ contains
             else
                call this%give_up_rhs(sys, err)
             end if
+            this%rejections_in_row = 0
+            return
+         end if
+         if (this%offers_trials .and. this%dense_output .and. stages_ok &
+             .and. err_norm < huge(1.0_wp)) then
+            ! the caller sees whether the trial crossed a switch (issue 15)
+            call set_dense(h)
+            this%trial_offered = .true.
+            this%t_trial = merge(t_limit, t + h, clipped)
+            this%rejections_in_row = rejections
             return
          end if
       end do
+      this%rejections_in_row = 0
 
       ! accepted: PI controller for the next step
       err_norm = max(err_norm, 1.0e-10_wp)
@@ -214,16 +242,7 @@ contains
       if (rejections > 0) fac = min(fac, 1.0_wp)
       this%err_old = max(err_norm, dopri_err_old_initial)
       ! the step's continuous extension (before y and f become the step's end)
-      associate (c => this%dense_c)
-         c(:, 1) = y
-         c(:, 2) = this%ynew - y
-         c(:, 3) = h*this%f - c(:, 2)
-         c(:, 4) = c(:, 2) - h*this%k7 - c(:, 3)
-         c(:, 5) = h*(d1*this%f + d3*this%k3 + d4*this%k4 + d5*this%k5 + d6*this%k6 + d7*this%k7)
-      end associate
-      this%t_dense0 = t
-      this%h_dense = h
-      this%dense_ready = .true.
+      call set_dense(h)
       if (clipped) then
          ! a step shortened to meet t_limit does not shrink the next one
          this%h = max(this%h, h*fac)
@@ -237,7 +256,25 @@ contains
       this%stats%steps = this%stats%steps + 1
       this%stats%h_min = min(this%stats%h_min, h)
       this%stats%h_max = max(this%stats%h_max, h)
+      if (.not. clipped .and. this%h < this%h_least) &
+         call error_set(err, exit_numerical, 'the step size fell below its floor of '//num(this%h_least) &
+                        //' s (1e-10 of the run: the problem is too stiff for Dormand-Prince at these tolerances)')
    contains
+      !> The continuous extension of the trial step of size h from (t, y).
+      subroutine set_dense(h)
+         real(wp), intent(in) :: h
+         associate (c => this%dense_c)
+            c(:, 1) = y
+            c(:, 2) = this%ynew - y
+            c(:, 3) = h*this%f - c(:, 2)
+            c(:, 4) = c(:, 2) - h*this%k7 - c(:, 3)
+            c(:, 5) = h*(d1*this%f + d3*this%k3 + d4*this%k4 + d5*this%k5 + d6*this%k6 + d7*this%k7)
+         end associate
+         this%t_dense0 = t
+         this%h_dense = h
+         this%dense_ready = .true.
+      end subroutine set_dense
+
       !> The seven stages and the scaled error norm of one trial step.
       subroutine try_step(h, ok, err_norm)
          real(wp), intent(in) :: h

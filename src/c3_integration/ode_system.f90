@@ -81,6 +81,16 @@ module ode_system
       !! that a step is counted once
       real(wp), allocatable :: local_error(:)
       logical :: local_error_new = .false.
+      !> an adaptive stepper with a continuous extension may return a trial
+      !! step it rejected to the caller (trial_offered, ending at t_trial;
+      !! its extension given by dense) instead of trying a shorter one at
+      !! once: the caller cuts it at a switch it crosses (issue 15: the
+      !! error of a step across a switch is the switch's, not the step
+      !! size's), or calls advance again, which goes on with the shorter
+      !! step. Set by the caller that locates switches.
+      logical :: offers_trials = .false.
+      logical :: trial_offered = .false.
+      real(wp) :: t_trial = 0.0_wp
    contains
       procedure(init_interface), deferred :: init
       procedure(advance_interface), deferred :: advance

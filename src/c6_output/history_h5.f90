@@ -67,7 +67,7 @@ module history_h5
                    h5fcreate_f, h5fclose_f, h5fflush_f, h5f_acc_trunc_f, h5f_scope_global_f, h5f_close_strong_f, &
                    h5pcreate_f, h5pclose_f, h5pset_obj_track_times_f, h5pset_fclose_degree_f, h5pset_chunk_f, &
                    h5p_file_create_f, h5p_file_access_f, h5p_group_create_f, h5p_dataset_create_f, &
-                   h5p_dataset_access_f, h5pset_chunk_cache_f, &
+                   h5p_dataset_access_f, h5pset_chunk_cache_f, h5p_dataset_xfer_f, h5pset_buffer_f, &
                    h5gcreate_f, h5gclose_f, h5lexists_f, &
                    h5screate_f, h5screate_simple_f, h5sclose_f, h5sselect_hyperslab_f, &
                    h5s_scalar_f, h5s_unlimited_f, h5s_select_set_f, &
@@ -401,7 +401,7 @@ contains
       character(len=*), intent(in) :: text
       type(error_t), intent(inout) :: err
       integer(hsize_t) :: n_new(1), start(1), one(1)
-      integer(hid_t) :: fspace, mspace, memtype
+      integer(hid_t) :: fspace, mspace, memtype, dxpl
       character(len=event_text_len) :: line(1)
       integer :: hdferr, ignore
 
@@ -447,10 +447,13 @@ contains
       end if
 
       memtype = no_id
+      dxpl = no_id
       call select_new_rows(this%ev_text, n_new, start, one, fspace, mspace, hdferr)
       if (hdferr >= 0) call string_type(event_text_len, .false., memtype, hdferr)
+      if (hdferr >= 0) call small_conversion_buffer(dxpl, hdferr)
       if (hdferr >= 0) call h5dwrite_f(this%ev_text, memtype, line, one, hdferr, &
-                                       mem_space_id=mspace, file_space_id=fspace)
+                                       mem_space_id=mspace, file_space_id=fspace, xfer_prp=dxpl)
+      if (dxpl > 0) call h5pclose_f(dxpl, ignore)
       if (memtype > 0) call h5tclose_f(memtype, ignore)
       call close_spaces(fspace, mspace)
       if (hdferr < 0) then
@@ -739,6 +742,27 @@ contains
       if (local%failed()) call error_set(err, local%code, local%message)
    end subroutine describe
 
+   !> A transfer property list whose type-conversion buffer is 64 KiB, for
+   !! the string writes (blank-padded in memory, null-padded in the file):
+   !! HDF5's default, 1 MiB, is allocated and cleared at the first
+   !! conversion, 256 pages of fresh memory for some kilobytes of text (a
+   !! longer deck is converted in pieces).
+   subroutine small_conversion_buffer(dxpl, hdferr)
+      integer(hid_t), intent(out) :: dxpl
+      integer, intent(out) :: hdferr
+      integer :: ignore
+      call h5pcreate_f(h5p_dataset_xfer_f, dxpl, hdferr)
+      if (hdferr < 0) then
+         dxpl = no_id
+         return
+      end if
+      call h5pset_buffer_f(dxpl, 65536_hsize_t, hdferr)
+      if (hdferr < 0) then
+         call h5pclose_f(dxpl, ignore)
+         dxpl = no_id
+      end if
+   end subroutine small_conversion_buffer
+
    !> The 120-character event text dataset (its type is not a predefined one).
    subroutine create_event_text(file, path, dset, err)
       integer(hid_t), intent(in) :: file
@@ -871,7 +895,7 @@ contains
       character(len=*), intent(in) :: deck_lines(:)
       type(error_t), intent(inout) :: err
       integer(hsize_t) :: dims(1)
-      integer(hid_t) :: grp, space, ftype, mtype, dcpl, dset
+      integer(hid_t) :: grp, space, ftype, mtype, dcpl, dset, dxpl
       integer :: hdferr, ignore
 
       call create_group(file, gcpl, path, 'input', grp, err)
@@ -884,6 +908,7 @@ contains
       mtype = no_id
       dcpl = no_id
       dset = no_id
+      dxpl = no_id
       call h5screate_simple_f(1, dims, space, hdferr)
       if (hdferr >= 0) call string_type(stored_width(deck_lines), .true., ftype, hdferr)
       if (hdferr >= 0) call string_type(max(1, len(deck_lines)), .false., mtype, hdferr)
@@ -892,13 +917,16 @@ contains
       if (hdferr >= 0) call h5dcreate_f(file, 'input/deck', ftype, space, dset, hdferr, dcpl_id=dcpl)
       ! Nothing to write for an empty deck or one of zero-length lines (the
       ! dataset then holds empty strings, the fill value).
-      if (hdferr >= 0 .and. size(deck_lines) > 0 .and. len(deck_lines) > 0) &
-         call h5dwrite_f(dset, mtype, deck_lines, dims, hdferr)
+      if (hdferr >= 0 .and. size(deck_lines) > 0 .and. len(deck_lines) > 0) then
+         call small_conversion_buffer(dxpl, hdferr)
+         if (hdferr >= 0) call h5dwrite_f(dset, mtype, deck_lines, dims, hdferr, xfer_prp=dxpl)
+      end if
       if (hdferr < 0) call error_set(err, exit_io, 'cannot write dataset input/deck in '//path)
       if (hdferr >= 0) call describe(dset, path, 'input/deck', ['card'], ['-'], &
                                      'the card images of the deck, in the order read', err)
       if (dset > 0) call h5dclose_f(dset, ignore)
       if (dcpl > 0) call h5pclose_f(dcpl, ignore)
+      if (dxpl > 0) call h5pclose_f(dxpl, ignore)
       if (mtype > 0) call h5tclose_f(mtype, ignore)
       if (ftype > 0) call h5tclose_f(ftype, ignore)
       if (space > 0) call h5sclose_f(space, ignore)

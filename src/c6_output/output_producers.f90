@@ -125,6 +125,17 @@ contains
             end do
          end do
          es%col = [es%col, column('total_body', 'in*lb'), column('balance_err', 'in*lb')]
+         ! each effect's energies' column, found by name here once (a frame
+         ! adds to it by index)
+         allocate (es%sum_column(n_energy_kinds*size(occ%effects)))
+         es%sum_column = 0
+         do k = 1, size(occ%effects)
+            do kind = 1, n_energy_kinds
+               if (.not. occ%effects(k)%e%has_energy(kind)) cycle
+               name = energy_column_name(occ%effects(k)%e%name, occ%effects(k)%e%has_energy, kind)
+               es%sum_column(n_energy_kinds*(k - 1) + kind) = findloc(es%col%name == name, .true., 1)
+            end do
+         end do
          call place(es, producer_energy, 0)
       end function energy_summary
    end subroutine registry_build
@@ -150,18 +161,31 @@ contains
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: y(:), total0
       type(energy_balance_t) :: eb
-      real(wp) :: e(n_energy_kinds), ke(n_seg)
+      real(wp) :: e(n_energy_kinds, size(occ%effects))
+      call energies_and_balance(occ, st, y, total0, e, eb)
+   end function frame_energy
+
+   !> Every effect's energies e(:, k) at (t, y) and the balance they make
+   !! (frame_energy), so that a frame computes each effect's energy once.
+   pure subroutine energies_and_balance(occ, st, y, total0, e, eb)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: y(:), total0
+      real(wp), intent(out) :: e(:, :)
+      type(energy_balance_t), intent(out) :: eb
+      real(wp) :: ke(n_seg)
       integer :: k
       ke = body_ke(occ, st)
       eb%ke_body = sum(ke)
       eb%total = eb%ke_body
+      eb%supplied = 0.0_wp
       do k = 1, size(occ%effects)
-         call effect_energy(occ, k, st, y, e)
-         eb%total = eb%total + e(energy_stored) + e(energy_dissipated) - e(energy_supplied)
-         eb%supplied = eb%supplied + e(energy_supplied)
+         call effect_energy(occ, k, st, y, e(:, k))
+         eb%total = eb%total + e(energy_stored, k) + e(energy_dissipated, k) - e(energy_supplied, k)
+         eb%supplied = eb%supplied + e(energy_supplied, k)
       end do
       eb%error = eb%total - total0
-   end function frame_energy
+   end subroutine energies_and_balance
 
    pure function body_ke(occ, st) result(ke)
       type(occupant_t), intent(in) :: occ
@@ -184,6 +208,16 @@ contains
       end associate
    end subroutine effect_energy
 
+   !> The most effects an occupant of sys has.
+   pure integer function max_effects(sys)
+      type(crash_system_t), intent(in) :: sys
+      integer :: o
+      max_effects = 0
+      do o = 1, size(sys%occupants)
+         max_effects = max(max_effects, size(sys%occupants(o)%effects))
+      end do
+   end function max_effects
+
    !> Every series at the accepted point (t, y) where the derivative is f.
    !! total0(o): occupant o's energy total at t = 0. Returns each
    !! occupant's energy balance too.
@@ -195,22 +229,25 @@ contains
       real(wp), intent(in), contiguous :: y(:)
       type(output_frame_t), intent(inout) :: frame
       type(energy_balance_t), intent(out) :: balance(:)
-      type(body_state_t), allocatable :: st(:)
-      type(body_outputs_t), allocatable :: bo(:)
-      real(wp) :: b(n_dof), e(n_energy_kinds)
-      real(wp), allocatable :: extra_rate(:), aux_rate(:)
-      real(wp), allocatable :: ft(:, :), fs(:, :)   !< each occupant's joint tension and shear, once per frame
-      logical, allocatable :: solved(:)
+      ! (work arrays on the stack: a frame allocates nothing)
+      type(body_state_t) :: st(size(sys%occupants))
+      type(body_outputs_t) :: bo(size(sys%occupants))
+      real(wp) :: b(n_dof)
+      real(wp) :: extra_rate(sys%layout%n), aux_rate(sys%layout%n)
+      real(wp) :: ft(n_joint, size(sys%occupants)), fs(n_joint, size(sys%occupants))   !< joint tension and shear, once per frame
+      logical :: solved(size(sys%occupants))
+      !> each occupant's effects' energies, computed once for the balance and the energy summary
+      real(wp) :: energy(n_energy_kinds, max_effects(sys), size(sys%occupants))
       integer :: o, k, k2, kind, n, i, xo, ao
 
-      allocate (st(size(sys%occupants)), bo(size(sys%occupants)), extra_rate(sys%layout%n), aux_rate(sys%layout%n))
-      allocate (ft(n_joint, size(sys%occupants)), fs(n_joint, size(sys%occupants)), source=0.0_wp)
-      allocate (solved(size(sys%occupants)), source=.false.)
+      ft = 0.0_wp
+      fs = 0.0_wp
+      solved = .false.
       do o = 1, size(sys%occupants)
          associate (occ => sys%occupants(o))
             st(o) = system_body_state(sys, o, t, y)
             call body_outputs_compute(occ%body, vehicle, st(o), f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), bo(o))
-            balance(o) = frame_energy(occ, st(o), y, total0(o))
+            call energies_and_balance(occ, st(o), y, total0(o), energy(:, 1:size(occ%effects), o), balance(o))
          end associate
       end do
       if (.not. allocated(frame%v)) allocate (frame%v(reg%n_values))
@@ -231,14 +268,11 @@ contains
                   v(1) = bo(o)%ke_vehicle
                   v(2) = balance(o)%ke_body
                   do k2 = 1, size(occ%effects)
-                     if (.not. any(occ%effects(k2)%e%has_energy)) cycle
-                     call effect_energy(occ, k2, st(o), y, e)
                      do kind = 1, n_energy_kinds
-                        if (.not. occ%effects(k2)%e%has_energy(kind)) cycle
-                        ! (the column of this name: shared by the contact pairs, summed)
-                        i = findloc(s%col%name == energy_column_name(occ%effects(k2)%e%name, &
-                                                                     occ%effects(k2)%e%has_energy, kind), .true., 1)
-                        v(i) = v(i) + e(kind)
+                        ! (the column of the effect's energy of this kind, found by
+                        ! registry_build: shared by the contact pairs, summed)
+                        i = s%sum_column(n_energy_kinds*(k2 - 1) + kind)
+                        if (i > 0) v(i) = v(i) + energy(kind, k2, o)
                      end do
                   end do
                   v(n - 1) = balance(o)%total

@@ -61,15 +61,18 @@ contains
       type(output_series_t), intent(inout) :: to
       character(len=:), allocatable :: name, title, description
       type(output_column_t), allocatable :: col(:)
+      integer, allocatable :: sum_column(:)
       call move_alloc(from%name, name)
       call move_alloc(from%title, title)
       call move_alloc(from%description, description)
       call move_alloc(from%col, col)
+      call move_alloc(from%sum_column, sum_column)
       to = from
       call move_alloc(name, to%name)
       call move_alloc(title, to%title)
       call move_alloc(description, to%description)
       call move_alloc(col, to%col)
+      call move_alloc(sum_column, to%sum_column)
    end subroutine series_move
 
    !> The index of the series called name, or 0.

@@ -35,6 +35,11 @@ module output_series
       integer :: occupant = 1
       logical :: generalized_force = .false.         !< the producer's contribution to b
       integer :: offset = 0                          !< first value - 1 in a frame
+      !> for a series that sums parts of its producer (the energy summary:
+      !! part n_energy_kinds*(k-1)+kind is effect k's energy of that kind),
+      !! the column each part adds to, 0 for none: resolved once, when the
+      !! series is declared, so that a frame compares no names
+      integer, allocatable :: sum_column(:)
    end type output_series_t
 
 contains

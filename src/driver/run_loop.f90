@@ -108,6 +108,9 @@ contains
                              this%err)
       call this%switches%init(this%sys, tr%relocates .and. m%options%locate_switches, this%t, this%y, &
                              this%stepper%stats)
+      ! a trial step an adaptive stepper rejects is cut at a switch it
+      ! crosses (run_advance), not shortened blindly
+      this%stepper%offers_trials = this%switches%on
    end subroutine run_init
 
    !> One accepted step: a step of the integrator, or the state inside it
@@ -124,11 +127,27 @@ contains
       call this%schedule%next_limit(this%t, t_limit)
       if (this%switches%on) call this%switches%mark(this%t, this%y, this%stepper%f, this%stepper%stats)
       call this%stepper%advance(this%sys, this%t, this%y, t_limit, why)
-      t_step_end = this%t
       located = .false.
+      ! a trial the stepper rejected: when it crossed a switch, its error
+      ! was the switch's, and it is cut there as an accepted step would be;
+      ! otherwise the stepper goes on with a shorter step
+      do while (this%stepper%trial_offered .and. .not. why%failed())
+         call this%switches%locate(this%sys, this%stepper, this%t, this%y, located, why, trial=.true., &
+                                      t_limit=t_limit)
+         if (located .or. why%failed()) exit
+         ! (a switch there that could not be located: the stepper's own
+         ! shorter steps, as without trials offered)
+         this%stepper%offers_trials = .not. this%switches%trial_given_up
+         call this%stepper%advance(this%sys, this%t, this%y, t_limit, why)
+         this%stepper%offers_trials = .true.
+      end do
+      t_step_end = this%t
       ! a switch inside the step: the state just past the first
-      if (.not. why%failed() .and. this%switches%on) &
-         call this%switches%locate(this%sys, this%stepper, this%t, this%y, located, why)
+      if (.not. located .and. .not. why%failed() .and. this%switches%on) &
+         call this%switches%locate(this%sys, this%stepper, this%t, this%y, located, why, t_limit=t_limit)
+      ! (switches taken together with a print time just after them: the
+      ! state there is a print time's, as a step's that ends there)
+      if (located .and. this%t >= t_limit) located = .false.
       if (why%failed()) then
          ! keep the last accepted state in the output, then stop
          if (this%t > this%schedule%t_frame) call output_frame(this)

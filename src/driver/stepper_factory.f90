@@ -53,6 +53,7 @@ contains
          s%h = m%time%dt
          s%rtol = m%time%rtol
          s%atol = m%time%atol
+         s%h_least = 1.0e-10_wp*m%time%t_max     ! (more than 1e10 steps: a failure, not a run)
       end select
    end subroutine stepper_from_model
 

@@ -57,6 +57,13 @@ module switch_location
    !! under a far too large force) would otherwise cost some 80 evaluations
    !! a switch for ever; no shipped deck comes near it (docs/accuracy.md).
    integer, parameter :: max_run = 64
+   !> Dormand-Prince: switches less than this far apart (s), or from the
+   !! step's start, or from the next print time, are taken together at
+   !! one accepted state past all of them (locator_locate): no accepted
+   !! step is shorter (issue 15, section 2). The error this costs is this
+   !! time times the jump of y' at most (1e-9 s: 5 orders below the
+   !! stiffest contact's period), far below any tolerance's.
+   real(wp), parameter, public :: merge_window = 1.0e-9_wp
    !> Steps taken again to a root of the continuous extension (shifted to
    !! the last one's switching functions) before the regula falsi takes over
    integer, parameter :: max_dense_tries = 3
@@ -67,16 +74,28 @@ module switch_location
       logical :: on = .false.
       integer :: n_g = 0                   !< switching functions of the scene
       integer :: n_run = 0                 !< steps running that ended on a located switch
+      !> the last trial offered crossed a switch that could not be located
+      !! (locator_locate): the stepper shortens its next step itself
+      logical :: trial_given_up = .false.
       real(wp), allocatable :: g_prev(:)   !< at the last accepted state, with its memory
       real(wp), allocatable :: g_lo(:), g_hi(:), g_try(:)
       !> on the continuous extension: its bracket's ends and trial, and its
       !! shift to the step's own switching functions (locate_on_dense)
       real(wp), allocatable :: g_da(:), g_db(:), g_dt(:), g_shift(:)
+      real(wp), allocatable :: g_end(:)     !< at the step's end (locate_on_dense)
       logical, allocatable :: live(:)       !< the functions that may cross in this step
       real(wp) :: t_prev = 0.0_wp          !< the last accepted state before the step
+      !> a step taken again with the stepper's continuous extension stops
+      !! this much short of its end and crosses the rest on the slope there
+      !! (locator_locate; 0: not)
+      real(wp) :: hop = 0.0_wp
       real(wp), allocatable :: y_prev(:)
       type(step_stats_t) :: stats_prev     !< the stepper's statistics then
       real(wp), allocatable :: y_hi(:)     !< the earliest state found past a switch
+      !> the latest state found short of every switch, and y' there (on the
+      !! stepper's slope: locator_locate crosses from it when a step taken
+      !! again past the switch was rejected)
+      real(wp), allocatable :: y_lo(:), f_lo(:)
       real(wp), allocatable :: y_end(:)    !< the step as first taken
       real(wp), allocatable :: f_prev(:), f_end(:)   !< y' at the step's ends (Hermite's interpolant)
       real(wp), allocatable :: y_work(:)   !< a state of the interpolant
@@ -113,8 +132,8 @@ contains
       this%on = relocates .and. n > 0
       if (.not. this%on) return
       allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%live(n))
-      allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n))
-      allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)))
+      allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n), this%g_end(n))
+      allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)), this%y_lo(size(y)), this%f_lo(size(y)))
       allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)))
       allocate (this%counts(size(sys%counts, 1)))
       call this%accepted(sys, t, y, stats)
@@ -149,7 +168,16 @@ contains
    !! changes. A step taken again that fails gives the step as first taken
    !! back (the switch then at its end, as without location); only if that
    !! fails too does the run fail (err: the stepper's why).
-   subroutine locator_locate(this, sys, stepper, t, y, located, err)
+   !!
+   !! trial: the stepper offered a trial step it rejected (trial_offered,
+   !! ending at t_trial; (t, y) is still the marked state): when a switch
+   !! lies in it, the trial is cut there as an accepted step would be (its
+   !! error was the switch's; the step to the switch is smooth); when none
+   !! does, or the switch cannot be located (the step to it is rejected
+   !! too, or a switch at once), nothing changes (located false, the
+   !! stepper back at the marked state) and the stepper goes on with its
+   !! shorter step.
+   subroutine locator_locate(this, sys, stepper, t, y, located, err, trial, t_limit)
       class(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
@@ -157,19 +185,41 @@ contains
       real(wp), intent(inout), contiguous :: y(:)
       logical, intent(out) :: located
       type(error_t), intent(inout) :: err
+      logical, intent(in), optional :: trial
+      !> the next print time (or TMAX): a located state within merge_window
+      !! of it is placed on it
+      real(wp), intent(in), optional :: t_limit
       type(error_t) :: retry
       real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2), t_lo_start, t_seed
       integer :: k, side, last_side
-      logical :: on_root, on_dense, current_is_hi, dense_done
+      integer(i8) :: rejected_before
+      logical :: on_root, on_dense, current_is_hi, dense_done, is_trial, short, current, hi_bound
       located = .false.
-      call switch_values(sys, t, y, this%g_hi, stepper%stats, this%rates, this%counts)
+      is_trial = .false.
+      if (present(trial)) is_trial = trial
+      this%trial_given_up = .false.
+      if (is_trial) then
+         call stepper%dense(stepper%t_trial, this%y_work)
+         call switch_values(sys, stepper%t_trial, this%y_work, this%g_hi, stepper%stats, this%rates, this%counts)
+      else
+         call switch_values(sys, t, y, this%g_hi, stepper%stats, this%rates, this%counts)
+      end if
       ! a function that sat on its root at the accepted state (a switch
       ! just located there, or a constraint just left) has no side to
       ! cross from: its memory there decided its side
       this%live = abs(this%g_prev) > at_root*abs(this%g_hi)
       if (.not. any(this%live .and. crossed(this%g_prev, this%g_hi))) then
-         this%n_run = 0
+         if (.not. is_trial) this%n_run = 0
          return
+      end if
+      if (is_trial) then
+         if (this%n_run >= max_run) return
+         ! the trial, cut at the switch, counted as a step taken again
+         ! (as an accepted step that crosses one), not as rejected
+         t = stepper%t_trial
+         y = this%y_work
+         stepper%stats%rejected = stepper%stats%rejected - 1
+         stepper%stats%steps = stepper%stats%steps + 1
       end if
       if (this%n_run >= max_run) then
          ! (chatter the law does not resolve: the switch at the step's end)
@@ -187,11 +237,21 @@ contains
       this%f_end = stepper%f
       current_is_hi = .true.
       on_dense = stepper%has_dense()
+      ! a step taken again ends a little short of the time asked and crosses
+      ! the rest on its slope: its stages then do not reach past a jump of
+      ! the right-hand side (whose stage at the step's end would count it
+      ! in the step's value as a first-order error, and in its estimate)
+      this%hop = merge(tol_t, 0.0_wp, on_dense)
+      short = .false.
       if (on_dense) then
          ! Dormand-Prince: the switch on the step's continuous extension,
          ! then ONE step from the marked state to just past it (an
          ! integrator's state, not an interpolated one)
-         call locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, dense_done)
+         call locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, dense_done, short)
+         if (is_trial .and. short) then
+            call give_up_trial()
+            return
+         end if
       else
          ! the first try: the switch on Hermite's cubic through the step's
          ! ends (no evaluation of forces; its error is the step's own order)
@@ -201,6 +261,11 @@ contains
       w_lo = 1.0_wp        ! Illinois' weights of the bracket's ends
       w_hi = 1.0_wp
       last_side = 0
+      ! t_hi a bound without a state past the switch (a step taken again to
+      ! it was rejected): the bracket is halved, the state crossed to at last
+      hi_bound = .false.
+      this%y_lo = this%y_prev
+      this%f_lo = this%f_prev
       width = huge(1.0_wp)       ! the bracket's width two tries ago and one
       do k = 1, max_tries
          if (dense_done) exit
@@ -212,7 +277,7 @@ contains
          ! over the step (a try that landed on it, g exactly 0): the root is
          ! there, and the next try goes just past it
          on_root = any(this%live .and. crossed(this%g_prev, this%g_hi) .and. .not. abs(this%g_lo) > 0.0_wp)
-         if (.not. on_root) then
+         if (.not. on_root .and. .not. hi_bound) then
             if (t_hi - first_crossing(this%g_lo, this%g_hi, this%live, 1.0_wp, 1.0_wp, t_lo, t_hi) <= tol_t) exit
          end if
          t_to = first_crossing(this%g_lo, this%g_hi, this%live, w_lo, w_hi, t_lo, t_hi)
@@ -222,11 +287,25 @@ contains
          ! halves every third try, whatever the switching functions' shape
          if (.not. on_root .and. t_hi - t_lo > 0.5_wp*width(1)) t_to = 0.5_wp*(t_lo + t_hi)
          width = [width(2), t_hi - t_lo]
+         if (hi_bound) t_to = 0.5_wp*(t_lo + t_hi)
          if (.not. (t_to > t_lo .and. t_to < t_hi)) t_to = 0.5_wp*(t_lo + t_hi)
          if (.not. (t_to > t_lo .and. t_to < t_hi)) exit     ! (below the time's resolution)
-         call step_again(this, sys, stepper, t_to, t, y, retry)
+         rejected_before = stepper%stats%rejected
+         call step_again(this, sys, stepper, t_to, t, y, retry, short, current)
          current_is_hi = .false.
          if (retry%failed()) exit           ! (the earliest state found past the switch is kept)
+         if (is_trial .and. short) exit
+         if (short .and. on_dense) then
+            ! rejected: a jump of the right-hand side before t_to, the
+            ! switch's (the state the stepper shortened to is no bracket's
+            ! end; its trials are counted as taken again, not rejected)
+            t_hi = t_to
+            hi_bound = .true.
+            short = .false.
+            stepper%stats%retaken = stepper%stats%retaken + (stepper%stats%rejected - rejected_before)
+            stepper%stats%rejected = rejected_before
+            cycle
+         end if
          call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
          ! past a switch only where a function has the sign opposite to its
          ! sign at the accepted state: a try on a root (g exactly 0, which
@@ -238,18 +317,34 @@ contains
             t_hi = t
             this%g_hi = this%g_try
             this%y_hi = y
+            hi_bound = .false.
             if (last_side == 1) w_lo = 0.5_wp*w_lo
             w_hi = 1.0_wp
-            current_is_hi = .true.
+            current_is_hi = current
          else
             side = -1                      ! short of every switch: the bracket's start
             t_lo = t
             this%g_lo = this%g_try
+            this%y_lo = y
+            this%f_lo = stepper%f
             if (last_side == -1) w_hi = 0.5_wp*w_hi
             w_lo = 1.0_wp
          end if
          last_side = side
       end do
+      if (hi_bound) then
+         ! the switch within the bracket, no state past it taken: crossed
+         ! to from the state short of it on its slope (an error of the
+         ! bracket's width times the jump of y')
+         this%y_hi = this%y_lo + (t_hi - t_lo)*this%f_lo
+         current_is_hi = .false.
+      end if
+      if (is_trial .and. (retry%failed() .or. short .or. t_hi >= t_end &
+                          .or. t_hi - t_lo_start < immediate*(t_end - t_lo_start))) then
+         ! (the trial's end is no state to accept)
+         call give_up_trial()
+         return
+      end if
       if (t_hi - t_lo_start < immediate*(t_end - t_lo_start)) then
          ! a switch at once after the last (chatter the law leaves, or
          ! rounding on a root): not located, the step kept as first taken,
@@ -259,12 +354,70 @@ contains
          t_hi = t_end
          this%y_hi = this%y_end
       end if
+      if (on_dense .and. t_hi < t_end) call merge_near(t_hi)
       ! the earliest state past the switch: accepted there, the stepper
       ! restarted (no back value, no controller memory from across it)
       call keep(this, sys, stepper, t_hi, this%y_hi, current_is_hi, t, y, err)
-      located = t_hi < t_end
+      located = t_hi < t_end .or. (on_dense .and. t_hi > t_end)
       this%n_run = merge(this%n_run + 1, 0, located)
       if (located) stepper%stats%switches_located = stepper%stats%switches_located + 1
+   contains
+      !> Switches within merge_window after the one located at t_hi (or of
+      !! the step's start, or before the print time t_limit) taken with
+      !! it: t_hi and y_hi moved past the last of them (on y's slope, no
+      !! evaluation of forces), or onto the print time.
+      subroutine merge_near(t_hi)
+         real(wp), intent(inout) :: t_hi
+         real(wp) :: t_w, t_m, frac
+         integer :: i
+         logical :: later
+         ! the state no earlier than merge_window after the step's start
+         t_w = max(t_hi, this%t_prev) + merge_window + 8.0_wp*spacing(t_end)
+         this%y_work = this%y_hi + (t_w - t_hi)*stepper%f
+         call switch_values(sys, t_w, this%y_work, this%g_try, stepper%stats, this%rates, this%counts)
+         ! the switches still ahead at t_hi that lie before t_w: past the last
+         t_m = max(t_hi, this%t_prev + merge_window + 8.0_wp*spacing(t_end))
+         later = .false.
+         do i = 1, size(this%g_try)
+            if (.not. (this%live(i) .and. .not. passed(this%g_prev(i), this%g_hi(i)) &
+                       .and. passed(this%g_prev(i), this%g_try(i)))) cycle
+            later = .true.
+            frac = 1.0_wp
+            if (abs(this%g_hi(i) - this%g_try(i)) > 0.0_wp) frac = this%g_hi(i)/(this%g_hi(i) - this%g_try(i))
+            t_m = max(t_m, t_hi + max(0.0_wp, min(1.0_wp, frac))*(t_w - t_hi) + 0.5_wp*tol_t)
+         end do
+         t_m = min(t_m, t_w)
+         if (later) then
+            ! past all of them at t_m, or else at t_w
+            this%y_work = this%y_hi + (t_m - t_hi)*stepper%f
+            call switch_values(sys, t_m, this%y_work, this%g_dt, stepper%stats, this%rates, this%counts)
+            if (any(this%live .and. .not. passed(this%g_prev, this%g_dt) .and. passed(this%g_prev, this%g_try))) &
+               t_m = t_w
+         end if
+         if (present(t_limit)) then
+            t_m = min(t_m, t_limit)
+            if (t_limit > t_m .and. t_limit - t_m < merge_window) t_m = t_limit
+         end if
+         if (t_m > t_hi) then
+            this%y_hi = this%y_hi + (t_m - t_hi)*stepper%f
+            t_hi = t_m
+            current_is_hi = .false.
+         end if
+      end subroutine merge_near
+
+      !> The trial stays rejected: the stepper back at the marked state
+      !! (with y' there), to go on with its shorter step.
+      subroutine give_up_trial()
+         this%trial_given_up = .true.
+         stepper%stats%rejected = stepper%stats%rejected + 1
+         stepper%stats%steps = stepper%stats%steps - 1
+         stepper%stats%h_min = this%stats_prev%h_min
+         stepper%stats%h_max = this%stats_prev%h_max
+         t = this%t_prev
+         y = this%y_prev
+         this%y_work = this%f_prev
+         call stepper%resume(sys, t, y, this%y_work, err)
+      end subroutine give_up_trial
    end subroutine locator_locate
 
    !> The earliest time in (t_a, t_b) - the step from the marked state to
@@ -296,7 +449,7 @@ contains
    !! way, at most max_dense_tries times in all; then the caller's
    !! regula falsi goes on from the bracket (done false). Each try is a
    !! step taken again (stats%retaken).
-   subroutine locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, done)
+   subroutine locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, done, short)
       type(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
@@ -306,24 +459,48 @@ contains
       real(wp), intent(inout) :: t
       real(wp), intent(inout), contiguous :: y(:)
       logical, intent(out) :: done
+      logical, intent(out) :: short     !< a step taken again ended short of the time asked
       type(error_t) :: retry
-      real(wp) :: t_to
+      real(wp) :: t_to, t_b
       integer :: j
+      logical :: current
       done = .false.
+      short = .false.
       this%g_shift = 0.0_wp
+      this%g_end = this%g_hi
+      t_b = t_end
       do j = 1, max_dense_tries
-         t_to = interpolant_crossing(this, sys, stepper, t_lo, t_end, tol_t, stepper%stats, .true.)
+         t_to = interpolant_crossing(this, sys, stepper, t_lo, t_b, tol_t, stepper%stats, .true.)
          t_to = t_to + 0.5_wp*tol_t
-         if (.not. (t_to > t_lo .and. t_to < t_end)) return
-         call step_again(this, sys, stepper, t_to, t, y, retry)
+         if (.not. (t_to > t_lo .and. t_to < t_b)) exit
+         call step_again(this, sys, stepper, t_to, t, y, retry, short, current, allow_trial=j < max_dense_tries)
          current_is_hi = .false.
-         if (retry%failed()) return
+         if (retry%failed()) exit
+         if (stepper%trial_offered) then
+            ! the step to the switch was rejected: the trajectory crosses
+            ! earlier than the extension said (a jump inside the step).
+            ! When this shorter trial crosses, its own extension (nearer
+            ! the trajectory) is searched next; otherwise short
+            call stepper%dense(stepper%t_trial, this%y_work)
+            call switch_values(sys, stepper%t_trial, this%y_work, this%g_dt, stepper%stats, this%rates, this%counts)
+            short = .true.
+            if (.not. any(this%live .and. crossed(this%g_lo, this%g_dt))) exit
+            ! (a try of the location, counted as taken again, not rejected)
+            stepper%stats%rejected = stepper%stats%rejected - 1
+            stepper%stats%retaken = stepper%stats%retaken + 1
+            t_b = stepper%t_trial
+            this%g_hi = this%g_dt
+            this%g_shift = 0.0_wp
+            short = .false.
+            cycle
+         end if
+         if (short) exit
          call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
          if (any(this%live .and. passed(this%g_prev, this%g_try))) then
             t_hi = t
             this%g_hi = this%g_try
             this%y_hi = y
-            current_is_hi = .true.
+            current_is_hi = current
             done = .true.
             return
          end if
@@ -335,6 +512,8 @@ contains
          call switch_values(sys, t, this%y_work, this%g_shift, stepper%stats, this%rates, this%counts)
          this%g_shift = this%g_try - this%g_shift
       end do
+      ! (the caller's bracket ends at the step's end)
+      this%g_hi = this%g_end
    end subroutine locate_on_dense
 
    !> The earliest time in (t_a, t_b) (t_a: the marked state's time or a
@@ -401,7 +580,11 @@ contains
 
    !> The step taken again from the marked state to t_to, into (t, y); the
    !! step taken before is not kept (counted as taken again, stats%retaken).
-   subroutine step_again(this, sys, stepper, t_to, t, y, err)
+   !! With a hop, the step ends hop short of t_to and y goes on to t_to on
+   !! its slope there (an error of hop times the jump of y' at most, far
+   !! below the tolerance); current: the stepper's f is y' at (t, y) (no
+   !! hop). short: the stepper rejected the step and ended before t_to.
+   subroutine step_again(this, sys, stepper, t_to, t, y, err, short, current, allow_trial)
       type(switch_locator_t), intent(in) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
@@ -409,6 +592,17 @@ contains
       real(wp), intent(out) :: t
       real(wp), intent(out), contiguous :: y(:)
       type(error_t), intent(inout) :: err
+      logical, intent(out), optional :: short, current
+      !> a trial of the step rejected is offered to the caller (the
+      !! stepper back at the marked state, stepper%trial_offered; short);
+      !! otherwise the stepper shortens the step itself
+      logical, intent(in), optional :: allow_trial
+      real(wp) :: hop, t_stop
+      logical :: offers
+      hop = min(this%hop, 0.5_wp*(t_to - this%t_prev))
+      t_stop = t_to - hop
+      if (present(short)) short = .false.
+      if (present(current)) current = .true.
       y = this%y_prev
       t = this%t_prev
       stepper%stats%steps = stepper%stats%steps - 1
@@ -417,8 +611,20 @@ contains
       stepper%stats%h_max = this%stats_prev%h_max
       ! (y' there is known: f_prev, with the memory unchanged since)
       call stepper%resume(sys, t, y, this%f_prev, err)
-      if (.not. err%failed()) call stepper%retake(sys, t, y, t_to, err)
-      if (err%failed()) stepper%stats%steps = stepper%stats%steps + 1
+      offers = stepper%offers_trials
+      stepper%offers_trials = offers .and. present(allow_trial)
+      if (stepper%offers_trials) stepper%offers_trials = allow_trial
+      if (.not. err%failed()) call stepper%retake(sys, t, y, t_stop, err)
+      stepper%offers_trials = offers
+      if (err%failed()) then
+         stepper%stats%steps = stepper%stats%steps + 1
+      else if (t < t_stop) then
+         if (present(short)) short = .true.
+      else if (hop > 0.0_wp) then
+         y = y + (t_to - t)*stepper%f
+         t = t_to
+         if (present(current)) current = .false.
+      end if
    end subroutine step_again
 
    !> Keep the step from the marked state to t_keep (state y_keep) as the
