@@ -157,7 +157,7 @@ contains
       if (ios == 0) write (unit, '(a/2x,6i10)', iostat=ios) '*OPTIONS', m%options%nbody, m%options%nbelt, &
          m%options%nend, m%options%nload, m%options%nout, nint
       if (ios == 0) write (unit, '(a/2x,3es10.3,es10.3,i10,2es10.3)', iostat=ios) '*TIME', t_max, dt, dt_print, &
-         m%time%corrector_tol, m%time%corrector_max_iter, rtol, m%time%atol
+         m%time%corrector_tol, m%time%corrector_max_iter, rtol, 1.0e-2_wp*rtol   ! (ATOL: the decks' ratio)
       if (ios == 0) close (unit, iostat=ios)
       if (ios /= 0) then
          err%code = 4
