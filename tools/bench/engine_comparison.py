@@ -64,6 +64,8 @@ except ImportError:
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOP = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.dirname(HERE))
+import hsri2d_runs as runs  # noqa: E402  (tools/: the deck's fields)
 G = 386.088           # in/s^2
 DT, N_STEP = 1.0e-4, 2000
 
@@ -323,7 +325,7 @@ def smooth_deck(text):
 
 def with_time(text, dt=None, rtol=None):
     """The deck with its *TIME card's DT (RK4) or RTOL (Dormand-Prince, ATOL = RTOL/100)
-    and its *OPTIONS NINT set."""
+    and its *OPTIONS NINT set (the fields of tools/hsri2d_runs.py)."""
     out, group, card = [], None, 0
     for line in text.splitlines():
         if line.startswith("*"):
@@ -331,15 +333,13 @@ def with_time(text, dt=None, rtol=None):
         elif group in ("*TIME", "*OPTIONS") and line.strip() and not line.startswith("$"):
             card += 1
             if card == 1 and group == "*OPTIONS":
-                line = line.ljust(62)[:52] + f"{2 if dt else 3:10d}" + line.ljust(62)[62:]   # NINT, 53-62
+                line = runs.NINT.put(line, "2" if dt else "3").rstrip()
             if card == 1 and group == "*TIME":
-                # the fields TMAX ... ATOL in columns 3-12, 13-22, ...
-                f = [line.ljust(72)[2 + 10 * i:12 + 10 * i] for i in range(7)]
                 if dt:
-                    f[1] = f" {dt:9.4g}"
+                    line = runs.DT.put(line, runs.number_text(dt))
                 else:
-                    f[5], f[6] = f"{rtol:10.1e}", f"{rtol / 100:10.1e}"
-                line = line[:2] + "".join(f)
+                    line = runs.ATOL.put(runs.RTOL.put(line, runs.number_text(rtol)), runs.number_text(runs.tidy(rtol / 100)))
+                line = line.rstrip()
         out.append(line)
     return "\n".join(out) + "\n"
 
