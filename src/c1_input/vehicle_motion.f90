@@ -19,6 +19,7 @@ module vehicle_motion
    private
 
    public :: vehicle_motion_t, vehicle_state_t, vehicle_motion_init, vehicle_state_at, vehicle_table_differences
+   public :: vehicle_kinks
 
    !> The motion of one coordinate (x_c, y_c or Phi).
    type :: axis_t
@@ -217,6 +218,60 @@ contains
          end associate
       end do
    end function vehicle_state_at
+
+   !> Issue 15: the times in (0, t_max) where the vehicle's motion is not
+   !! smooth - a knot of a table the motion uses (a moving axis's) where its
+   !! slope changes: the acceleration kinks there (the inertial forces'
+   !! slope jumps), a tabulated rate kinks, a tabulated position's rate
+   !! jumps. Increasing, each once; a knot where every slope goes on (a
+   !! plateau, a straight piece cut in two) is none. The run steps onto
+   !! each (print_schedule), as onto a located switch.
+   pure function vehicle_kinks(vm, t_max) result(tk)
+      type(vehicle_motion_t), intent(in) :: vm
+      real(wp), intent(in) :: t_max
+      real(wp), allocatable :: tk(:)
+      real(wp), allocatable :: times(:)
+      integer :: j, k, n
+      allocate (times(0))
+      do j = 1, 3
+         associate (ax => vm%axis(j))
+            if (.not. ax%moves) cycle
+            ! (after the last knot the acceleration holds: slope 0)
+            call add(vm%ta, ax%acc_slope, times)
+            if (ax%rate_given) call add(vm%tv, ax%vel_slope, times)
+            if (ax%pos_given) call add(vm%tx, ax%pos_slope, times)
+         end associate
+      end do
+      ! sorted (each table's knots are), each time once
+      n = size(times)
+      do k = 2, n
+         j = k
+         do while (j > 1)
+            if (.not. times(j - 1) > times(j)) exit
+            times(j - 1:j) = [times(j), times(j - 1)]
+            j = j - 1
+         end do
+      end do
+      allocate (tk(0))
+      do k = 1, n
+         if (k > 1) then
+            if (.not. times(k) > times(k - 1)) cycle
+         end if
+         tk = [tk, times(k)]
+      end do
+   contains
+      !> The knots t(i), 1 < i, of a table whose slopes sl(i - 1) and sl(i)
+      !! differ, inside (0, t_max), added to list.
+      pure subroutine add(t, sl, list)
+         real(wp), intent(in) :: t(:), sl(:)
+         real(wp), allocatable, intent(inout) :: list(:)
+         integer :: i
+         do i = 2, size(t)
+            if (.not. (t(i) > 0.0_wp .and. t(i) < t_max)) cycle
+            if (abs(sl(i - 1) - sl(i)) > 0.0_wp) list = [list, t(i)]
+         end do
+      end subroutine add
+   end function vehicle_kinks
 
    !> The knot interval holding t: t(k) <= t < t(k+1), or the last knot
    !! beyond the table (k = size) and the first before it.

@@ -91,6 +91,7 @@ contains
       allocate (this%f(n), this%f1(n), this%f2(n), this%f3(n), this%ynew(n), this%yold(n), &
                 this%fnew(n), this%ytmp(n), this%y_failed(n), this%local_error(n))
       this%local_error = 0.0_wp
+      this%multistep = .true.
       call am_begin(this, sys, t0, y0, err)
    end subroutine am_init
 
@@ -270,6 +271,7 @@ contains
                end if
             end do
          end associate
+         this%stats%corrector_solves = this%stats%corrector_solves + 1
          if (.not. converged) this%stats%corrector_at_limit = this%stats%corrector_at_limit + 1
          ok = .true.
       end function correct

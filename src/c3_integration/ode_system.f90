@@ -53,10 +53,15 @@ module ode_system
       integer(i8) :: rejected = 0           !< rejected trial steps (adaptive)
       integer(i8) :: evaluations = 0        !< right-hand-side evaluations
       integer(i8) :: corrector_iterations = 0 !< corrector passes (Adams-Moulton, modified Euler)
-      integer(i8) :: corrector_at_limit = 0 !< steps whose corrector reached the iteration limit
+      !> corrector solves (one per step taken, also a step taken again to
+      !! locate a switch; Adams-Moulton, modified Euler)
+      integer(i8) :: corrector_solves = 0
+      integer(i8) :: corrector_at_limit = 0 !< solves that reached the iteration limit
       integer(i8) :: restarts = 0           !< calls of restart (init is not counted)
       integer(i8) :: switches_located = 0   !< accepted states placed just past a switch (issue 15)
       integer(i8) :: retaken = 0            !< steps taken again to locate a switch (not rejected ones)
+      !> accepted states on a kink of the vehicle's motion inside a step (issue 15; print_schedule)
+      integer(i8) :: kinks = 0
       !> switches found at once after the last, taken at the step's end (chatter)
       integer(i8) :: switches_unlocated = 0
       integer(i8) :: switch_evaluations = 0 !< evaluations of the effects' switching functions
@@ -90,6 +95,10 @@ module ode_system
       !! step. Set by the caller that locates switches.
       logical :: offers_trials = .false.
       logical :: trial_offered = .false.
+      !> a multistep method (Adams-Moulton): its steps lean on back values,
+      !! so it restarts to step onto a kink of the forcing and again after
+      !! it (issue 15; print_schedule)
+      logical :: multistep = .false.
       real(wp) :: t_trial = 0.0_wp
    contains
       procedure(init_interface), deferred :: init

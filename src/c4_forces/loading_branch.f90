@@ -135,10 +135,17 @@ contains
       type(branch_point_t), intent(out) :: bp
       real(wp), intent(inout), optional :: xi0, xp0
       real(wp) :: xi, span, dm, d, fe, se, xp, u, p
-      if (law%elastic .or. .not. mem%unloading .or. x >= mem%delta_max) then
+      if (law%elastic .or. .not. mem%unloading .or. (law%plastic .and. x >= mem%delta_max)) then
          ! the loading curve of cycle n: F_e(x - eps_n)
          bp%loading = .true.
          d = x - mem%eps
+      else if (x >= mem%delta_max) then
+         ! beyond the turning point, until an accepted state reloads: the
+         ! unloading curve's tangent (recurrent_loading's unloading_tangent)
+         bp%loading = .false.
+         bp%force = mem%f_max + mem%s_max*(x - mem%delta_max)
+         bp%slope = mem%s_max
+         return
       else if (law%plastic .or. .not. x > mem%delta_zero) then
          bp%loading = .false.
          bp%force = 0.0_wp

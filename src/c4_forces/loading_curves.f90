@@ -35,7 +35,7 @@ module loading_curves
    public :: loading_curve_t, curve_none, curve_polynomial, curve_table, max_order
    public :: curve_is_defined, curve_elastic_force, curve_rate_force, curve_force
    public :: curve_energy, curve_moment, curve_deflection_at, curve_check, curve_flat_extent
-   public :: polynomial_minimum, table_interval, curve_max_slope, curve_kinks_about
+   public :: polynomial_minimum, table_interval, curve_max_slope, curve_kinks_about, curve_elastic_slope
 
 contains
 
@@ -93,6 +93,28 @@ contains
       end select
       f = max(f, 0.0_wp)   ! a curve that passed curve_check is >= 0 already
    end function curve_elastic_force
+
+   !> dF_e/dd at d (the right derivative at a table's point); 0 for d <= 0
+   !! and where F_e is clipped at 0 (curve_elastic_force).
+   pure real(wp) function curve_elastic_slope(c, d) result(k)
+      type(loading_curve_t), intent(in) :: c
+      real(wp), intent(in) :: d
+      integer :: n
+      real(wp) :: f
+      k = 0.0_wp
+      if (.not. d > 0.0_wp) return
+      select case (c%form)
+      case (curve_polynomial)
+         f = 0.0_wp
+         do n = c%order, 1, -1
+            k = k*d + f + c%sigma(n)
+            f = (f + c%sigma(n))*d
+         end do
+      case (curve_table)
+         k = slope(c, table_interval(c%defl, d))
+      end select
+      k = max(k, 0.0_wp)
+   end function curve_elastic_slope
 
    !> The rate part F_v(v) = sum_k sigma_{N+k} |v|**(k-1) v (loading.md 2):
    !! the sign of v, so that it always dissipates.

@@ -45,7 +45,7 @@
 module recurrent_loading
    use kinds, only: wp
    use loading_parameters, only: recurrent_check, ratio_slack
-   use loading_curves, only: loading_curve_t, curve_elastic_force, curve_rate_force, curve_energy, &
+   use loading_curves, only: loading_curve_t, curve_elastic_force, curve_elastic_slope, curve_rate_force, curve_energy, &
       curve_moment, curve_deflection_at, curve_flat_extent, curve_is_defined
    use model, only: materials_section_t, loading_section_t
    implicit none
@@ -82,6 +82,10 @@ module recurrent_loading
       real(wp) :: eps = 0.0_wp             !< eps_n, residual deformation: origin of the loading curve
       real(wp) :: delta_max = 0.0_wp       !< the turning point (maximum deformation of the cycle)
       real(wp) :: f_max = 0.0_wp           !< F_e(delta_max - eps_n), the force there
+      !> the unloading curve's slope at delta_max: beyond it, until an accepted
+      !! state reloads, the branch is the unloading curve's tangent there
+      !! (unloading_tangent; issue 15)
+      real(wp) :: s_max = 0.0_wp
       real(wp) :: delta_zero = 0.0_wp      !< eps_n + G (delta_max - eps_n): end of the unloading curve
       real(wp) :: p = 0.0_wp               !< exponent of the unloading curve
       real(wp) :: delta_x = 0.0_wp         !< where cycle n began (point x of figure 18)
@@ -138,10 +142,12 @@ contains
       real(wp), intent(in) :: delta, delta_dot
       type(loading_point_t) :: pt
       real(wp) :: xi
-      if (law%elastic .or. .not. mem%unloading .or. delta >= mem%delta_max) then
-         ! the loading curve of cycle n (also beyond the turning point: continuous there)
+      if (law%elastic .or. .not. mem%unloading .or. (law%plastic .and. delta >= mem%delta_max)) then
+         ! the loading curve of cycle n (a plastic law's beyond its turning point)
          pt%loading = .true.
          pt%branch = curve_elastic_force(law%curve, delta - mem%eps)
+      else if (delta >= mem%delta_max) then
+         pt%branch = unloading_tangent(mem, delta)
       else if (law%plastic .or. .not. delta > mem%delta_zero) then
          pt%branch = 0.0_wp
       else
@@ -195,13 +201,33 @@ contains
       if (.not. curve_is_defined(law%curve)) return
       if (law%elastic .or. .not. mem%unloading) then
          e = curve_energy(law%curve, delta - mem%eps) - mem%e_spent
-      else if (delta >= mem%delta_max) then
+      else if (delta >= mem%delta_max .and. law%plastic) then
          e = unloading_area(law, mem, mem%delta_max) + curve_energy(law%curve, delta - mem%eps) &
              - curve_energy(law%curve, mem%delta_max - mem%eps)
+      else if (delta >= mem%delta_max) then
+         ! the area under the tangent beyond delta_max (unloading_tangent)
+         e = unloading_area(law, mem, mem%delta_max) + (delta - mem%delta_max)*(mem%f_max &
+             + 0.5_wp*mem%s_max*(delta - mem%delta_max))
       else
          e = unloading_area(law, mem, delta)
       end if
    end function recurrent_stored
+
+   !> Issue 15: the branch of an unloading element (not plastic) beyond its
+   !! turning point, until an accepted state there returns it to its loading
+   !! curve (recurrent_accept): the unloading curve's tangent at delta_max,
+   !! f_max + s_max (delta - delta_max). Only a trial state gets there - a
+   !! Runge-Kutta stage just after a located turn, a Newton iterate - since
+   !! the driver locates the return at delta_max (loading_branch's
+   !! branch_kinks); read as the loading curve, such a stage would cross the
+   !! kink at delta_max (30 times the slope where a stiff structure unloads)
+   !! inside the step. Linear, not the unloading curve itself, whose xi**p
+   !! overflows far beyond xi = 1 for a large p.
+   pure real(wp) function unloading_tangent(mem, delta) result(f)
+      type(loading_memory_t), intent(in) :: mem
+      real(wp), intent(in) :: delta
+      f = mem%f_max + mem%s_max*(delta - mem%delta_max)
+   end function unloading_tangent
 
    !> The area under the unloading curve from delta_0 to delta (delta <=
    !! delta_max): with v = t d_max, the integral of F_e(t d_max) t**p over
@@ -297,6 +323,10 @@ contains
       mem%f_max = fm
       mem%delta_zero = mem%eps + law%g*d
       mem%p = unloading_exponent(law, d)
+      ! the unloading curve's slope at xi = 1: (F_e'(d) d + F_e(d) p)/span
+      mem%s_max = 0.0_wp
+      if (.not. law%plastic .and. delta - mem%delta_zero > 0.0_wp) &
+         mem%s_max = (curve_elastic_slope(law%curve, d)*d + fm*mem%p)/(delta - mem%delta_zero)
       mem%x_hold = delta
       mem%e_spent = 0.0_wp
       mem%e_dissipated = mem%e_dissipated + (e_before - recurrent_stored(law, mem, delta))

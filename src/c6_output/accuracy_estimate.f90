@@ -200,11 +200,15 @@ contains
 
    !> The warnings of a fixed-step run of step dt whose estimates acc (of
    !! the occupant `who`: '' when it is alone) at its end t_end exceed their
-   !! thresholds; a_peak: the head's peak acceleration (in/s^2).
-   function accuracy_warnings(acc, who, a_peak, t_end, dt) result(w)
+   !! thresholds; a_peak: the head's peak acceleration (in/s^2). failed: the
+   !! run ended at t_end in a numerical failure, where the estimates end too
+   !! (a divergence the estimates had not yet seen grow): then, if they are
+   !! within their thresholds, the step is named as its likely cause.
+   function accuracy_warnings(acc, who, a_peak, t_end, dt, failed) result(w)
       type(accuracy_t), intent(in) :: acc
       character(len=*), intent(in) :: who
       real(wp), intent(in) :: a_peak, t_end, dt
+      logical, intent(in), optional :: failed
       type(string_t), allocatable :: w(:)
       real(wp) :: angle, rel, ratio
       integer :: j
@@ -213,7 +217,15 @@ contains
       j = acc%worst_joint(t_end)
       angle = acc%joint_angle(j, t_end)
       rel = acc%head_relative(a_peak)
-      if (angle <= angle_threshold .and. rel <= head_threshold) return
+      if (angle <= angle_threshold .and. rel <= head_threshold) then
+         if (present(failed)) then
+            if (failed) call append_string(w, who//'the integration failed at t = '//num(t_end, 4) &
+                                           //' s, its estimates within their thresholds until then: DT = ' &
+                                           //num(dt)//' s (*TIME) is too large for this deck; try DT = ' &
+                                           //num(suggested_step(dt, 2.0_wp))//' s (docs/accuracy.md)')
+         end if
+         return
+      end if
       ! the factor the step must fall by: the truncation's part falls as
       ! DT^3 (an embedded estimate of order 3, docs/accuracy.md), the
       ! switches' and (measured) the head's in proportion to DT
@@ -240,7 +252,9 @@ contains
       w = ''
       if (stats%corrector_at_limit <= 0) return
       w = 'the corrector reached its iteration limit CITER = '//itoa(citer)//' on ' &
-          //count_text(stats%corrector_at_limit)//' of '//count_text(stats%steps)//' steps without its successive ' &
+          //count_text(stats%corrector_at_limit)//' of '//count_text(stats%corrector_solves) &
+          //' corrector solves (one per step taken, also where a step was taken again to locate a switch) ' &
+          //'without its successive ' &
           //'approximations agreeing within CTOL = '//num(ctol)//' (*TIME): those steps are not the ' &
           //'Adams-Moulton solution; a larger CITER, or a smaller DT (the iteration converges faster), ' &
           //'should help (docs/accuracy.md)'

@@ -447,9 +447,11 @@ contains
             call count_line('  switches not located (chatter)', st%switches_unlocated)
             call count_line('  switch-function evaluations', st%switch_evaluations)
          end if
+         if (st%kinks > 0) call count_line('  steps onto the pulse''s kinks', st%kinks)
          if (m%options%nint == nint_adams) then
             call count_line('  corrector iterations       ', st%corrector_iterations)
-            call count_line('  steps at the iteration limit', st%corrector_at_limit)
+            call count_line('  corrector solves           ', st%corrector_solves)
+            call count_line('  solves at the iteration limit', st%corrector_at_limit)
             ev = corrector_warning(st, m%time%corrector_tol, m%time%corrector_max_iter)
             if (len(ev) > 0) call lst%put('  WARNING: '//ev, indent=11)
          end if
@@ -530,7 +532,8 @@ contains
                          //',  evaluations for the head''s estimate'//right_int(a%head_evaluations, 8))
             call lst%put('  thresholds: '//fixed(angle_threshold/deg, 4, 1)//' deg on a joint angle, ' &
                          //fixed(100.0_wp*head_threshold, 4, 1)//' % of the peak head acceleration')
-            w = accuracy_warnings(a, '', os%head_max%value, res%t_end, m%time%dt)
+            w = accuracy_warnings(a, '', os%head_max%value, res%t_end, m%time%dt, &
+                                  failed=res%end_reason == end_failure .or. res%end_reason == end_energy)
             if (size(w) == 0) call lst%put('  within the thresholds')
             ! what the estimate cannot see (docs/accuracy.md)
             if (allocated(res%events) .and. o == 1) then

@@ -16,6 +16,7 @@ module run_case_mod
    use run_loop, only: run_t
    use sink_list, only: sink_list_t
    use run_summary, only: run_summary_t
+   use end_tests, only: end_failure, end_energy
    use output_registry, only: output_registry_t, output_frame_t
    use output_sink, only: output_sink_t
    use equations_of_motion, only: crash_system_t
@@ -189,7 +190,8 @@ contains
       do o = 1, size(res%occ)
          who = ''
          if (size(res%occ) > 1) who = 'occupant '//itoa(o)//': '
-         accuracy = accuracy_warnings(res%occ(o)%accuracy, who, res%occ(o)%head_max%value, res%t_end, m%time%dt)
+         accuracy = accuracy_warnings(res%occ(o)%accuracy, who, res%occ(o)%head_max%value, res%t_end, m%time%dt, &
+                                      failed=res%end_reason == end_failure .or. res%end_reason == end_energy)
          do k = 1, size(accuracy)
             call append_string(notes, accuracy(k)%s)
          end do

@@ -91,7 +91,7 @@ contains
       this%t = 0.0_wp
       call this%books%init(this%sys, this%t, this%y, m%numerics, m%vehicle, this%summary)
       total0 = this%summary%occ%e_total0    ! (the energy totals the balances are measured from)
-      call this%schedule%init(m%time, tr, m%vehicle, this%sys, total0)
+      call this%schedule%init(m%time, tr, m%vehicle, this%sys, total0, m%options%locate_switches)
       call this%stepper%init(this%sys, this%t, this%y, why)
       if (why%failed()) then
          ! no derivative at t = 0: the outputs say so and hold no time history
@@ -120,11 +120,23 @@ contains
    subroutine run_advance(this)
       class(run_t), intent(inout) :: this
       real(wp) :: t_limit, t_step_end
+      real(wp), allocatable :: f_here(:)
       logical :: located, at_end, print_now
       integer :: reason
       type(error_t) :: why
       if (this%is_done()) return
       call this%schedule%next_limit(this%t, t_limit)
+      ! a multistep method steps onto a kink of the vehicle's motion inside
+      ! its step from a start (its start steps may end anywhere)
+      if (this%schedule%limit_is_kink .and. this%stepper%multistep) then
+         f_here = this%stepper%f
+         call this%stepper%resume(this%sys, this%t, this%y, f_here, why)
+         if (why%failed()) then
+            call record_failure(why, this%t, this%summary, this%err)
+            this%reason = end_failure
+            return
+         end if
+      end if
       if (this%switches%on) call this%switches%mark(this%t, this%y, this%stepper%f, this%stepper%stats)
       call this%stepper%advance(this%sys, this%t, this%y, t_limit, why)
       located = .false.
@@ -165,9 +177,13 @@ contains
       else
          ! whether TMAX is reached here is known before the step's memory
          ! updates, so that no restart is made for a step that ends the run
+         ! (a step to a kink of the vehicle's motion inside the grid's step
+         ! is none of the grid, nor one to a print time; step_taken)
+         if (this%schedule%limit_is_kink .and. this%schedule%kink_reached(this%t)) &
+            this%stepper%stats%kinks = this%stepper%stats%kinks + 1
          call this%schedule%step_taken(this%t, t_limit, at_end, print_now)
          call this%books%accept(this%sys, this%stepper, this%t, this%y, at_end, this%summary, this%sinks, &
-                                reason, this%err)
+                                reason, this%err, kink=this%schedule%kink_reached(this%t))
          if (at_end .and. reason == end_none) reason = end_time
          if (print_now .or. reason /= end_none) call output_frame(this)
       end if

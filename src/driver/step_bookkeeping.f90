@@ -123,7 +123,7 @@ contains
    !! whose NEND asks for it, or when every occupant whose NEND asks for
    !! rest has rested for its THOLD; end_failure when the restart fails
    !! (err: why). Events go to the summary and the sinks.
-   subroutine books_accept(this, sys, stepper, t, y, last, summary, sinks, reason, err)
+   subroutine books_accept(this, sys, stepper, t, y, last, summary, sinks, reason, err, kink)
       class(step_books_t), intent(inout) :: this
       type(crash_system_t), intent(inout) :: sys
       class(stepper_t), intent(inout) :: stepper
@@ -134,6 +134,9 @@ contains
       type(sink_list_t), intent(inout) :: sinks
       integer, intent(out) :: reason
       type(error_t), intent(inout) :: err
+      !> the vehicle's motion kinks at t (print_schedule): a multistep
+      !! method restarts, its back values spanning the kink
+      logical, intent(in), optional :: kink
       type(accept_result_t) :: ar
       type(error_t) :: why
       real(wp) :: a_head, a_chest, delta, h, dzdd(n_dof)
@@ -215,6 +218,7 @@ contains
       if (.not. allocated(this%rates)) allocate (this%rates(size(y)), this%counts(size(sys%counts, 1)))
       call system_settle(sys, t, y, settled, this%rates, this%counts)
       restart = restart .or. settled
+      if (present(kink)) restart = restart .or. (kink .and. stepper%multistep)
       if (restart) then
          ! the derivative at the accepted point is kept, for the frame of a
          ! restart that fails
