@@ -58,7 +58,7 @@ module model
    !> Integration option (C.3).
    integer, parameter :: nint_adams = 1, nint_rk4 = 2, nint_dopri = 3
    character(len=40), parameter :: integrator_name(3) = [character(len=40) :: &
-      'Adams-Moulton PECE, modified-Euler start', 'classic Runge-Kutta 4, fixed step', &
+      'Adams-Moulton predictor-corrector', 'classic Runge-Kutta 4, fixed step', &
       'Dormand-Prince 5(4), adaptive']
 
    !> End-of-program option NEND (C.7).
