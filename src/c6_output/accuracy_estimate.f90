@@ -292,7 +292,7 @@ contains
       end do
       if (n_pairs == 0) return
       w = 'the fixed step widened the friction ramps of '//itoa(n_pairs)//' contact pair(s) (from t = ' &
-          //num(t_first)//' s, at first up to '//num(factor, 3)//' times XI; D-C18b): their friction is a ' &
+          //num(t_first, 4)//' s, at first up to '//num(factor, 3)//' times XI; D-C18b): their friction is a ' &
           //'damper too stiff for DT, and the answer depends on DT beyond the estimates; Dormand-Prince ' &
           //'(NINT = 3) resolves it, or a DT that widens no ramp (docs/accuracy.md)'
    end function widened_ramp_warning
