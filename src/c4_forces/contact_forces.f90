@@ -38,7 +38,8 @@ module contact_forces
    use contact_chain_switches, only: chain_switch_count, chain_take_up, chain_switch_values
    use recurrent_loading, only: recurrent_law_t
    use series_chain, only: series_chain_t, chain_split_t, chain_split, split_ok, chain_split_text, chain_new, &
-      chain_accept, chain_energies, chain_n_aux, chain_set_initial, chain_relaxing, chain_stateful_any, max_chain
+      chain_accept, chain_energies, chain_n_aux, chain_set_initial, chain_relaxing, chain_stateful_any, max_chain, &
+      chain_slack_split
    use dead_band, only: ramp_of
    implicit none
    private
@@ -287,6 +288,8 @@ contains
       real(wp), intent(in) :: aux(:)              !< the pair's (the chain's states)
       type(pair_state_t), intent(out) :: ps
       real(wp) :: c, s
+      ! (pair_geometry's lines, kept in line here: the right-hand side's
+      ! full path, where a call of its own cost more than it saved)
       ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
       c = 1.0_wp
       s = st%vehicle%pos(3)
@@ -312,6 +315,25 @@ contains
       ! once it reaches xi, in proportion to it below
       ps%p_t = this%mu*ps%split%force*ramp_of(ramp_width(this, ps%split%force), ps%cs%v_t)
    end subroutine pair_eval
+
+   !> pair_eval's geometry (its first lines, the same operations): the body
+   !! point (f.1) and figure 22's check at st into ps%f, ps%cs; c, s: the
+   !! vehicle's pitch's cosine and sine.
+   pure subroutine pair_geometry(this, st, ps, c, s)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      type(pair_state_t), intent(inout) :: ps
+      real(wp), intent(out) :: c, s
+      ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
+      c = 1.0_wp
+      s = st%vehicle%pos(3)
+      if (abs(st%vehicle%pos(3)) > 0.0_wp) then
+         c = cos(st%vehicle%pos(3))
+         s = sin(st%vehicle%pos(3))
+      end if
+      ps%f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
+      ps%cs = contact_check(ps%f, this%surface, this%behind, this%tk, this%face)
+   end subroutine pair_geometry
 
    !> D-C18b: a lower bound of the effective mass of body point i's contact
    !! point: that of the point on its segment as a free body, 1/(1/m +
@@ -594,9 +616,23 @@ contains
       type(pair_state_t) :: ps
       real(wp) :: s, s_dot, u, w
       integer :: j
+      real(wp) :: c_pitch, s_pitch
+      logical :: slack
       associate (u1 => size(extra))
       end associate
-      call pair_eval(this, st, aux, ps)
+      ! issue 16 section 4: a pair pair_far proves slack (delta < 0 whatever
+      ! the memory) with a chain without states needs no split: chain_split
+      ! would give chain_slack_split's (the same bits); the geometry, which
+      ! the switching functions' values read, is pair_eval's
+      slack = .false.
+      if (this%exit_far) then
+         if (pair_far(this, st)) call chain_slack_split(this%chain, ps%split, slack)
+      end if
+      if (slack) then
+         call pair_geometry(this, st, ps, c_pitch, s_pitch)
+      else
+         call pair_eval(this, st, aux, ps)
+      end if
       s = ps%cs%delta
       s_dot = ps%cs%delta_dot
       if (this%shattered) then             ! (pair_eval's split: nothing carried)

@@ -67,7 +67,7 @@ module series_chain
 
    public :: max_chain, series_chain_t, chain_split_t, chain_new, chain_split, chain_accept, chain_energies
    public :: chain_set_initial, chain_relaxing, chain_split_text, chain_gates, chain_n_aux, chain_stateful
-   public :: chain_stateful_any, chain_n_switch, chain_switches, chain_track_kinks
+   public :: chain_stateful_any, chain_slack_split, chain_n_switch, chain_switches, chain_track_kinks
    public :: split_ok, split_no_convergence, split_not_finite
    public :: path_none, path_pair, path_newton, path_search, region_slack, region_unloaded, region_loaded
 
@@ -212,6 +212,24 @@ contains
          g(i) = bp%force
       end do
    end function chain_gates
+
+   !> chain_split's result at any s <= 0 for a chain without states (ok
+   !! false for one with states, whose slack depends on them), in the fields
+   !! the chain's switching functions read (force, x, gate; the status and
+   !! the region): slack, no force, every element at 0 (split_deformation's
+   !! slack exit), the gates as chain_split sets them. Without the split's
+   !! own work (issue 16 section 4: a contact pair proved slack, pair_switches).
+   pure subroutine chain_slack_split(ch, sp, ok)
+      type(series_chain_t), intent(in) :: ch
+      type(chain_split_t), intent(out) :: sp
+      logical, intent(out) :: ok
+      ok = ch%n_states == 0 .and. ch%absorber == 0
+      sp%x = 0.0_wp
+      sp%rate = 0.0_wp
+      sp%aux_rate = 0.0_wp
+      sp%gate = 0.0_wp
+      if (any(ch%gated(2:ch%n))) sp%gate = chain_gates(ch)
+   end subroutine chain_slack_split
 
    !> The chain at total deformation s (slack taken out) and rate s_dot, its
    !! states in aux (the chain's auxiliary quantities, chain_n_aux of them).
