@@ -27,6 +27,23 @@ def fail(message):
 
 
 hsri2d, tool, decks, work = sys.argv[1:5]
+
+# the choice of the cheapest: CPU times within CPU_TIE of the least are a tie,
+# broken by the fewest evaluations (the tool as a module: no run)
+import importlib.machinery
+import importlib.util
+import types
+loader = importlib.machinery.SourceFileLoader("work_precision_tool", tool)
+wp = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
+loader.exec_module(wp)
+fake = lambda cpu, evals: types.SimpleNamespace(cpu_median=cpu, fig={"evaluations": evals})
+a, b, c = fake(0.0840, 4996), fake(0.0836, 5535), fake(0.0700, 9000)
+if wp.least_cost([a, b]) is not a:
+    fail("CPU times 0.5 % apart: the fewer evaluations should win")
+if wp.least_cost([a, b, c]) is not c:
+    fail("a CPU time 17 % below the others should win whatever its evaluations")
+if wp.least_cost([]) is not None:
+    fail("no candidate: None")
 shutil.rmtree(work, ignore_errors=True)
 tmp, out = os.path.join(work, "tmp"), os.path.join(work, "out")
 os.makedirs(tmp)
