@@ -44,6 +44,11 @@ if wp.least_cost([a, b, c]) is not c:
     fail("a CPU time 17 % below the others should win whatever its evaluations")
 if wp.least_cost([]) is not None:
     fail("no candidate: None")
+# 20 % apart but within the rounds' spreads: a tie
+d = types.SimpleNamespace(cpu_median=0.0825, fig={"evaluations": 4996}, cpu=[0.060, 0.065, 0.08, 0.0825, 0.09, 0.10, 0.11])
+e = types.SimpleNamespace(cpu_median=0.0679, fig={"evaluations": 5535}, cpu=[0.060, 0.062, 0.065, 0.0679, 0.08, 0.09, 0.095])
+if wp.least_cost([d, e]) is not d:
+    fail("medians apart by less than the rounds' spreads: the fewer evaluations should win")
 shutil.rmtree(work, ignore_errors=True)
 tmp, out = os.path.join(work, "tmp"), os.path.join(work, "out")
 os.makedirs(tmp)
