@@ -288,17 +288,7 @@ contains
       real(wp), intent(in) :: aux(:)              !< the pair's (the chain's states)
       type(pair_state_t), intent(out) :: ps
       real(wp) :: c, s
-      ! (pair_geometry's lines, kept in line here: the right-hand side's
-      ! full path, where a call of its own cost more than it saved)
-      ! (a pitch of zero, the sled's, needs no library call: cos 0 = 1, sin 0 = 0)
-      c = 1.0_wp
-      s = st%vehicle%pos(3)
-      if (abs(st%vehicle%pos(3)) > 0.0_wp) then
-         c = cos(st%vehicle%pos(3))
-         s = sin(st%vehicle%pos(3))
-      end if
-      ps%f = body_feature(this%body, st%z, st%zdot, st%vehicle%pos, st%vehicle%vel, this%i, st%c, st%s, c, s)
-      ps%cs = contact_check(ps%f, this%surface, this%behind, this%tk, this%face)
+      call pair_geometry(this, st, ps, c, s)
       ! delta <= 0 is slack: the split gives no force (a contact never pulls);
       ! broken glass carries nothing (D-C24)
       if (this%shattered) then
@@ -316,9 +306,9 @@ contains
       ps%p_t = this%mu*ps%split%force*ramp_of(ramp_width(this, ps%split%force), ps%cs%v_t)
    end subroutine pair_eval
 
-   !> pair_eval's geometry (its first lines, the same operations): the body
-   !! point (f.1) and figure 22's check at st into ps%f, ps%cs; c, s: the
-   !! vehicle's pitch's cosine and sine.
+   !> A pair's geometry (pair_eval's first part; alone on the slack pairs'
+   !! switches' path): the body point (f.1) and figure 22's check at st into
+   !! ps%f, ps%cs; c, s: the vehicle's pitch's cosine and sine.
    pure subroutine pair_geometry(this, st, ps, c, s)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
