@@ -128,9 +128,18 @@ p.send_signal(signal.SIGTERM)
 _, err = p.communicate(timeout=60)
 if p.returncode != 128 + signal.SIGTERM or "stopped by SIGTERM" not in err:
     fail(f"killed: status {p.returncode}, expected {128 + signal.SIGTERM} and a message\n{err}")
-ps = subprocess.run(["ps", "-eo", "args"], capture_output=True, text=True).stdout
-if tmp in ps:
-    fail(f"killed: runs left behind\n{[line for line in ps.splitlines() if tmp in line]}")
+# the processes' command lines from /proc (no ps: procps is not in a minimal Debian)
+left = []
+for pid in filter(str.isdigit, os.listdir("/proc")):
+    try:
+        with open(f"/proc/{pid}/cmdline", "rb") as f:
+            args = f.read().replace(b"\0", b" ").decode(errors="replace")
+    except OSError:
+        continue
+    if tmp in args:
+        left.append(args)
+if left:
+    fail(f"killed: runs left behind\n{left}")
 if os.listdir(tmp):
     fail(f"killed: left behind in its temporary directory: {os.listdir(tmp)}")
 print(f"{NAME}: ok")
