@@ -6,7 +6,7 @@
 !! of belt_shared_deflection (issue 14, item 34).
 module loading_branch
    use kinds, only: wp
-   use loading_curves, only: loading_curve_t, curve_polynomial, curve_table, table_interval, curve_is_defined
+   use loading_curves, only: loading_curve_t, curve_table, curve_is_defined, curve_value_slope
    use recurrent_loading, only: recurrent_law_t, loading_memory_t
    implicit none
    private
@@ -32,69 +32,6 @@ module loading_branch
    end type branch_point_t
 
 contains
-
-   !> F_e(d) and dF_e/dd of a curve at once (the value as loading_curves'
-   !! curve_elastic_force computes it, the right derivative; 0 and 0 for
-   !! d <= 0): one search of a table for both. seg: the table interval to
-   !! try first (0: none), and on return the one used - a search's later
-   !! evaluations mostly fall in the interval of the one before, and the
-   !! interval holding d is unique, so the hint changes nothing but the cost.
-   pure subroutine curve_value_slope(c, d, f, k, seg)
-      type(loading_curve_t), intent(in) :: c
-      real(wp), intent(in) :: d
-      real(wp), intent(out) :: f, k
-      integer, intent(inout) :: seg
-      integer :: n, lo
-      f = 0.0_wp
-      k = 0.0_wp
-      if (.not. d > 0.0_wp) return
-      select case (c%form)
-      case (curve_polynomial)
-         ! Tables 2, 4: F_e = sum sigma_n d**n and its derivative (Horner)
-         do n = c%order, 1, -1
-            k = k*d + f + c%sigma(n)
-            f = (f + c%sigma(n))*d
-         end do
-      case (curve_table)
-         lo = table_interval_from(c%defl, d, seg)
-         seg = lo
-         k = (c%force(lo + 1) - c%force(lo))/(c%defl(lo + 1) - c%defl(lo))
-         f = c%force(lo) + k*(d - c%defl(lo))
-      end select
-      f = max(f, 0.0_wp)
-      k = max(k, 0.0_wp)
-   end subroutine curve_value_slope
-
-   !> The table interval lo (1 <= lo < n) holding d > 0, loading_curves'
-   !! table_interval (the largest lo < n with defl(lo) <= d, 1 if none), found
-   !! by walking from the interval hint (when 1 <= hint < n; a search's next
-   !! evaluation is mostly in the same interval or the next), or for a table
-   !! of up to walk_points points from its first (cheaper than bisection's
-   !! call; table_interval for a longer one without a hint). The interval is
-   !! unique, so the way it is found changes nothing but the cost.
-   pure integer function table_interval_from(defl, d, hint) result(lo)
-      real(wp), intent(in) :: defl(:), d
-      integer, intent(in) :: hint
-      integer, parameter :: walk_points = 16
-      integer :: n
-      n = size(defl)
-      lo = hint
-      if (lo < 1 .or. lo >= n) then
-         if (n > walk_points) then
-            lo = table_interval(defl, d)
-            return
-         end if
-         lo = 1
-      end if
-      do while (lo < n - 1)
-         if (.not. defl(lo + 1) <= d) exit
-         lo = lo + 1
-      end do
-      do while (lo > 1)
-         if (defl(lo) <= d) exit
-         lo = lo - 1
-      end do
-   end function table_interval_from
 
    !> The branch of figure 18 at deformation x with the memory as it stands:
    !! the same selection and force as recurrent_loading's recurrent_eval

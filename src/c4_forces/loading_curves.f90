@@ -35,7 +35,7 @@ module loading_curves
    public :: loading_curve_t, curve_none, curve_polynomial, curve_table, max_order
    public :: curve_is_defined, curve_elastic_force, curve_rate_force, curve_force
    public :: curve_energy, curve_moment, curve_deflection_at, curve_check, curve_flat_extent
-   public :: polynomial_minimum, table_interval, curve_max_slope, curve_kinks_about, curve_elastic_slope
+   public :: polynomial_minimum, table_interval, curve_max_slope, curve_kinks_about, curve_value_slope
 
 contains
 
@@ -94,27 +94,68 @@ contains
       f = max(f, 0.0_wp)   ! a curve that passed curve_check is >= 0 already
    end function curve_elastic_force
 
-   !> dF_e/dd at d (the right derivative at a table's point); 0 for d <= 0
-   !! and where F_e is clipped at 0 (curve_elastic_force).
-   pure real(wp) function curve_elastic_slope(c, d) result(k)
+   !> F_e(d) and dF_e/dd of a curve at once (the value as loading_curves'
+   !! curve_elastic_force computes it, the right derivative; 0 and 0 for
+   !! d <= 0): one search of a table for both. seg: the table interval to
+   !! try first (0: none), and on return the one used - a search's later
+   !! evaluations mostly fall in the interval of the one before, and the
+   !! interval holding d is unique, so the hint changes nothing but the cost.
+   pure subroutine curve_value_slope(c, d, f, k, seg)
       type(loading_curve_t), intent(in) :: c
       real(wp), intent(in) :: d
-      integer :: n
-      real(wp) :: f
+      real(wp), intent(out) :: f, k
+      integer, intent(inout) :: seg
+      integer :: n, lo
+      f = 0.0_wp
       k = 0.0_wp
       if (.not. d > 0.0_wp) return
       select case (c%form)
       case (curve_polynomial)
-         f = 0.0_wp
+         ! Tables 2, 4: F_e = sum sigma_n d**n and its derivative (Horner)
          do n = c%order, 1, -1
             k = k*d + f + c%sigma(n)
             f = (f + c%sigma(n))*d
          end do
       case (curve_table)
-         k = slope(c, table_interval(c%defl, d))
+         lo = table_interval_from(c%defl, d, seg)
+         seg = lo
+         k = (c%force(lo + 1) - c%force(lo))/(c%defl(lo + 1) - c%defl(lo))
+         f = c%force(lo) + k*(d - c%defl(lo))
       end select
+      f = max(f, 0.0_wp)
       k = max(k, 0.0_wp)
-   end function curve_elastic_slope
+   end subroutine curve_value_slope
+
+   !> The table interval lo (1 <= lo < n) holding d > 0, loading_curves'
+   !! table_interval (the largest lo < n with defl(lo) <= d, 1 if none), found
+   !! by walking from the interval hint (when 1 <= hint < n; a search's next
+   !! evaluation is mostly in the same interval or the next), or for a table
+   !! of up to walk_points points from its first (cheaper than bisection's
+   !! call; table_interval for a longer one without a hint). The interval is
+   !! unique, so the way it is found changes nothing but the cost.
+   pure integer function table_interval_from(defl, d, hint) result(lo)
+      real(wp), intent(in) :: defl(:), d
+      integer, intent(in) :: hint
+      integer, parameter :: walk_points = 16
+      integer :: n
+      n = size(defl)
+      lo = hint
+      if (lo < 1 .or. lo >= n) then
+         if (n > walk_points) then
+            lo = table_interval(defl, d)
+            return
+         end if
+         lo = 1
+      end if
+      do while (lo < n - 1)
+         if (.not. defl(lo + 1) <= d) exit
+         lo = lo + 1
+      end do
+      do while (lo > 1)
+         if (defl(lo) <= d) exit
+         lo = lo - 1
+      end do
+   end function table_interval_from
 
    !> The rate part F_v(v) = sum_k sigma_{N+k} |v|**(k-1) v (loading.md 2):
    !! the sign of v, so that it always dissipates.

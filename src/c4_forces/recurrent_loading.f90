@@ -45,7 +45,7 @@
 module recurrent_loading
    use kinds, only: wp
    use loading_parameters, only: recurrent_check, ratio_slack
-   use loading_curves, only: loading_curve_t, curve_elastic_force, curve_elastic_slope, curve_rate_force, curve_energy, &
+   use loading_curves, only: loading_curve_t, curve_elastic_force, curve_value_slope, curve_rate_force, curve_energy, &
       curve_moment, curve_deflection_at, curve_flat_extent, curve_is_defined
    use model, only: materials_section_t, loading_section_t
    implicit none
@@ -314,7 +314,8 @@ contains
       type(loading_memory_t), intent(inout) :: mem
       real(wp), intent(in) :: delta, e_before
       logical, intent(inout) :: changed
-      real(wp) :: d, fm
+      real(wp) :: d, fm, fe, se
+      integer :: seg
       d = delta - mem%eps
       fm = curve_elastic_force(law%curve, d)
       if (.not. fm > 0.0_wp) return
@@ -325,8 +326,11 @@ contains
       mem%p = unloading_exponent(law, d)
       ! the unloading curve's slope at xi = 1: (F_e'(d) d + F_e(d) p)/span
       mem%s_max = 0.0_wp
-      if (.not. law%plastic .and. delta - mem%delta_zero > 0.0_wp) &
-         mem%s_max = (curve_elastic_slope(law%curve, d)*d + fm*mem%p)/(delta - mem%delta_zero)
+      if (.not. law%plastic .and. delta - mem%delta_zero > 0.0_wp) then
+         seg = 0
+         call curve_value_slope(law%curve, d, fe, se, seg)
+         mem%s_max = (se*d + fm*mem%p)/(delta - mem%delta_zero)
+      end if
       mem%x_hold = delta
       mem%e_spent = 0.0_wp
       mem%e_dissipated = mem%e_dissipated + (e_before - recurrent_stored(law, mem, delta))
