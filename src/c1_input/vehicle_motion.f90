@@ -221,9 +221,9 @@ contains
 
    !> Issue 15: the times in (0, t_max) where the vehicle's motion is not
    !! smooth - a knot of a table the motion uses (a moving axis's) where its
-   !! slope changes: the acceleration kinks there (the inertial forces'
-   !! slope jumps), a tabulated rate kinks, a tabulated position's rate
-   !! jumps. Increasing, each once; a knot where every slope goes on (a
+   !! slope changes: the acceleration kinks there (the seat's sliding
+   !! constraint follows it, errata D-5b), a tabulated rate kinks, a
+   !! tabulated position's rate jumps. Increasing, each once; a knot where every slope goes on (a
    !! plateau, a straight piece cut in two) is none. The run steps onto
    !! each (print_schedule), as onto a located switch.
    pure function vehicle_kinks(vm, t_max) result(tk)

@@ -86,7 +86,10 @@ contains
          this%n_steps = nint(time%t_max/tr%h, i8)
          this%print_every = max(1_i8, nint(time%dt_print/tr%h, i8))
       end if
-      if (kinks) then
+      ! (only where an effect reads the vehicle's motion: a body alone, in
+      ! inertial coordinates, does not feel the pulse, and its steps stay
+      ! on the grid)
+      if (kinks .and. sys%needs_vehicle) then
          this%kinks = vehicle_kinks(sys%vm, time%t_max)
       else
          allocate (this%kinks(0))
