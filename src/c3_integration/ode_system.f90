@@ -65,6 +65,9 @@ module ode_system
       !> switches found at once after the last, taken at the step's end (chatter)
       integer(i8) :: switches_unlocated = 0
       integer(i8) :: switch_evaluations = 0 !< evaluations of the effects' switching functions
+      !> effects' (or sliding constraints') switching functions not evaluated
+      !! in a search for a switch, where none of them could cross (issue 16)
+      integer(i8) :: switch_groups_skipped = 0
       real(wp) :: h_min = huge(1.0_wp), h_max = 0.0_wp   !< accepted step sizes
    end type step_stats_t
 

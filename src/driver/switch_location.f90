@@ -15,7 +15,10 @@
 !! together (they all lie behind the state given).
 !!
 !! Only the switching functions of the scene's effects are evaluated
-!! (counted in the stepper's statistics, as evaluations of forces are).
+!! (counted in the stepper's statistics, as evaluations of forces are);
+!! while a switch is searched for, only those of the effects with a
+!! function that crossed over the step, or moved by more than its distance
+!! from zero (issue 16 section 4: the far contact pairs cost nothing there).
 !! The locator changes no effect's memory: nothing was accepted at the
 !! states it passes over.
 module switch_location
@@ -84,6 +87,14 @@ module switch_location
       real(wp), allocatable :: g_da(:), g_db(:), g_dt(:), g_shift(:)
       real(wp), allocatable :: g_end(:)     !< at the step's end (locate_on_dense)
       logical, allocatable :: live(:)       !< the functions that may cross in this step
+      !> the group of each switching function (an effect's, or an occupant's
+      !! sliding constraints'), and the groups searched in this step: those
+      !! with a function that crossed over it (issue 16 section 4)
+      integer, allocatable :: group_of(:)
+      logical, allocatable :: searched(:)
+      !> at the step's end (or the trial's): the values the functions of
+      !! the groups not searched keep through the search (none crossed)
+      real(wp), allocatable :: g_fill(:)
       real(wp) :: t_prev = 0.0_wp          !< the last accepted state before the step
       !> a step taken again with the stepper's continuous extension stops
       !! this much short of its end and crosses the rest on the slope there
@@ -120,18 +131,13 @@ contains
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
       type(step_stats_t), intent(inout) :: stats
-      integer :: o, k, n
-      n = 0
-      do o = 1, size(sys%occupants)
-         do k = 1, size(sys%occupants(o)%effects)
-            n = n + sys%occupants(o)%effects(k)%e%n_switch
-         end do
-         n = n + 2*sys%occupants(o)%n_slide     ! (each sliding constraint's range, occupant_slide_switches)
-      end do
+      integer :: n
+      call switch_groups(sys, this%group_of, this%searched)
+      n = size(this%group_of)
       this%n_g = n
       this%on = relocates .and. n > 0
       if (.not. this%on) return
-      allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%live(n))
+      allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%live(n), this%g_fill(n))
       allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n), this%g_end(n))
       allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)), this%y_lo(size(y)), this%f_lo(size(y)))
       allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)))
@@ -212,6 +218,18 @@ contains
          if (.not. is_trial) this%n_run = 0
          return
       end if
+      ! the search evaluates only the groups with a function that crossed
+      ! over the step, or that changed by more than its distance from zero
+      ! at either end (it may have crossed and crossed back inside the
+      ! step, which a try of the search can find); the others keep their
+      ! values at the step's end, on the same side as at its start
+      this%g_fill = this%g_hi
+      this%searched = .false.
+      do k = 1, this%n_g
+         if (this%live(k) .and. (crossed(this%g_prev(k), this%g_hi(k)) .or. &
+             abs(this%g_hi(k) - this%g_prev(k)) >= min(abs(this%g_prev(k)), abs(this%g_hi(k))))) &
+            this%searched(this%group_of(k)) = .true.
+      end do
       if (is_trial) then
          if (this%n_run >= max_run) return
          ! the trial, cut at the switch, counted as a step taken again
@@ -306,7 +324,7 @@ contains
             stepper%stats%rejected = rejected_before
             cycle
          end if
-         call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
+         call search_values(this, sys, t, y, this%g_try, stepper%stats)
          ! past a switch only where a function has the sign opposite to its
          ! sign at the accepted state: a try on a root (g exactly 0, which
          ! the regula falsi reaches) is short of it, so that the state
@@ -482,7 +500,7 @@ contains
             ! When this shorter trial crosses, its own extension (nearer
             ! the trajectory) is searched next; otherwise short
             call stepper%dense(stepper%t_trial, this%y_work)
-            call switch_values(sys, stepper%t_trial, this%y_work, this%g_dt, stepper%stats, this%rates, this%counts)
+            call search_values(this, sys, stepper%t_trial, this%y_work, this%g_dt, stepper%stats)
             short = .true.
             if (.not. any(this%live .and. crossed(this%g_lo, this%g_dt))) exit
             ! (a try of the location, counted as taken again, not rejected)
@@ -495,7 +513,7 @@ contains
             cycle
          end if
          if (short) exit
-         call switch_values(sys, t, y, this%g_try, stepper%stats, this%rates, this%counts)
+         call search_values(this, sys, t, y, this%g_try, stepper%stats)
          if (any(this%live .and. passed(this%g_prev, this%g_try))) then
             t_hi = t
             this%g_hi = this%g_try
@@ -509,7 +527,7 @@ contains
          t_lo = t
          this%g_lo = this%g_try
          call stepper%dense(t, this%y_work)
-         call switch_values(sys, t, this%y_work, this%g_shift, stepper%stats, this%rates, this%counts)
+         call search_values(this, sys, t, this%y_work, this%g_shift, stepper%stats)
          this%g_shift = this%g_try - this%g_shift
       end do
       ! (the caller's bracket ends at the step's end)
@@ -559,7 +577,7 @@ contains
                           + (sig**3 - 2.0_wp*sig**2 + sig)*h*this%f_prev &
                           + (-2.0_wp*sig**3 + 3.0_wp*sig**2)*this%y_end + (sig**3 - sig**2)*h*this%f_end
          end if
-         call switch_values(sys, tau, this%y_work, this%g_dt, stats, this%rates, this%counts)
+         call search_values(this, sys, tau, this%y_work, this%g_dt, stats)
          this%g_dt = this%g_dt + this%g_shift
          if (any(this%live .and. crossed(this%g_da, this%g_dt))) then
             hi = tau
@@ -692,24 +710,38 @@ contains
    !> Every switching function of the scene at (t, y), in the order of the
    !! occupants and their effects (counted in stats). The body state is
    !! made only for an occupant with an effect that has one.
-   subroutine switch_values(sys, t, y, g, stats, rates, counts)
+   subroutine switch_values(sys, t, y, g, stats, rates, counts, only, rest)
       type(crash_system_t), intent(in) :: sys
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
-      real(wp), intent(out) :: g(:)
+      real(wp), intent(inout) :: g(:)
       type(step_stats_t), intent(inout) :: stats
       real(wp), intent(inout), contiguous :: rates(:)      !< workspace (the sliding switches' forces)
       integer(i8), intent(inout) :: counts(:)
-      integer :: o, k, xo, ao, i
+      !> only the groups (switch_groups) marked here are evaluated; the
+      !! others' functions are given rest's values
+      logical, intent(in), optional :: only(:)
+      real(wp), intent(in), optional :: rest(:)
+      integer :: o, k, xo, ao, i, grp
       type(body_state_t) :: st
       logical :: made
       i = 0
+      grp = 0
       do o = 1, size(sys%occupants)
          associate (occ => sys%occupants(o))
             made = .false.
             do k = 1, size(occ%effects)
                associate (e => occ%effects(k)%e)
                   if (e%n_switch == 0) cycle
+                  grp = grp + 1
+                  if (present(only)) then
+                     if (.not. only(grp)) then
+                        g(i + 1:i + e%n_switch) = rest(i + 1:i + e%n_switch)
+                        stats%switch_groups_skipped = stats%switch_groups_skipped + 1
+                        i = i + e%n_switch
+                        cycle
+                     end if
+                  end if
                   if (.not. made) st = system_body_state(sys, o, t, y)
                   made = .true.
                   xo = occ%extra_offset(k)
@@ -719,6 +751,15 @@ contains
                end associate
             end do
             if (occ%n_slide > 0) then
+               grp = grp + 1
+               if (present(only)) then
+                  if (.not. only(grp)) then
+                     g(i + 1:i + 2*occ%n_slide) = rest(i + 1:i + 2*occ%n_slide)
+                     stats%switch_groups_skipped = stats%switch_groups_skipped + 1
+                     i = i + 2*occ%n_slide
+                     cycle
+                  end if
+               end if
                ! the sliding constraints' multipliers leaving their ranges
                if (.not. made) st = system_body_state(sys, o, t, y)
                made = .true.
@@ -729,4 +770,54 @@ contains
       end do
       stats%switch_evaluations = stats%switch_evaluations + 1
    end subroutine switch_values
+
+   !> The switching functions at (t, y) as the search for a switch in the
+   !! step needs them: those of the searched groups evaluated, the others
+   !! at their values at the step's end (g_fill).
+   subroutine search_values(this, sys, t, y, g, stats)
+      type(switch_locator_t), intent(inout) :: this
+      type(crash_system_t), intent(in) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(inout) :: g(:)
+      type(step_stats_t), intent(inout) :: stats
+      call switch_values(sys, t, y, g, stats, this%rates, this%counts, this%searched, this%g_fill)
+   end subroutine search_values
+
+   !> The group of each switching function of the scene, in switch_values'
+   !! order: each effect's functions one group, each occupant's sliding
+   !! constraints' one more; searched: room for a flag per group.
+   subroutine switch_groups(sys, group_of, searched)
+      type(crash_system_t), intent(in) :: sys
+      integer, allocatable, intent(out) :: group_of(:)
+      logical, allocatable, intent(out) :: searched(:)
+      integer :: o, k, i, grp, n
+      n = 0
+      do o = 1, size(sys%occupants)
+         do k = 1, size(sys%occupants(o)%effects)
+            n = n + sys%occupants(o)%effects(k)%e%n_switch
+         end do
+         n = n + 2*sys%occupants(o)%n_slide     ! (each sliding constraint's range, occupant_slide_switches)
+      end do
+      allocate (group_of(n))
+      i = 0
+      grp = 0
+      do o = 1, size(sys%occupants)
+         associate (occ => sys%occupants(o))
+            do k = 1, size(occ%effects)
+               if (occ%effects(k)%e%n_switch == 0) cycle
+               grp = grp + 1
+               group_of(i + 1:i + occ%effects(k)%e%n_switch) = grp
+               i = i + occ%effects(k)%e%n_switch
+            end do
+            if (occ%n_slide > 0) then
+               grp = grp + 1
+               group_of(i + 1:i + 2*occ%n_slide) = grp
+               i = i + 2*occ%n_slide
+            end if
+         end associate
+      end do
+      allocate (searched(grp))
+      searched = .false.
+   end subroutine switch_groups
 end module switch_location
