@@ -25,7 +25,7 @@ module occupant
    public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces, occupant_frame
    public :: occupant_vehicle
    public :: occupant_initial_y, occupant_add_effect, occupant_point_forces
-   public :: occupant_slide_switches, occupant_settle, occupant_slide_forces
+   public :: occupant_slide_switches, occupant_settle, occupant_slide_forces, occupant_add_slide_forces
    public :: slides_overflow
 
    !> occupant_rhs's info for an occupant whose effects may hold more
@@ -434,6 +434,32 @@ contains
          if (set%owner(c) == k) b = b + set%d(:, c)*set%lam_clipped(c)
       end do
    end subroutine occupant_slide_forces
+
+   !> Every effect's generalized force from its active sliding constraints
+   !! at st added to b(:, k), effect k's (occupant_slide_forces for every k
+   !! at once, the same bits: the constraints gathered and solved once, a
+   !! print time's frame, issue 16 section 4).
+   pure subroutine occupant_add_slide_forces(occ, st, y, b)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(inout) :: b(:, :)
+      type(slide_set_t) :: set
+      real(wp) :: zdd(n_dof)
+      real(wp), allocatable :: rates(:)
+      integer(i8), allocatable :: counts(:)
+      integer :: c, info
+      if (occ%n_slide == 0) return
+      call gather_slides(occ, st, y, set)
+      if (set%n == 0) return
+      allocate (rates(size(y)), counts(size(occ%effects)))     ! (at a print time only)
+      call unconstrained(occ, st, y, zdd, info, rates, counts)
+      if (info == 0) call set_multipliers(occ, st, zdd, set, info)
+      if (info /= 0) return
+      do c = 1, set%n
+         b(:, set%owner(c)) = b(:, set%owner(c)) + set%d(:, c)*set%lam_clipped(c)
+      end do
+   end subroutine occupant_add_slide_forces
 
    !> z''_0 = A^-1 b at st, b all the effects' forces (no constraint).
    pure subroutine unconstrained(occ, st, y, zdd, info, rates, counts)

@@ -10,7 +10,7 @@ module output_producers
    use body_state, only: body_state_t
    use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    use point_forces, only: point_force_list_t
-   use occupant, only: occupant_t, occupant_point_forces, occupant_slide_forces
+   use occupant, only: occupant_t, occupant_add_slide_forces
    use joint_reactions, only: joint_reaction_forces, bone_components
    use joint_coupling, only: joint_columns
    use equations_of_motion, only: crash_system_t, system_body_state
@@ -166,26 +166,35 @@ contains
    end function frame_energy
 
    !> Every effect's energies e(:, k) at (t, y) and the balance they make
-   !! (frame_energy), so that a frame computes each effect's energy once.
+   !! (frame_energy).
    pure subroutine energies_and_balance(occ, st, y, total0, e, eb)
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: y(:), total0
       real(wp), intent(out) :: e(:, :)
       type(energy_balance_t), intent(out) :: eb
-      real(wp) :: ke(n_seg)
       integer :: k
-      ke = body_ke(occ, st)
-      eb%ke_body = sum(ke)
-      eb%total = eb%ke_body
-      eb%supplied = 0.0_wp
       do k = 1, size(occ%effects)
          call effect_energy(occ, k, st, y, e(:, k))
+      end do
+      eb = balance_of(sum(body_ke(occ, st)), e, total0)
+   end subroutine energies_and_balance
+
+   !> The balance (C.6) of the body's kinetic energy ke_body and the
+   !! effects' energies e(:, k), against the total total0 at t = 0.
+   pure function balance_of(ke_body, e, total0) result(eb)
+      real(wp), intent(in) :: ke_body, e(:, :), total0
+      type(energy_balance_t) :: eb
+      integer :: k
+      eb%ke_body = ke_body
+      eb%total = eb%ke_body
+      eb%supplied = 0.0_wp
+      do k = 1, size(e, 2)
          eb%total = eb%total + e(energy_stored, k) + e(energy_dissipated, k) - e(energy_supplied, k)
          eb%supplied = eb%supplied + e(energy_supplied, k)
       end do
       eb%error = eb%total - total0
-   end subroutine energies_and_balance
+   end function balance_of
 
    pure function body_ke(occ, st) result(ke)
       type(occupant_t), intent(in) :: occ
@@ -220,7 +229,11 @@ contains
 
    !> Every series at the accepted point (t, y) where the derivative is f.
    !! total0(o): occupant o's energy total at t = 0. Returns each
-   !! occupant's energy balance too.
+   !! occupant's energy balance too. Each effect gives everything the frame
+   !! takes from it at once (its frame_values: its energies, its series, its
+   !! generalized force, its point forces for the joint reactions), so that
+   !! an effect whose series each repeat one evaluation (a contact pair, a
+   !! belt) evaluates once a frame (issue 16 section 4).
    subroutine frame_fill(sys, vehicle, reg, t, y, f, total0, frame, balance)
       type(crash_system_t), intent(in) :: sys
       type(vehicle_section_t), intent(in) :: vehicle
@@ -229,39 +242,76 @@ contains
       real(wp), intent(in), contiguous :: y(:)
       type(output_frame_t), intent(inout) :: frame
       type(energy_balance_t), intent(out) :: balance(:)
-      ! (work arrays on the stack: a frame allocates nothing)
-      type(body_state_t) :: st(size(sys%occupants))
+      ! (work arrays on the stack: a frame allocates nothing but the point
+      ! forces' list, once)
+      type(body_state_t) :: st
       type(body_outputs_t) :: bo(size(sys%occupants))
-      real(wp) :: b(n_dof)
-      real(wp) :: extra_rate(sys%layout%n), aux_rate(sys%layout%n)
-      real(wp) :: ft(n_joint, size(sys%occupants)), fs(n_joint, size(sys%occupants))   !< joint tension and shear, once per frame
-      logical :: solved(size(sys%occupants))
+      type(point_force_list_t) :: list
+      integer :: n_item
+      !> where each effect's series k go in the frame (at(0, ...): its
+      !! generalized force; -1: not in the registry), and their widths
+      integer :: at(0:max_item(reg), max_effects(sys), size(sys%occupants))
+      integer :: width(0:max_item(reg), max_effects(sys), size(sys%occupants))
+      real(wp) :: gf(n_dof, max_effects(sys))             !< each effect's generalized force
+      real(wp) :: ft(n_joint, size(sys%occupants)), fs(n_joint, size(sys%occupants))   !< joint tension and shear
+      logical :: reacts(size(sys%occupants))
       !> each occupant's effects' energies, computed once for the balance and the energy summary
       real(wp) :: energy(n_energy_kinds, max_effects(sys), size(sys%occupants))
       integer :: o, k, k2, kind, n, i, xo, ao
+      logical :: wants_gf
 
-      ft = 0.0_wp
-      fs = 0.0_wp
-      solved = .false.
-      do o = 1, size(sys%occupants)
-         associate (occ => sys%occupants(o))
-            st(o) = system_body_state(sys, o, t, y)
-            call body_outputs_compute(occ%body, vehicle, st(o), f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), bo(o))
-            call energies_and_balance(occ, st(o), y, total0(o), energy(:, 1:size(occ%effects), o), balance(o))
-         end associate
-      end do
       if (.not. allocated(frame%v)) allocate (frame%v(reg%n_values))
       frame%t = t
+      n_item = ubound(at, 1)
+      at = -1
+      width = 0
+      reacts = .false.
+      do k = 1, size(reg%series)
+         associate (s => reg%series(k))
+            if (s%producer > 0) then
+               i = s%item
+               if (s%generalized_force) i = 0
+               at(i, s%producer, s%occupant) = s%offset
+               width(i, s%producer, s%occupant) = size(s%col)
+            else if (s%producer == producer_reactions) then
+               reacts(s%occupant) = .true.
+            end if
+         end associate
+      end do
+      do o = 1, size(sys%occupants)
+         associate (occ => sys%occupants(o))
+            st = system_body_state(sys, o, t, y)
+            call body_outputs_compute(occ%body, vehicle, st, f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), bo(o))
+            list%n = 0
+            do k = 1, size(occ%effects)
+               xo = occ%extra_offset(k)
+               ao = occ%aux_offset(k)
+               associate (ef => occ%effects(k)%e)
+                  wants_gf = at(0, k, o) >= 0
+                  gf(:, k) = 0.0_wp
+                  call ef%frame_values(st, y(xo + 1:xo + 2*ef%n_extra), y(ao + 1:ao + ef%n_aux), energy(:, k, o), &
+                                       frame%v, at(1:n_item, k, o), width(1:n_item, k, o), wants_gf, gf(:, k), &
+                                       reacts(o) .and. ef%external, list)
+               end associate
+            end do
+            ! and their sliding constraints' forces (issue 15)
+            call occupant_add_slide_forces(occ, st, y, gf(:, 1:size(occ%effects)))
+            do k = 1, size(occ%effects)
+               if (at(0, k, o) >= 0) frame%v(at(0, k, o) + 1:at(0, k, o) + n_dof) = gf(:, k)
+            end do
+            balance(o) = balance_of(sum(bo(o)%ke_seg), energy(:, 1:size(occ%effects), o), total0(o))
+            if (reacts(o)) call reactions(occ, st, ft(:, o), fs(:, o))
+         end associate
+      end do
       do k = 1, size(reg%series)
          associate (s => reg%series(k), occ => sys%occupants(reg%series(k)%occupant))
+            if (s%producer > 0) cycle                  ! (the effects' own, above)
             o = s%occupant
             n = size(s%col)
             associate (v => frame%v(s%offset + 1:s%offset + n))
                if (s%producer == producer_body) then
                   call body_series_values(s%item, bo(o), v)
                else if (s%producer == producer_reactions) then
-                  if (.not. solved(o)) call reactions(occ, st(o), ft(:, o), fs(:, o))
-                  solved(o) = .true.
                   v = merge(ft(:, o), fs(:, o), s%item == 1)
                else if (s%producer == producer_energy) then
                   v = 0.0_wp
@@ -277,37 +327,30 @@ contains
                   end do
                   v(n - 1) = balance(o)%total
                   v(n) = balance(o)%error
-               else
-                  xo = occ%extra_offset(s%producer)
-                  ao = occ%aux_offset(s%producer)
-                  associate (ef => occ%effects(s%producer)%e)
-                     if (s%generalized_force) then
-                        b = 0.0_wp
-                        call ef%add_forces(st(o), y(xo + 1:xo + 2*ef%n_extra), y(ao + 1:ao + ef%n_aux), b, &
-                                           extra_rate(1:2*ef%n_extra), aux_rate(1:ef%n_aux))
-                        ! and its sliding constraints' forces (issue 15)
-                        call occupant_slide_forces(occ, st(o), y, s%producer, b)
-                        v = b
-                     else
-                        call ef%output_values(s%item, st(o), y(xo + 1:xo + 2*ef%n_extra), &
-                                              y(ao + 1:ao + ef%n_aux), v)
-                     end if
-                  end associate
                end if
             end associate
          end associate
       end do
    contains
-      !> FT and FS of every joint at the print time (both series from one solve).
+      !> FT and FS of every joint at the print time (both series from one
+      !! solve), from the point forces the effects gave (list).
       subroutine reactions(occ, st, ft, fs)
          type(occupant_t), intent(in) :: occ
          type(body_state_t), intent(in) :: st
          real(wp), intent(out) :: ft(n_joint), fs(n_joint)
-         type(point_force_list_t) :: list
          real(wp) :: r(2, n_joint)
-         call occupant_point_forces(occ, st, y, list)
          r = joint_reaction_forces(occ%body, st%z, st%zdot, f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), list)
          call bone_components(r, st%z, ft, fs)
       end subroutine reactions
    end subroutine frame_fill
+
+   !> The largest item of an effect's own series in reg (at least 1).
+   pure integer function max_item(reg)
+      type(output_registry_t), intent(in) :: reg
+      integer :: k
+      max_item = 1
+      do k = 1, size(reg%series)
+         if (reg%series(k)%producer > 0) max_item = max(max_item, reg%series(k)%item)
+      end do
+   end function max_item
 end module output_producers
