@@ -542,21 +542,25 @@ contains
    !! and splits (belt_section_state) once for the energies, the five series
    !! and the point forces, each chain's energies once, the same bits as
    !! belt_energy, belt_output_values and belt_point_forces each computing
-   !! them; the generalized force from belt_add_forces itself (its own
-   !! sums, not belt_section_state's).
-   pure subroutine belt_frame_values(this, st, extra, aux, e, values, at, width, gf, b, pf, list)
+   !! them. The generalized force too where every chain has one section:
+   !! its s, s' and gradient in belt_section_state are then
+   !! chain_deformation's, the same operations on the same numbers (its
+   !! gradient's 0 + g is g: a sum that starts from +0 is never -0), and so
+   !! is its split; a chain of several sections sums its gradients in
+   !! another order, and belt_add_forces gives the force there.
+   pure subroutine belt_frame_values(this, st, extra, aux, e, values, at, width, gf, b, pf, list, sums, b_sum)
       class(belt_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(out) :: e(n_energy_kinds)
       real(wp), intent(inout) :: values(:)
       integer, intent(in) :: at(:), width(:)
-      logical, intent(in) :: gf, pf
-      real(wp), intent(inout) :: b(n_dof)
+      logical, intent(in) :: gf, pf, sums
+      real(wp), intent(inout) :: b(n_dof), b_sum(n_dof)
       type(point_force_list_t), intent(inout) :: list
       type(belt_state_t) :: bs
       real(wp) :: ce(max_chain, max_belt_sections), de(max_chain, max_belt_sections), supplied(max_belt_sections)
-      real(wp) :: extra_rate(size(extra)), aux_rate(size(aux)), cphi, sphi, f
+      real(wp) :: cphi, sphi, f
       integer :: k, q, i, n, item, ic
       bs = belt_section_state(this, st, aux)
       ! belt_energy
@@ -602,7 +606,8 @@ contains
                supplied(1:this%n_chains)
          end associate
       end do
-      if (gf) call belt_add_forces(this, st, extra, aux, b, extra_rate, aux_rate)
+      if (gf) call add_forces_into(b)
+      if (sums) call add_forces_into(b_sum)
       ! belt_point_forces
       if (pf) then
          cphi = cos(st%vehicle%pos(3))
@@ -617,6 +622,23 @@ contains
             end associate
          end do
       end if
+   contains
+      !> belt_add_forces' B added to bb
+      pure subroutine add_forces_into(bb)
+         real(wp), intent(inout) :: bb(n_dof)
+         integer :: jc
+         if (any(this%chain(1:this%n_chains)%n_sections > 1)) then
+            block
+               real(wp) :: extra_rate(size(extra)), aux_rate(size(aux))
+               call belt_add_forces(this, st, extra, aux, bb, extra_rate, aux_rate)
+            end block
+            return
+         end if
+         do jc = 1, this%n_chains
+            if (bs%split(jc)%status /= split_ok) cycle
+            bb = bb - bs%split(jc)%force*bs%g(:, jc)
+         end do
+      end subroutine add_forces_into
    end subroutine belt_frame_values
 
    !> One line for the listing: the sections, their anchors and chains.

@@ -962,15 +962,15 @@ contains
    !! chain_slack_split's split (pair_switches': the same bits in the fields
    !! read here, force, x, gate and status) on pair_eval's geometry: no
    !! force, no friction, and add_forces' early exit.
-   pure subroutine pair_frame_values(this, st, extra, aux, e, values, at, width, gf, b, pf, list)
+   pure subroutine pair_frame_values(this, st, extra, aux, e, values, at, width, gf, b, pf, list, sums, b_sum)
       class(contact_pair_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(out) :: e(n_energy_kinds)
       real(wp), intent(inout) :: values(:)
       integer, intent(in) :: at(:), width(:)
-      logical, intent(in) :: gf, pf
-      real(wp), intent(inout) :: b(n_dof)
+      logical, intent(in) :: gf, pf, sums
+      real(wp), intent(inout) :: b(n_dof), b_sum(n_dof)
       type(point_force_list_t), intent(inout) :: list
       type(pair_state_t) :: ps
       real(wp) :: ce(max_chain), de(max_chain), b_n(n_dof), b_t(n_dof), c_pitch, s_pitch
@@ -1007,11 +1007,12 @@ contains
          end associate
       end if
       ! pair_add_forces (pair_add_full's b; a far pair adds nothing)
-      if (gf .and. .not. far .and. ps%split%status == split_ok .and. ps%split%force > 0.0_wp) then
+      if ((gf .or. sums) .and. .not. far .and. ps%split%status == split_ok .and. ps%split%force > 0.0_wp) then
          b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
          b_t = 0.0_wp
          if (abs(ps%p_t) > 0.0_wp) b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%t_in)
-         b = b + ps%split%force*b_n - ps%p_t*b_t
+         if (gf) b = b + ps%split%force*b_n - ps%p_t*b_t
+         if (sums) b_sum = b_sum + ps%split%force*b_n - ps%p_t*b_t
       end if
       ! pair_point_forces
       if (pf .and. ps%split%force > 0.0_wp) &
