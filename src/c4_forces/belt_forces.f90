@@ -542,12 +542,13 @@ contains
    !! and splits (belt_section_state) once for the energies, the five series
    !! and the point forces, each chain's energies once, the same bits as
    !! belt_energy, belt_output_values and belt_point_forces each computing
-   !! them. The generalized force too where every chain has one section:
-   !! its s, s' and gradient in belt_section_state are then
-   !! chain_deformation's, the same operations on the same numbers (its
-   !! gradient's 0 + g is g: a sum that starts from +0 is never -0), and so
-   !! is its split; a chain of several sections sums its gradients in
-   !! another order, and belt_add_forces gives the force there.
+   !! them, and the generalized force from them too: a chain's s, s' and
+   !! gradient in belt_section_state are chain_deformation's, the same
+   !! additions in the same order (each section adds at most one term to an
+   !! entry of the gradient, so summing its own gradient from 0 first
+   !! changes nothing: 0 + a = a, a sum that starts from +0 never being -0;
+   !! test_frame_values checks it with the torso's two sections on one
+   !! tension), and so is its split.
    pure subroutine belt_frame_values(this, st, extra, aux, e, values, at, width, gf, b, pf, list, sums, b_sum)
       class(belt_effect_t), intent(in) :: this
       type(body_state_t), intent(in) :: st
@@ -562,6 +563,8 @@ contains
       real(wp) :: ce(max_chain, max_belt_sections), de(max_chain, max_belt_sections), supplied(max_belt_sections)
       real(wp) :: cphi, sphi, f
       integer :: k, q, i, n, item, ic
+      associate (u1 => size(extra))
+      end associate
       bs = belt_section_state(this, st, aux)
       ! belt_energy
       e = 0.0_wp
@@ -627,13 +630,6 @@ contains
       pure subroutine add_forces_into(bb)
          real(wp), intent(inout) :: bb(n_dof)
          integer :: jc
-         if (any(this%chain(1:this%n_chains)%n_sections > 1)) then
-            block
-               real(wp) :: extra_rate(size(extra)), aux_rate(size(aux))
-               call belt_add_forces(this, st, extra, aux, bb, extra_rate, aux_rate)
-            end block
-            return
-         end if
          do jc = 1, this%n_chains
             if (bs%split(jc)%status /= split_ok) cycle
             bb = bb - bs%split(jc)%force*bs%g(:, jc)
