@@ -91,6 +91,7 @@ module belt_forces
       procedure :: energy => belt_energy
       procedure :: outputs => belt_outputs
       procedure :: output_values => belt_output_values
+      procedure :: frame_values => belt_frame_values
       procedure :: describe => belt_describe
       procedure :: failure_text => belt_failure_text
       procedure :: point_forces => belt_point_forces
@@ -536,6 +537,105 @@ contains
          end do
       end if
    end subroutine belt_output_values
+
+   !> A print time's frame (effect_t's frame_values): the sections' state
+   !! and splits (belt_section_state) once for the energies, the five series
+   !! and the point forces, each chain's energies once, the same bits as
+   !! belt_energy, belt_output_values and belt_point_forces each computing
+   !! them, and the generalized force from them too: a chain's s, s' and
+   !! gradient in belt_section_state are chain_deformation's, the same
+   !! additions in the same order (each section adds at most one term to an
+   !! entry of the gradient, so summing its own gradient from 0 first
+   !! changes nothing: 0 + a = a, a sum that starts from +0 never being -0;
+   !! test_frame_values checks it with the torso's two sections on one
+   !! tension), and so is its split.
+   pure subroutine belt_frame_values(this, st, extra, aux, e, values, at, width, gf, b, pf, list, sums, b_sum)
+      class(belt_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      real(wp), intent(inout) :: values(:)
+      integer, intent(in) :: at(:), width(:)
+      logical, intent(in) :: gf, pf, sums
+      real(wp), intent(inout) :: b(n_dof), b_sum(n_dof)
+      type(point_force_list_t), intent(inout) :: list
+      type(belt_state_t) :: bs
+      real(wp) :: ce(max_chain, max_belt_sections), de(max_chain, max_belt_sections), supplied(max_belt_sections)
+      real(wp) :: cphi, sphi, f
+      integer :: k, q, i, n, item, ic
+      associate (u1 => size(extra))
+      end associate
+      bs = belt_section_state(this, st, aux)
+      ! belt_energy
+      e = 0.0_wp
+      do ic = 1, this%n_chains
+         n = this%chain(ic)%chain%n
+         call belt_chain_energies(this%chain(ic), bs%split(ic), aux, ce(:, ic), de(:, ic), supplied(ic))
+         e(energy_stored) = e(energy_stored) + sum(ce(1:n, ic))
+         e(energy_dissipated) = e(energy_dissipated) + sum(de(1:n, ic))
+         e(energy_supplied) = e(energy_supplied) + supplied(ic)
+      end do
+      ! belt_output_values
+      do item = 1, min(size(at), out_energy)
+         if (at(item) < 0) cycle
+         associate (v => values(at(item) + 1:at(item) + width(item)))
+            v = 0.0_wp
+            do k = 1, this%n_sections
+               ic = this%chain_of(k)
+               q = this%position(k)
+               associate (ch => this%chain(ic), sp => bs%split(ic))
+                  select case (item)
+                  case (out_force)
+                     v(k) = sp%force
+                  case (out_angle)
+                     v(k) = bs%kin(k)%phi
+                  case (out_deformation)
+                     v(3*k - 2) = bs%kin(k)%delta
+                     v(3*k - 1) = sp%x(ch%webbing(q))
+                     if (ch%body(q) > 0) v(3*k) = sp%x(ch%body(q))
+                  case (out_rate)
+                     v(3*k - 2) = bs%kin(k)%delta_rate
+                     v(3*k - 1) = sp%rate(ch%webbing(q))
+                     if (ch%body(q) > 0) v(3*k) = sp%rate(ch%body(q))
+                  case (out_energy)
+                     i = ch%webbing(q)
+                     v(4*k - 3:4*k - 2) = [ce(i, ic), de(i, ic)]
+                     i = ch%body(q)
+                     if (i > 0) v(4*k - 1:4*k) = [ce(i, ic), de(i, ic)]
+                  end select
+               end associate
+            end do
+            if (item == out_energy) v(4*this%n_sections + 1:4*this%n_sections + this%n_chains) = &
+               supplied(1:this%n_chains)
+         end associate
+      end do
+      if (gf) call add_forces_into(b)
+      if (sums) call add_forces_into(b_sum)
+      ! belt_point_forces
+      if (pf) then
+         cphi = cos(st%vehicle%pos(3))
+         sphi = sin(st%vehicle%pos(3))
+         do k = 1, this%n_sections
+            f = bs%split(this%chain_of(k))%force
+            if (.not. f > 0.0_wp) cycle
+            associate (p => bs%kin(k)%point, d => -f*bs%kin(k)%direction)
+               call point_force_add(list, this%geom(k)%segment, &
+                                    st%vehicle%pos(1:2) + [cphi*p(1) + sphi*p(2), -sphi*p(1) + cphi*p(2)], &
+                                    [cphi*d(1) + sphi*d(2), -sphi*d(1) + cphi*d(2)])
+            end associate
+         end do
+      end if
+   contains
+      !> belt_add_forces' B added to bb
+      pure subroutine add_forces_into(bb)
+         real(wp), intent(inout) :: bb(n_dof)
+         integer :: jc
+         do jc = 1, this%n_chains
+            if (bs%split(jc)%status /= split_ok) cycle
+            bb = bb - bs%split(jc)%force*bs%g(:, jc)
+         end do
+      end subroutine add_forces_into
+   end subroutine belt_frame_values
 
    !> One line for the listing: the sections, their anchors and chains.
    function belt_describe(this) result(text)

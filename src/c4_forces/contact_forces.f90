@@ -115,6 +115,7 @@ module contact_forces
       procedure :: energy => pair_energy
       procedure :: outputs => pair_outputs
       procedure :: output_values => pair_output_values
+      procedure :: frame_values => pair_frame_values
       procedure :: point_forces => pair_point_forces
       procedure :: describe => pair_describe
       procedure :: failure_text => pair_failure_text
@@ -952,6 +953,79 @@ contains
          values = e
       end if
    end subroutine pair_output_values
+
+   !> A print time's frame (effect_t's frame_values): the pair evaluated
+   !! once for its energies, its three series, its generalized force and its
+   !! point force, the same bits as pair_energy, pair_output_values,
+   !! pair_add_forces and pair_point_forces each evaluating it. A pair
+   !! pair_far proves slack, with a chain without states, takes
+   !! chain_slack_split's split (pair_switches': the same bits in the fields
+   !! read here, force, x, gate and status) on pair_eval's geometry: no
+   !! force, no friction, and add_forces' early exit.
+   pure subroutine pair_frame_values(this, st, extra, aux, e, values, at, width, gf, b, pf, list, sums, b_sum)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      real(wp), intent(inout) :: values(:)
+      integer, intent(in) :: at(:), width(:)
+      logical, intent(in) :: gf, pf, sums
+      real(wp), intent(inout) :: b(n_dof), b_sum(n_dof)
+      type(point_force_list_t), intent(inout) :: list
+      type(pair_state_t) :: ps
+      real(wp) :: ce(max_chain), de(max_chain), b_n(n_dof), b_t(n_dof), c_pitch, s_pitch
+      logical :: far, slack
+      integer :: first
+      associate (u1 => size(extra))
+      end associate
+      far = .false.
+      slack = .false.
+      if (this%exit_far) far = pair_far(this, st)
+      if (far) call chain_slack_split(this%chain, ps%split, slack)
+      if (slack) then
+         call pair_geometry(this, st, ps, c_pitch, s_pitch)
+         ps%p_t = 0.0_wp
+      else
+         call pair_eval(this, st, aux, ps)
+      end if
+      ! pair_energy
+      call chain_energies(this%chain, ps%split, aux, ce, de)
+      e(energy_stored) = sum(ce(1:this%n_elem))
+      e(energy_dissipated) = sum(de(1:this%n_elem)) + aux(this%aux_friction)
+      e(energy_supplied) = aux(this%aux_supplied)
+      ! pair_output_values
+      if (wanted(1)) values(at(1) + 1:at(1) + width(1)) = [ps%split%force, ps%p_t, ps%cs%delta, ps%cs%delta_dot, &
+                                                         ps%cs%v_t, ps%cs%pos]
+      if (wanted(2)) values(at(2) + 1:at(2) + width(2)) = e
+      if (wanted(3)) then
+         associate (v => values(at(3) + 1:at(3) + width(3)))
+            v = 0.0_wp
+            first = merge(2, 1, this%has_body)
+            if (this%has_body) v(1) = ps%split%x(1)
+            v(2) = ps%split%x(first)
+            if (this%n_elem > first) v(3) = ps%split%x(first + 1)
+         end associate
+      end if
+      ! pair_add_forces (pair_add_full's b; a far pair adds nothing)
+      if ((gf .or. sums) .and. .not. far .and. ps%split%status == split_ok .and. ps%split%force > 0.0_wp) then
+         b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
+         b_t = 0.0_wp
+         if (abs(ps%p_t) > 0.0_wp) b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%t_in)
+         if (gf) b = b + ps%split%force*b_n - ps%p_t*b_t
+         if (sums) b_sum = b_sum + ps%split%force*b_n - ps%p_t*b_t
+      end if
+      ! pair_point_forces
+      if (pf .and. ps%split%force > 0.0_wp) &
+         call point_force_add(list, arc_segment(this%i), ps%c_in, ps%split%force*ps%n_in - ps%p_t*ps%t_in, &
+                              across_bone=.not. any(this%i == [1, 5, 6, 7]), arc=this%i, surface=this%k, &
+                              normal_force=ps%split%force)
+   contains
+      pure logical function wanted(j)
+         integer, intent(in) :: j
+         wanted = .false.
+         if (j <= size(at)) wanted = at(j) >= 0
+      end function wanted
+   end subroutine pair_frame_values
 
    function pair_describe(this) result(text)
       class(contact_pair_effect_t), intent(in) :: this

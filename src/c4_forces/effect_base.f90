@@ -17,7 +17,10 @@
 !!   says whether the right-hand side jumped (the stepper restarts) and
 !!   which events (injuries) happened;
 !! - reports its stored (conserved), dissipated and supplied energies;
-!! - declares its output series and fills them at print times.
+!! - declares its output series and fills them at print times (one
+!!   series at a time, `output_values`, or everything a print time's frame
+!!   takes from it at once, `frame_values`, which an effect whose series
+!!   each repeat one evaluation overrides).
 !! Evaluations are counted by the system, not by the effect (which is
 !! read-only while it is evaluated).
 !!
@@ -80,6 +83,7 @@ module effect_base
       procedure :: energy => effect_energy
       procedure :: outputs => effect_outputs
       procedure :: output_values => effect_output_values
+      procedure :: frame_values => effect_frame_values
       procedure :: describe => effect_describe
       procedure :: initial_extra => effect_initial_extra
       procedure :: failure_text => effect_failure_text
@@ -233,6 +237,56 @@ contains
       end associate
       values = 0.0_wp
    end subroutine effect_output_values
+
+   !> Everything a print time's frame takes from the effect at st, at once
+   !! (issue 16 section 4): its energies e (as `energy`); the values of its
+   !! own series j = 1, 2, ... (as `output_values`) into values(at(j) + 1 :
+   !! at(j) + width(j)), for each j <= size(at) with at(j) >= 0 (a series not
+   !! wanted has at(j) < 0); when gf, its generalized force added to b (as
+   !! `add_forces`); when pf, its point forces appended to list (as
+   !! `point_forces`); when sums, its generalized force added to b_sum, the
+   !! running sum of the occupant's effects' forces, as `add_forces` adds it
+   !! (for the sliding constraints' solve). Rates are not kept. The same
+   !! bits as those procedures called one by one, which this default does;
+   !! an effect whose procedures each repeat one evaluation (a contact pair,
+   !! a belt) evaluates once here instead.
+   pure subroutine effect_frame_values(this, st, extra, aux, e, values, at, width, gf, b, pf, list, sums, b_sum)
+      class(effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      real(wp), intent(inout) :: values(:)
+      integer, intent(in) :: at(:), width(:)
+      logical, intent(in) :: gf, pf, sums
+      real(wp), intent(inout) :: b(n_dof), b_sum(n_dof)
+      type(point_force_list_t), intent(inout) :: list
+      integer :: j
+      call this%energy(st, extra, aux, e)
+      do j = 1, size(at)
+         if (at(j) < 0) cycle
+         call this%output_values(j, st, extra, aux, values(at(j) + 1:at(j) + width(j)))
+      end do
+      if (gf) call forces(b)
+      if (pf) call this%point_forces(st, extra, aux, list)
+      if (sums) call forces(b_sum)
+   contains
+      !> add_forces into bb (its rates discarded: on the stack where they
+      !! are few, as they are but for a test's effect)
+      pure subroutine forces(bb)
+         real(wp), intent(inout) :: bb(n_dof)
+         integer, parameter :: few = 16
+         real(wp) :: extra_rate(few), aux_rate(few)
+         if (size(extra) <= few .and. size(aux) <= few) then
+            call this%add_forces(st, extra, aux, bb, extra_rate(1:size(extra)), aux_rate(1:size(aux)))
+         else
+            block
+               real(wp), allocatable :: extra_rates(:), aux_rates(:)
+               allocate (extra_rates(size(extra)), aux_rates(size(aux)))
+               call this%add_forces(st, extra, aux, bb, extra_rates, aux_rates)
+            end block
+         end if
+      end subroutine forces
+   end subroutine effect_frame_values
 
    !> The initial values of the extra degrees of freedom (q, then q'); zero
    !! by default (the rigid-beam seat will start from its static deflection).

@@ -26,6 +26,7 @@ module joint_reactions
    private
 
    public :: joint_reaction_forces, body_imbalance, bone_components, distal_segment
+   public :: segment_cg_states, joint_reactions_at
 
    !> distal(s, j): segment s lies on the distal side of joint j.
    logical, parameter :: distal(n_seg, n_joint) = reshape([ &
@@ -42,24 +43,42 @@ module joint_reactions
 
 contains
 
+   !> The centre of gravity of every segment (inertial; segment_cg_state).
+   pure function segment_cg_states(body, z, zdot, zdd) result(p)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
+      type(point_state_t) :: p(n_seg)
+      integer :: s
+      do s = 1, n_seg
+         p(s) = segment_cg_state(body, z, zdot, zdd, s)
+      end do
+   end function segment_cg_states
+
    !> m_s a_s - F_s for every segment (inertial, lb).
    pure function segment_imbalance(body, z, zdot, zdd, forces) result(q)
       type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
       type(point_force_list_t), intent(in) :: forces
       real(wp) :: q(2, n_seg)
-      type(point_state_t) :: p
+      q = imbalance_at(body, segment_cg_states(body, z, zdot, zdd), forces)
+   end function segment_imbalance
+
+   !> segment_imbalance with the centres of gravity cg (segment_cg_states) at hand.
+   pure function imbalance_at(body, cg, forces) result(q)
+      type(body_section_t), intent(in) :: body
+      type(point_state_t), intent(in) :: cg(n_seg)
+      type(point_force_list_t), intent(in) :: forces
+      real(wp) :: q(2, n_seg)
       integer :: s, k
       do s = 1, n_seg
-         p = segment_cg_state(body, z, zdot, zdd, s)
-         q(:, s) = body%mass(s)*[p%ax, p%ay]
+         q(:, s) = body%mass(s)*[cg(s)%ax, cg(s)%ay]
       end do
       do k = 1, forces%n
          associate (f => forces%f(k))
             q(:, f%segment) = q(:, f%segment) - f%force
          end associate
       end do
-   end function segment_imbalance
+   end function imbalance_at
 
    !> R_j of every joint (inertial components, lb).
    pure function joint_reaction_forces(body, z, zdot, zdd, forces) result(r)
@@ -67,16 +86,26 @@ contains
       real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
       type(point_force_list_t), intent(in) :: forces
       real(wp) :: r(2, n_joint)
+      r = joint_reactions_at(body, segment_cg_states(body, z, zdot, zdd), forces)
+   end function joint_reaction_forces
+
+   !> joint_reaction_forces with the centres of gravity cg (segment_cg_states)
+   !! at hand (a print time's frame, whose kinetic energies take them too).
+   pure function joint_reactions_at(body, cg, forces) result(r)
+      type(body_section_t), intent(in) :: body
+      type(point_state_t), intent(in) :: cg(n_seg)
+      type(point_force_list_t), intent(in) :: forces
+      real(wp) :: r(2, n_joint)
       real(wp) :: q(2, n_seg)
       integer :: j, s
-      q = segment_imbalance(body, z, zdot, zdd, forces)
+      q = imbalance_at(body, cg, forces)
       r = 0.0_wp
       do j = 1, n_joint
          do s = 1, n_seg
             if (distal(s, j)) r(:, j) = r(:, j) + q(:, s)
          end do
       end do
-   end function joint_reaction_forces
+   end function joint_reactions_at
 
    !> sum over the whole body of m_s a_s - F_s: zero when every force from
    !! outside is among the point forces and the accelerations solve C.5.

@@ -26,6 +26,7 @@ module occupant
    public :: occupant_vehicle
    public :: occupant_initial_y, occupant_add_effect, occupant_point_forces
    public :: occupant_slide_switches, occupant_settle, occupant_slide_forces
+   public :: slide_set_t, occupant_active_slides, occupant_add_slide_forces
    public :: slides_overflow
 
    !> occupant_rhs's info for an occupant whose effects may hold more
@@ -434,6 +435,44 @@ contains
          if (set%owner(c) == k) b = b + set%d(:, c)*set%lam_clipped(c)
       end do
    end subroutine occupant_slide_forces
+
+   !> The active sliding constraints of occ's effects at st (gather_slides,
+   !! for a print time's frame: set%n of them).
+   pure subroutine occupant_active_slides(occ, st, y, set)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in), contiguous :: y(:)
+      type(slide_set_t), intent(out) :: set
+      set%n = 0
+      if (occ%n_slide > 0) call gather_slides(occ, st, y, set)
+   end subroutine occupant_active_slides
+
+   !> Every effect's generalized force from the active sliding constraints
+   !! set (occupant_active_slides, at least one) added to v(at(k) + 1 :
+   !! at(k) + n_dof), effect k's (none where at(k) < 0 or k > size(at)),
+   !! given b_all, the sum of the effects' forces at st as occupant_forces
+   !! gives it: occupant_slide_forces for every k at once, the same bits,
+   !! without the effects' forces again (a print time's frame has them,
+   !! issue 16 section 4).
+   pure subroutine occupant_add_slide_forces(occ, st, set, b_all, v, at)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      type(slide_set_t), intent(inout) :: set
+      real(wp), intent(in) :: b_all(n_dof)
+      real(wp), intent(inout) :: v(:)
+      integer, intent(in) :: at(:)
+      real(wp) :: zdd(n_dof)
+      integer :: c, info, k
+      call body_accelerations(occ%bc, st%c, st%s, b_all, zdd, info, occ%solver)    ! (unconstrained's)
+      if (info == 0) call set_multipliers(occ, st, zdd, set, info)
+      if (info /= 0) return
+      do c = 1, set%n
+         k = set%owner(c)
+         if (k > size(at)) cycle
+         if (at(k) < 0) cycle
+         v(at(k) + 1:at(k) + n_dof) = v(at(k) + 1:at(k) + n_dof) + set%d(:, c)*set%lam_clipped(c)
+      end do
+   end subroutine occupant_add_slide_forces
 
    !> z''_0 = A^-1 b at st, b all the effects' forces (no constraint).
    pure subroutine unconstrained(occ, st, y, zdd, info, rates, counts)

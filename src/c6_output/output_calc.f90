@@ -91,23 +91,39 @@ contains
       type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: z(n_dof), zdot(n_dof)
       real(wp) :: ke(n_seg)
-      type(point_state_t) :: p
+      type(point_state_t) :: p(n_seg)
       real(wp) :: zero(n_dof)
       integer :: i
       zero = 0.0_wp
       do i = 1, n_seg
-         p = segment_cg_state(body, z, zdot, zero, i)
-         ke(i) = 0.5_wp*body%mass(i)*(p%vx**2 + p%vy**2) + 0.5_wp*body%inertia(i)*zdot(i)**2
+         p(i) = segment_cg_state(body, z, zdot, zero, i)
       end do
+      ke = kinetic_energy_at(body, zdot, p)
    end function body_kinetic_energy
 
-   !> The C.6 quantities at the state st, with the accelerations zdd there.
-   pure subroutine body_outputs_compute(body, vehicle, st, zdd, r)
+   !> body_kinetic_energy from the centres of gravity cg (segment_cg_state,
+   !! whatever the accelerations: the velocities do not depend on them).
+   pure function kinetic_energy_at(body, zdot, cg) result(ke)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: zdot(n_dof)
+      type(point_state_t), intent(in) :: cg(n_seg)
+      real(wp) :: ke(n_seg)
+      integer :: i
+      do i = 1, n_seg
+         ke(i) = 0.5_wp*body%mass(i)*(cg(i)%vx**2 + cg(i)%vy**2) + 0.5_wp*body%inertia(i)*zdot(i)**2
+      end do
+   end function kinetic_energy_at
+
+   !> The C.6 quantities at the state st, with the accelerations zdd there;
+   !! cg: the segments' centres of gravity there, when at hand (for the
+   !! kinetic energies).
+   pure subroutine body_outputs_compute(body, vehicle, st, zdd, r, cg)
       type(body_section_t), intent(in) :: body
       type(vehicle_section_t), intent(in) :: vehicle
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: zdd(n_dof)
       type(body_outputs_t), intent(out) :: r
+      type(point_state_t), intent(in), optional :: cg(n_seg)
       type(point_state_t) :: p
       integer :: i
       associate (vs => st%vehicle)
@@ -128,7 +144,11 @@ contains
          end do
          ! C.6 kinetic energies: vehicle, and segments with erratum E-65
          r%ke_vehicle = 0.5_wp*vehicle%mass*(vs%vel(1)**2 + vs%vel(2)**2) + 0.5_wp*vehicle%inertia*vs%vel(3)**2
-         r%ke_seg = body_kinetic_energy(body, r%z, r%zdot)
+         if (present(cg)) then
+            r%ke_seg = kinetic_energy_at(body, r%zdot, cg)
+         else
+            r%ke_seg = body_kinetic_energy(body, r%z, r%zdot)
+         end if
       end associate
    end subroutine body_outputs_compute
 

@@ -10,8 +10,10 @@ module output_producers
    use body_state, only: body_state_t
    use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    use point_forces, only: point_force_list_t
-   use occupant, only: occupant_t, occupant_point_forces, occupant_slide_forces
-   use joint_reactions, only: joint_reaction_forces, bone_components
+   use occupant, only: occupant_t, slide_set_t, occupant_active_slides, occupant_add_slide_forces
+   use joint_reactions, only: segment_cg_states, joint_reactions_at, bone_components
+   use body_kinematics, only: point_state_t
+   use proximity_guard, only: guard_none, guard_holds
    use joint_coupling, only: joint_columns
    use equations_of_motion, only: crash_system_t, system_body_state
    use output_series, only: output_series_t, series_new, column
@@ -97,6 +99,7 @@ contains
             end do
          end associate
       end do
+      call registry_index(reg)
    contains
       subroutine place(series, producer, item)
          type(output_series_t), intent(inout) :: series
@@ -166,26 +169,49 @@ contains
    end function frame_energy
 
    !> Every effect's energies e(:, k) at (t, y) and the balance they make
-   !! (frame_energy), so that a frame computes each effect's energy once.
+   !! (frame_energy).
    pure subroutine energies_and_balance(occ, st, y, total0, e, eb)
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: y(:), total0
       real(wp), intent(out) :: e(:, :)
       type(energy_balance_t), intent(out) :: eb
-      real(wp) :: ke(n_seg)
       integer :: k
-      ke = body_ke(occ, st)
-      eb%ke_body = sum(ke)
-      eb%total = eb%ke_body
-      eb%supplied = 0.0_wp
       do k = 1, size(occ%effects)
          call effect_energy(occ, k, st, y, e(:, k))
-         eb%total = eb%total + e(energy_stored, k) + e(energy_dissipated, k) - e(energy_supplied, k)
-         eb%supplied = eb%supplied + e(energy_supplied, k)
+      end do
+      eb = balance_of(sum(body_ke(occ, st)), e, total0)
+   end subroutine energies_and_balance
+
+   !> The balance (C.6) of the body's kinetic energy ke_body and the
+   !! effects' energies e(:, k), against the total total0 at t = 0.
+   pure function balance_of(ke_body, e, total0) result(eb)
+      real(wp), intent(in) :: ke_body, e(:, :), total0
+      type(energy_balance_t) :: eb
+      integer :: k
+      call balance_start(ke_body, eb)
+      do k = 1, size(e, 2)
+         call balance_add(eb, e(:, k))
       end do
       eb%error = eb%total - total0
-   end subroutine energies_and_balance
+   end function balance_of
+
+   !> A balance of the body's kinetic energy ke_body alone (balance_of's start).
+   pure subroutine balance_start(ke_body, eb)
+      real(wp), intent(in) :: ke_body
+      type(energy_balance_t), intent(out) :: eb
+      eb%ke_body = ke_body
+      eb%total = eb%ke_body
+      eb%supplied = 0.0_wp
+   end subroutine balance_start
+
+   !> The next effect's energies e added to the balance (balance_of's step).
+   pure subroutine balance_add(eb, e)
+      type(energy_balance_t), intent(inout) :: eb
+      real(wp), intent(in) :: e(n_energy_kinds)
+      eb%total = eb%total + e(energy_stored) + e(energy_dissipated) - e(energy_supplied)
+      eb%supplied = eb%supplied + e(energy_supplied)
+   end subroutine balance_add
 
    pure function body_ke(occ, st) result(ke)
       type(occupant_t), intent(in) :: occ
@@ -208,19 +234,43 @@ contains
       end associate
    end subroutine effect_energy
 
-   !> The most effects an occupant of sys has.
-   pure integer function max_effects(sys)
-      type(crash_system_t), intent(in) :: sys
-      integer :: o
-      max_effects = 0
-      do o = 1, size(sys%occupants)
-         max_effects = max(max_effects, size(sys%occupants(o)%effects))
+   !> Where each producer's series are (output_registry_t's series_of),
+   !! once every series is declared (registry_build).
+   pure subroutine registry_index(reg)
+      type(output_registry_t), intent(inout) :: reg
+      integer :: k, j, max_item, max_producer, n_occ
+      max_item = 0
+      max_producer = 0
+      n_occ = 1
+      do k = 1, size(reg%series)
+         max_item = max(max_item, reg%series(k)%item)
+         max_producer = max(max_producer, reg%series(k)%producer)
+         n_occ = max(n_occ, reg%series(k)%occupant)
       end do
-   end function max_effects
+      if (allocated(reg%series_of)) deallocate (reg%series_of, reg%value_at, reg%value_count)
+      allocate (reg%series_of(0:max_item, producer_reactions:max_producer, n_occ))
+      allocate (reg%value_at, reg%value_count, mold=reg%series_of)
+      reg%series_of = 0
+      reg%value_at = -1
+      reg%value_count = 0
+      do k = 1, size(reg%series)
+         associate (s => reg%series(k))
+            ! (an effect's generalized force is its item 0)
+            j = merge(0, s%item, s%generalized_force)
+            reg%series_of(j, s%producer, s%occupant) = k
+            reg%value_at(j, s%producer, s%occupant) = s%offset
+            reg%value_count(j, s%producer, s%occupant) = size(s%col)
+         end associate
+      end do
+   end subroutine registry_index
 
    !> Every series at the accepted point (t, y) where the derivative is f.
    !! total0(o): occupant o's energy total at t = 0. Returns each
-   !! occupant's energy balance too.
+   !! occupant's energy balance too. Each effect gives everything the frame
+   !! takes from it at once (its frame_values: its energies, its series, its
+   !! generalized force, its point forces for the joint reactions), so that
+   !! an effect whose series each repeat one evaluation (a contact pair, a
+   !! belt) evaluates once a frame (issue 16 section 4).
    subroutine frame_fill(sys, vehicle, reg, t, y, f, total0, frame, balance)
       type(crash_system_t), intent(in) :: sys
       type(vehicle_section_t), intent(in) :: vehicle
@@ -229,85 +279,133 @@ contains
       real(wp), intent(in), contiguous :: y(:)
       type(output_frame_t), intent(inout) :: frame
       type(energy_balance_t), intent(out) :: balance(:)
-      ! (work arrays on the stack: a frame allocates nothing)
-      type(body_state_t) :: st(size(sys%occupants))
-      type(body_outputs_t) :: bo(size(sys%occupants))
-      real(wp) :: b(n_dof)
-      real(wp) :: extra_rate(sys%layout%n), aux_rate(sys%layout%n)
-      real(wp) :: ft(n_joint, size(sys%occupants)), fs(n_joint, size(sys%occupants))   !< joint tension and shear, once per frame
-      logical :: solved(size(sys%occupants))
-      !> each occupant's effects' energies, computed once for the balance and the energy summary
-      real(wp) :: energy(n_energy_kinds, max_effects(sys), size(sys%occupants))
-      integer :: o, k, k2, kind, n, i, xo, ao
-
-      ft = 0.0_wp
-      fs = 0.0_wp
-      solved = .false.
-      do o = 1, size(sys%occupants)
-         associate (occ => sys%occupants(o))
-            st(o) = system_body_state(sys, o, t, y)
-            call body_outputs_compute(occ%body, vehicle, st(o), f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), bo(o))
-            call energies_and_balance(occ, st(o), y, total0(o), energy(:, 1:size(occ%effects), o), balance(o))
-         end associate
-      end do
+      type(output_registry_t) :: indexed
+      integer :: o
       if (.not. allocated(frame%v)) allocate (frame%v(reg%n_values))
       frame%t = t
-      do k = 1, size(reg%series)
-         associate (s => reg%series(k), occ => sys%occupants(reg%series(k)%occupant))
-            o = s%occupant
-            n = size(s%col)
-            associate (v => frame%v(s%offset + 1:s%offset + n))
-               if (s%producer == producer_body) then
-                  call body_series_values(s%item, bo(o), v)
-               else if (s%producer == producer_reactions) then
-                  if (.not. solved(o)) call reactions(occ, st(o), ft(:, o), fs(:, o))
-                  solved(o) = .true.
-                  v = merge(ft(:, o), fs(:, o), s%item == 1)
-               else if (s%producer == producer_energy) then
-                  v = 0.0_wp
-                  v(1) = bo(o)%ke_vehicle
-                  v(2) = balance(o)%ke_body
-                  do k2 = 1, size(occ%effects)
-                     do kind = 1, n_energy_kinds
-                        ! (the column of the effect's energy of this kind, found by
-                        ! registry_build: shared by the contact pairs, summed)
-                        i = s%sum_column(n_energy_kinds*(k2 - 1) + kind)
-                        if (i > 0) v(i) = v(i) + energy(kind, k2, o)
-                     end do
-                  end do
-                  v(n - 1) = balance(o)%total
-                  v(n) = balance(o)%error
-               else
-                  xo = occ%extra_offset(s%producer)
-                  ao = occ%aux_offset(s%producer)
-                  associate (ef => occ%effects(s%producer)%e)
-                     if (s%generalized_force) then
-                        b = 0.0_wp
-                        call ef%add_forces(st(o), y(xo + 1:xo + 2*ef%n_extra), y(ao + 1:ao + ef%n_aux), b, &
-                                           extra_rate(1:2*ef%n_extra), aux_rate(1:ef%n_aux))
-                        ! and its sliding constraints' forces (issue 15)
-                        call occupant_slide_forces(occ, st(o), y, s%producer, b)
-                        v = b
-                     else
-                        call ef%output_values(s%item, st(o), y(xo + 1:xo + 2*ef%n_extra), &
-                                              y(ao + 1:ao + ef%n_aux), v)
-                     end if
-                  end associate
+      if (.not. allocated(reg%series_of)) then
+         ! (a registry not from registry_build, or appended to since: indexed here)
+         indexed = reg
+         call registry_index(indexed)
+         do o = 1, size(sys%occupants)
+            call occupant_frame(sys, o, vehicle, indexed, t, y, f, total0(o), frame%v, balance(o))
+         end do
+         return
+      end if
+      do o = 1, size(sys%occupants)
+         call occupant_frame(sys, o, vehicle, reg, t, y, f, total0(o), frame%v, balance(o))
+      end do
+   end subroutine frame_fill
+
+   !> frame_fill's work for occupant o: its series' values into v, its
+   !! energy balance eb.
+   subroutine occupant_frame(sys, o, vehicle, reg, t, y, f, total0, v, eb)
+      type(crash_system_t), intent(in) :: sys
+      integer, intent(in) :: o
+      type(vehicle_section_t), intent(in) :: vehicle
+      type(output_registry_t), intent(in) :: reg
+      real(wp), intent(in) :: t, f(:), total0
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(inout) :: v(:)
+      type(energy_balance_t), intent(out) :: eb
+      type(body_state_t) :: st
+      type(body_outputs_t) :: bo
+      type(point_force_list_t) :: list
+      type(point_state_t) :: cg(n_seg)
+      type(slide_set_t) :: slides
+      real(wp) :: zdd(n_dof), b_all(n_dof), gf(n_dof), e(n_energy_kinds), r(2, n_joint), ft(n_joint), fs(n_joint)
+      logical :: reacts, sums
+      integer :: none(0)
+      integer :: k, j, i, n, kind, xo, ao, n_eff, next_evaluated, n_item, n_producer, at0, summary, sum_at
+
+      associate (occ => sys%occupants(o), at => reg%value_at, n_at => reg%value_count)
+         n_eff = size(occ%effects)
+         n_item = ubound(at, 1)
+         n_producer = ubound(at, 2)
+         st = system_body_state(sys, o, t, y)
+         zdd = f(occ%zdot_offset + 1:occ%zdot_offset + n_dof)
+         reacts = any(at(:, producer_reactions, o) >= 0)
+         if (reacts) then
+            ! (the centres of gravity once, for the joint reactions and the kinetic energies)
+            cg = segment_cg_states(occ%body, st%z, st%zdot, zdd)
+            call body_outputs_compute(occ%body, vehicle, st, zdd, bo, cg)
+         else
+            call body_outputs_compute(occ%body, vehicle, st, zdd, bo)
+         end if
+         ! the energy balance (balance_of's sums, effect by effect) and the
+         ! energy summary's columns, summed as the effects come
+         call balance_start(sum(bo%ke_seg), eb)
+         summary = reg%series_of(0, producer_energy, o)
+         sum_at = at(0, producer_energy, o)
+         if (summary > 0) v(sum_at + 1:sum_at + n_at(0, producer_energy, o)) = 0.0_wp
+         ! the sliding constraints' forces (issue 15) need the sum of the
+         ! effects' forces, occupant_forces', where one is active
+         call occupant_active_slides(occ, st, y, slides)
+         b_all = 0.0_wp
+         list%n = 0
+         next_evaluated = 1
+         do k = 1, n_eff
+            xo = occ%extra_offset(k)
+            ao = occ%aux_offset(k)
+            associate (ef => occ%effects(k)%e)
+               ! occupant_forces' sum: the evaluated effects, in order, but
+               ! those whose proximity guard holds (inert: what add_forces gives)
+               sums = .false.
+               if (next_evaluated <= size(occ%evaluated)) then
+                  if (occ%evaluated(next_evaluated) == k) then
+                     next_evaluated = next_evaluated + 1
+                     sums = slides%n > 0
+                     if (sums .and. ef%guard%kind /= guard_none) sums = .not. guard_holds(ef%guard, st)
+                  end if
+               end if
+               gf = 0.0_wp
+               if (k <= n_producer) then
+                  call ef%frame_values(st, y(xo + 1:xo + 2*ef%n_extra), y(ao + 1:ao + ef%n_aux), e, v, &
+                                       at(1:n_item, k, o), n_at(1:n_item, k, o), at(0, k, o) >= 0, gf, &
+                                       reacts .and. ef%external, list, sums, b_all)
+                  ! its generalized force (the sliding constraints' added below)
+                  at0 = at(0, k, o)
+                  if (at0 >= 0) v(at0 + 1:at0 + n_dof) = gf
+               else                                        ! (none of its series in the registry)
+                  call ef%frame_values(st, y(xo + 1:xo + 2*ef%n_extra), y(ao + 1:ao + ef%n_aux), e, v, &
+                                       none, none, .false., gf, reacts .and. ef%external, list, sums, b_all)
                end if
             end associate
-         end associate
-      end do
-   contains
-      !> FT and FS of every joint at the print time (both series from one solve).
-      subroutine reactions(occ, st, ft, fs)
-         type(occupant_t), intent(in) :: occ
-         type(body_state_t), intent(in) :: st
-         real(wp), intent(out) :: ft(n_joint), fs(n_joint)
-         type(point_force_list_t) :: list
-         real(wp) :: r(2, n_joint)
-         call occupant_point_forces(occ, st, y, list)
-         r = joint_reaction_forces(occ%body, st%z, st%zdot, f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), list)
-         call bone_components(r, st%z, ft, fs)
-      end subroutine reactions
-   end subroutine frame_fill
+            call balance_add(eb, e)
+            if (summary > 0) then
+               do kind = 1, n_energy_kinds
+                  ! (the column of the effect's energy of this kind, found by
+                  ! registry_build: shared by the contact pairs, summed)
+                  j = reg%series(summary)%sum_column(n_energy_kinds*(k - 1) + kind)
+                  if (j > 0) v(sum_at + j) = v(sum_at + j) + e(kind)
+               end do
+            end if
+         end do
+         if (slides%n > 0) call occupant_add_slide_forces(occ, st, slides, b_all, v, at(0, 1:min(n_eff, n_producer), o))
+         eb%error = eb%total - total0
+         ! the body's series (C.6)
+         do j = 1, n_item
+            if (at(j, producer_body, o) >= 0) &
+               call body_series_values(j, bo, v(at(j, producer_body, o) + 1:at(j, producer_body, o) &
+                                                + n_at(j, producer_body, o)))
+         end do
+         ! FT and FS of every joint (both series from one solve)
+         if (reacts) then
+            r = joint_reactions_at(occ%body, cg, list)
+            call bone_components(r, st%z, ft, fs)
+            do j = 1, 2
+               i = at(j, producer_reactions, o)
+               if (i >= 0) v(i + 1:i + n_joint) = merge(ft, fs, j == 1)
+            end do
+         end if
+         ! the energy summary's other columns
+         if (summary > 0) then
+            n = n_at(0, producer_energy, o)
+            v(sum_at + 1) = bo%ke_vehicle
+            v(sum_at + 2) = eb%ke_body
+            v(sum_at + n - 1) = eb%total
+            v(sum_at + n) = eb%error
+         end if
+      end associate
+   end subroutine occupant_frame
 end module output_producers

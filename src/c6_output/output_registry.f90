@@ -15,6 +15,12 @@ module output_registry
    type :: output_registry_t
       type(output_series_t), allocatable :: series(:)
       integer :: n_values = 0            !< length of a frame
+      !> the series of each producer (output_producers' registry_index,
+      !! once the series are declared; an append clears it): series_of(j,
+      !! p, o) the index of item j of producer p of occupant o, 0 where the
+      !! registry has none; value_at(j, p, o) where its values start in a
+      !! frame (their offset; -1: none), value_count(j, p, o) how many
+      integer, allocatable :: series_of(:, :, :), value_at(:, :, :), value_count(:, :, :)
    contains
       procedure :: add => registry_add
       procedure :: find => registry_find
@@ -43,6 +49,8 @@ contains
       type(output_series_t), allocatable :: longer(:)
       integer :: k
       if (.not. allocated(this%series)) allocate (this%series(0))
+      ! (the index is no longer the whole registry's)
+      if (allocated(this%series_of)) deallocate (this%series_of, this%value_at, this%value_count)
       allocate (longer(size(this%series) + 1))
       do k = 1, size(this%series)
          call series_move(this%series(k), longer(k))
