@@ -281,8 +281,8 @@ contains
       do i = 1, n
          if (ch%stateful(i)) xf(i) = ch%x_offset(i) + aux(n + 1 + ch%state(i))
       end do
-      call split_deformation(n, ch%law, ch%mem, s, ch%max_iter, dsp, guess=guess, cap=ch%cap, gate=sp%gate, &
-                             fixed=ch%stateful, x_fixed=xf, search=search, cap_slope=ch%cap_slope)
+      call split_deformation(n, ch%law, ch%mem, s, ch%max_iter, ch%cap, sp%gate, ch%cap_slope, ch%stateful, xf, dsp, &
+                             guess, search)
       sp%status = dsp%status
       sp%region = dsp%region
       sp%iterations = dsp%iterations
@@ -597,14 +597,17 @@ contains
       type(series_chain_t), intent(inout) :: ch
       real(wp), intent(in) :: s0
       type(deformation_split_t) :: dsp
-      real(wp) :: g(max_chain)
+      real(wp) :: g(max_chain), x_held(max_chain)
+      logical :: held(max_chain)                ! (every element free)
       integer :: i
       ch%x_offset = 0.0_wp
       ch%w_initial = 0.0_wp
       ch%w_initial_chain = 0.0_wp
       if (.not. s0 > 0.0_wp) return
       g = chain_gates(ch)
-      call split_deformation(ch%n, ch%law, ch%mem, s0, ch%max_iter, dsp, cap=ch%cap, gate=g, cap_slope=ch%cap_slope)
+      held = .false.
+      x_held = 0.0_wp
+      call split_deformation(ch%n, ch%law, ch%mem, s0, ch%max_iter, ch%cap, g, ch%cap_slope, held, x_held, dsp)
       if (dsp%status /= split_ok) return
       do i = 1, ch%n
          if (ch%stateful(i)) ch%x_offset(i) = dsp%x(i)

@@ -75,48 +75,39 @@ contains
    !! converge gives status split_no_convergence, one that meets a value that
    !! is not finite split_not_finite. guess: a start for the unknown (sp%guess
    !! of a nearby state); the result does not depend on it beyond the
-   !! tolerance, only the number of iterations does. cap (> 0 where given):
-   !! an element that bottoms out there (figure 25). gate (> 0 where given):
-   !! the steering column's gate (D-C19): held at its memory's x_hold while
-   !! its force lies from its branch's force there F_h to F_h + gate,
-   !! carrying gate plus its branch beyond, its branch alone below (where it
-   !! springs back, the gate free). cap_slope (> 0 where given, with a cap):
-   !! the cap is not rigid but the element, crushed solid, stiffens to that
-   !! slope beyond it (element_eval; series_chain's chains with a
-   !! rate-dependent element). fixed, x_fixed: elements held at x_fixed
-   !! whatever the force. search: the search by force alone, without
-   !! Newton's method first (the tests' reference).
-   pure subroutine split_deformation(n, law, mem, s, max_iter, sp, guess, cap, gate, fixed, x_fixed, search, &
-                                     cap_slope)
+   !! tolerance, only the number of iterations does. cap (> 0): an element
+   !! that bottoms out there (figure 25). gate (> 0): the steering column's
+   !! gate (D-C19): held at its memory's x_hold while its force lies from its
+   !! branch's force there F_h to F_h + gate, carrying gate plus its branch
+   !! beyond, its branch alone below (where it springs back, the gate free);
+   !! a gate <= 0 is none. cap_slope (> 0, with a cap): the cap is not rigid
+   !! but the element, crushed solid, stiffens to that slope beyond it
+   !! (element_eval; series_chain's chains with a rate-dependent element).
+   !! fixed, x_fixed: elements held at x_fixed whatever the force (x_fixed
+   !! read only there). search: the search by force alone, without Newton's
+   !! method first (the tests' reference).
+   !! (Issue 16 section 4: every array is explicit-shape, the chain's own
+   !! arrays passed as they lie - no descriptor built, nothing copied at a
+   !! call, which the optional assumed-shape arrays before cost some 150
+   !! instructions a split; only the scalars are optional.)
+   pure subroutine split_deformation(n, law, mem, s, max_iter, cap, gate, cap_slope, fixed, x_fixed, sp, guess, &
+                                     search)
       integer, intent(in) :: n
-      type(recurrent_law_t), intent(in) :: law(:)
-      type(loading_memory_t), intent(in) :: mem(:)
+      type(recurrent_law_t), intent(in) :: law(n)
+      type(loading_memory_t), intent(in) :: mem(n)
       real(wp), intent(in) :: s
       integer, intent(in) :: max_iter
+      real(wp), intent(in) :: cap(n), gate(n), cap_slope(n), x_fixed(n)
+      logical, intent(in) :: fixed(n)
       type(deformation_split_t), intent(out) :: sp
       real(wp), intent(in), optional :: guess
-      real(wp), intent(in), optional :: cap(:), gate(:), x_fixed(:)
-      logical, intent(in), optional :: fixed(:), search
-      real(wp), intent(in), optional :: cap_slope(:)
-      real(wp) :: z(max_chain), c(max_chain), g(max_chain), xf(max_chain), ks(max_chain), zfree, sfree
-      logical :: fx(max_chain), plain, by_force
+      logical, intent(in), optional :: search
+      real(wp) :: z(max_chain), zfree, sfree, held_sum
+      logical :: plain, by_force
       integer :: i, nfree, i1, i2
       type(branch_point_t) :: bp
       integer :: seg
 
-      ! (whole arrays of max_chain, not 1:n: stores in line, where a length
-      ! known only at run time is a call of memset each, some 15 % of a slack
-      ! chain's split; the elements beyond n are never read)
-      c = 0.0_wp
-      g = 0.0_wp
-      fx = .false.
-      xf = 0.0_wp
-      ks = 0.0_wp
-      if (present(cap)) c(1:n) = cap(1:n)
-      if (present(cap_slope)) ks(1:n) = cap_slope(1:n)
-      if (present(gate)) g(1:n) = max(gate(1:n), 0.0_wp)
-      if (present(fixed)) fx(1:n) = fixed(1:n)
-      if (present(x_fixed)) xf(1:n) = x_fixed(1:n)
       sp%iterations = 0
       sp%sweeps = 0
       sp%path = path_none
@@ -129,72 +120,79 @@ contains
          sp%status = split_not_finite
          return
       end if
+      ! the part of s the free elements share; the first and last free ones
+      held_sum = 0.0_wp
+      nfree = 0
+      i1 = 0
+      i2 = 0
       do i = 1, n
-         if (fx(i)) then
-            sp%x(i) = xf(i)
+         if (fixed(i)) then
+            sp%x(i) = x_fixed(i)
             sp%slope(i) = rigid_slope
+            held_sum = held_sum + x_fixed(i)
+         else
+            nfree = nfree + 1
+            if (i1 == 0) i1 = i
+            i2 = i
          end if
       end do
-      ! the part of s the free elements share
-      sfree = s - sum(xf(1:n), mask=fx(1:n))
-      nfree = count(.not. fx(1:n))
+      sfree = s - held_sum
       sp%region = region_slack
       if (.not. sfree > 0.0_wp .or. nfree < 1) then
          sp%guess = 0.0_wp
          return
       end if
       ! (the residual deformations only past the slack, which most splits are)
+      zfree = 0.0_wp
+      plain = .true.
       do i = 1, n
-         if (fx(i)) then
-            z(i) = xf(i)
+         if (fixed(i)) then
+            z(i) = x_fixed(i)
          else
             z(i) = zero_extent(law(i), mem(i))
+            zfree = zfree + z(i)
+            plain = plain .and. .not. (cap(i) > 0.0_wp .or. gate(i) > 0.0_wp)
          end if
       end do
-      zfree = sum(z(1:n), mask=.not. fx(1:n))
       if (sfree <= zfree) then
          ! taken up within the residual deformations: no force; the free
          ! deformation is shared in proportion to them (continuous with the
          ! loaded split)
          sp%region = region_unloaded
          do i = 1, n
-            if (.not. fx(i)) sp%x(i) = sfree*z(i)/zfree
+            if (.not. fixed(i)) sp%x(i) = sfree*z(i)/zfree
          end do
-         sp%guess = sp%x(findloc(fx(1:n), .false., 1))
+         sp%guess = sp%x(i1)
          return
       end if
 
       sp%region = region_loaded
-      plain = .true.
-      do i = 1, n
-         if (fx(i)) cycle
-         plain = plain .and. .not. (c(i) > 0.0_wp .or. g(i) > 0.0_wp)
-      end do
       by_force = .false.
       if (present(search)) by_force = search
       if (nfree == 1) then
          ! one free element: its deformation is what the others leave
-         i = findloc(fx(1:n), .false., 1)
+         i = i1
          sp%x(i) = sfree
          seg = 0
-         if (c(i) > 0.0_wp .and. .not. ks(i) > 0.0_wp) sp%x(i) = min(sfree, c(i))
-         call element_eval(law(i), mem(i), sp%x(i), c(i), ks(i), seg, bp)
+         if (cap(i) > 0.0_wp .and. .not. cap_slope(i) > 0.0_wp) sp%x(i) = min(sfree, cap(i))
+         call element_eval(law(i), mem(i), sp%x(i), cap(i), cap_slope(i), seg, bp)
          sp%force = bp%force
          sp%slope(i) = bp%slope
          sp%loading(i) = bp%loading
-         if (g(i) > 0.0_wp .and. sp%x(i) > max(mem(i)%x_hold, z(i))) sp%force = sp%force + g(i)
-         if (c(i) > 0.0_wp .and. .not. ks(i) > 0.0_wp .and. sfree >= c(i)) sp%slope(i) = rigid_slope
+         if (gate(i) > 0.0_wp .and. sp%x(i) > max(mem(i)%x_hold, z(i))) sp%force = sp%force + gate(i)
+         if (cap(i) > 0.0_wp .and. .not. cap_slope(i) > 0.0_wp .and. sfree >= cap(i)) sp%slope(i) = rigid_slope
          sp%iterations = 1
          sp%guess = sp%x(i)
       else if (nfree == 2 .and. plain .and. .not. by_force) then
-         i1 = findloc(fx(1:n), .false., 1)
-         i2 = findloc(fx(1:n), .false., 1, back=.true.)
          call pair_split(law, mem, i1, i2, sfree, z, max_iter, sp, guess)
       else
-         call split_by_force(n, law, mem, s, z, c, g, ks, fx, max_iter, by_force, sp, guess)
+         call split_by_force(n, law, mem, s, z, cap, gate, cap_slope, fixed, max_iter, by_force, sp, guess)
       end if
       if (sp%status /= split_ok) then
-         sp%x(1:n) = merge(xf(1:n), 0.0_wp, fx(1:n))
+         do i = 1, n
+            sp%x(i) = 0.0_wp
+            if (fixed(i)) sp%x(i) = x_fixed(i)
+         end do
          sp%force = 0.0_wp
       end if
    end subroutine split_deformation
