@@ -184,7 +184,7 @@ contains
          sp%iterations = 1
          sp%guess = sp%x(i)
       else if (nfree == 2 .and. plain .and. .not. by_force) then
-         call pair_split(law, mem, i1, i2, sfree, z, max_iter, sp, guess)
+         call pair_split(n, law, mem, i1, i2, sfree, z, max_iter, sp, guess)
       else
          call split_by_force(n, law, mem, s, z, cap, gate, cap_slope, fixed, max_iter, by_force, sp, guess)
       end if
@@ -201,11 +201,12 @@ contains
    !! g(e) = F_i1(e) - F_i2(s - e) = 0, g' = k_1 + k_2 >= 0 (g(z_1) < 0 <
    !! g(s - z_2)). First point: the secant through the bracket's ends (exact
    !! for linear branches), or the guess.
-   pure subroutine pair_split(law, mem, i1, i2, s, z, max_iter, sp, guess)
-      type(recurrent_law_t), intent(in) :: law(:)
-      type(loading_memory_t), intent(in) :: mem(:)
+   pure subroutine pair_split(n, law, mem, i1, i2, s, z, max_iter, sp, guess)
+      integer, intent(in) :: n
+      type(recurrent_law_t), intent(in) :: law(n)
+      type(loading_memory_t), intent(in) :: mem(n)
       integer, intent(in) :: i1, i2
-      real(wp), intent(in) :: s, z(:)
+      real(wp), intent(in) :: s, z(n)
       integer, intent(in) :: max_iter
       type(deformation_split_t), intent(inout) :: sp
       real(wp), intent(in), optional :: guess
@@ -303,10 +304,10 @@ contains
    !! alone (the tests' reference).
    pure subroutine split_by_force(n, law, mem, s, z, cap, gate, cap_slope, fixed, max_iter, search, sp, guess)
       integer, intent(in) :: n
-      type(recurrent_law_t), intent(in) :: law(:)
-      type(loading_memory_t), intent(in) :: mem(:)
-      real(wp), intent(in) :: s, z(:), cap(:), gate(:), cap_slope(:)
-      logical, intent(in) :: fixed(:)
+      type(recurrent_law_t), intent(in) :: law(n)
+      type(loading_memory_t), intent(in) :: mem(n)
+      real(wp), intent(in) :: s, z(n), cap(n), gate(n), cap_slope(n)
+      logical, intent(in) :: fixed(n)
       integer, intent(in) :: max_iter
       logical, intent(in) :: search      !< the search by force alone, no Newton's method first
       type(deformation_split_t), intent(inout) :: sp
@@ -319,17 +320,22 @@ contains
       integer :: i, status, seg(max_chain)
       type(branch_point_t) :: bp
       logical :: done, newton_free(max_chain), have_lo, have_hi
+      logical :: plastic_held(max_chain)     ! held_plastic of each element (its memory is read-only here)
       real(wp) :: f_newton, zsum
       ! each element's last point (x_at, f_at) on its branch and its slope k_at
       ! there (f_at < 0: none yet): where its next search at another force starts
       real(wp) :: x_at(max_chain), f_at(max_chain), k_at(max_chain)
 
-      seg(1:n) = 0
-      f_cap(1:n) = huge(1.0_wp)
-      x_h(1:n) = 0.0_wp
-      f_h(1:n) = 0.0_wp
+      ! (whole arrays of max_chain: stores in line, not a call of memset each;
+      ! the elements beyond n are never read)
+      seg = 0
+      f_cap = huge(1.0_wp)
+      x_h = 0.0_wp
+      f_h = 0.0_wp
+      x = 0.0_wp
       zsum = sum(z(1:n))
       do i = 1, n
+         plastic_held(i) = held_plastic(law(i), mem(i))
          x_max(i) = s - zsum + z(i)
          if (fixed(i)) then
             x_max(i) = z(i)
@@ -363,16 +369,16 @@ contains
       ! (D-B11) first Newton's method on the deformations and the force at once;
       ! where it does not converge in a few sweeps, or meets what it cannot
       ! handle, the search by force below decides, from where it ended
-      f_at(1:n) = -1.0_wp
-      x_at(1:n) = 0.0_wp
-      k_at(1:n) = 0.0_wp
+      f_at = -1.0_wp
+      x_at = 0.0_wp
+      k_at = 0.0_wp
       if (.not. search) then
          call newton_split(f0, x, seg, f_newton, sp%slope, newton_free, sp%loading, sp%iterations, sp%sweeps, &
                            x_at, f_at, k_at, done)
          if (done) then
             sp%force = f_newton
             sp%path = path_newton
-            sp%x(1:n) = x(1:n)
+            sp%x = x
             do i = 1, n
                if (newton_free(i)) cycle
                sp%slope(i) = rigid_slope        ! fixed, held (D-B10), at its cap, or behind its gate
@@ -432,7 +438,7 @@ contains
          x(1:n) = x_lo(1:n) + theta*(x_hi(1:n) - x_lo(1:n))
          sp%force = r%lo + theta*(r%hi - r%lo)
       end if
-      sp%x(1:n) = x(1:n)
+      sp%x = x
       do i = 1, n
          if (held(i, sp%force)) then
             sp%slope(i) = rigid_slope        ! fixed, held (D-B10), bottomed out, or held by its gate
@@ -483,7 +489,7 @@ contains
       pure subroutine newton_split(f_start, xs, hint, f, kb, free, on_loading, evaluations, sweeps, x_at, f_at, k_at, &
                                    done)
          real(wp), intent(in) :: f_start
-         real(wp), intent(out) :: xs(:)           !< the deformations
+         real(wp), intent(inout) :: xs(:)         !< the deformations (set for the n elements)
          integer, intent(inout) :: hint(:)        !< each element's table interval
          real(wp), intent(out) :: f               !< the force
          real(wp), intent(inout) :: kb(:)         !< the free elements' slopes
@@ -632,7 +638,7 @@ contains
          x_held = 0.0_wp
          if (fixed(k)) then
             x_held = z(k)
-         else if (held_plastic(law(k), mem(k)) .and. f <= mem(k)%f_max) then
+         else if (plastic_held(k) .and. f <= mem(k)%f_max) then
             x_held = mem(k)%delta_max
          else if (f >= f_cap(k)) then
             x_held = x_max(k)
@@ -646,7 +652,8 @@ contains
       !> x_i(F) for every element, h(F) = sum x_i - s and h'(F).
       pure subroutine deformations_at(f, xs, hf, dhf, st, iterations, hint, x_last, f_last, k_last)
          real(wp), intent(in) :: f
-         real(wp), intent(out) :: xs(:), hf, dhf
+         real(wp), intent(inout) :: xs(:)      ! (set for the n elements)
+         real(wp), intent(out) :: hf, dhf
          integer, intent(out) :: st
          integer, intent(inout) :: iterations
          integer, intent(inout) :: hint(:)     ! each element's table interval
