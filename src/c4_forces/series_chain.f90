@@ -289,6 +289,10 @@ contains
          sp%iterations = 1
          return
       end if
+      ! slack without states: what the general path gives there (chain_slack_split:
+      ! nothing carried, nothing moves), without it (issue 16 section 4: the
+      ! contact pairs near contact but not in it)
+      if (ch%n_states == 0 .and. ch%absorber == 0 .and. .not. s > 0.0_wp .and. .not. present(search)) return
 
       ! the rate-independent elements share what the states leave (held there)
       xf = 0.0_wp
@@ -451,7 +455,7 @@ contains
    !! loaded: its deformation what the states leave), then the states' rates
    !! at the tension and the rest's rate, all of it to l - on the chain's
    !! arrays, without the general split's bookkeeping (issue 16 section 4:
-   !! some 40 % of a belt chain's split; the same bits, test_lone_split_bits).
+   !! some 40 % of a belt chain's split; the same bits, test_direct_splits_bits).
    !! sp as chain_split leaves it before the split (cleared, no gates); s and
    !! s_dot finite.
    pure subroutine lone_split(ch, s, s_dot, aux, sp)
