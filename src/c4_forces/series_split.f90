@@ -694,9 +694,11 @@ contains
             else
                ! the start: on the tangent at the element's last point (an outer step
                ! or Newton's method before), else on its secant
-               x0 = on_secant(k, f)
-               if (f_last(k) >= 0.0_wp .and. k_last(k) > min_slope .and. k_last(k) < rigid_slope) &
+               if (f_last(k) >= 0.0_wp .and. k_last(k) > min_slope .and. k_last(k) < rigid_slope) then
                   x0 = x_last(k) + (f - f_last(k))/k_last(k)
+               else
+                  x0 = on_secant(k, f)
+               end if
                call root_begin(q, lo, hi, x0, defl_tol*s, force_tol, max_iter)
                do
                   call element_eval(law(k), mem(k), q%x, cap(k), cap_slope(k), hint(k), b)
