@@ -56,7 +56,7 @@ module series_chain
    use loading_curves, only: curve_is_defined, curve_max_slope, curve_kinks_about
    use recurrent_loading, only: recurrent_law_t, loading_memory_t, recurrent_eval, recurrent_accept, &
       recurrent_stored, loading_point_t
-   use loading_branch, only: branch_point_t, branch_at, zero_extent, rate_force, rate_slope, rate_inverse, &
+   use loading_branch, only: branch_point_t, branch_at, branch_eval, zero_extent, rate_force, rate_slope, rate_inverse, &
       min_slope, rigid_slope, branch_argument, turn_switch, zero_on_side
    use root_search, only: root_search_t, root_begin, root_update, root_running, root_not_finite, bisections
    use series_split, only: max_chain, deformation_split_t, split_deformation, split_ok, split_no_convergence, &
@@ -90,6 +90,10 @@ module series_chain
       integer :: n_states = 0
       !> every element rate-dependent: this one takes what the others leave
       integer :: absorber = 0
+      !> the one rate-independent element, without cap or gate, where every
+      !! other is a state (the belts' chains: a webbing and rate-dependent
+      !! bodies); 0: none. Its chain splits directly (lone_split).
+      integer :: lone = 0
       !> its rate terms act (a single element; a stateful one; the absorber)
       logical :: rated(max_chain) = .false.
       !> the last rated element (0: none): its dissipated energy is what the
@@ -175,6 +179,10 @@ contains
          ch%n_states = ch%n_states + 1
          ch%state(i) = ch%n_states
       end do
+      if (ch%absorber == 0 .and. ch%n_states == ch%n - 1) then
+         i = findloc(ch%stateful(1:ch%n), .false., 1)
+         if (.not. (ch%cap(i) > 0.0_wp .or. ch%gated(i))) ch%lone = i
+      end if
    end function chain_new
 
    !> The chain's auxiliary quantities (docs/loading.md 4): per element the
@@ -235,7 +243,9 @@ contains
    !! states in aux (the chain's auxiliary quantities, chain_n_aux of them).
    !! guess: a start for the rate-independent split's search (sp%guess of a
    !! nearby state); search: that split by the search by force alone (the
-   !! tests' reference). Pure: the memories are read, never written.
+   !! tests' reference), and given at all, the general path also for a chain
+   !! that splits directly (lone_split; the tests' reference for it). Pure:
+   !! the memories are read, never written.
    pure subroutine chain_split(ch, s, s_dot, aux, sp, guess, search)
       type(series_chain_t), intent(in) :: ch
       real(wp), intent(in) :: s, s_dot
@@ -261,6 +271,10 @@ contains
          sp%status = split_not_finite
          return
       end if
+      if (ch%lone > 0 .and. .not. present(search)) then
+         call lone_split(ch, s, s_dot, aux, sp)
+         return
+      end if
       if (n == 1) then
          ! one element: the law of loading_curves, T = max(0, F_b + F_v) while F_b > 0
          sp%guess = s
@@ -275,14 +289,18 @@ contains
          sp%iterations = 1
          return
       end if
+      ! slack without states: what the general path gives there (chain_slack_split:
+      ! nothing carried, nothing moves), without it (issue 16 section 4: the
+      ! contact pairs near contact but not in it)
+      if (ch%n_states == 0 .and. ch%absorber == 0 .and. .not. s > 0.0_wp .and. .not. present(search)) return
 
       ! the rate-independent elements share what the states leave (held there)
       xf = 0.0_wp
       do i = 1, n
          if (ch%stateful(i)) xf(i) = ch%x_offset(i) + aux(n + 1 + ch%state(i))
       end do
-      call split_deformation(n, ch%law, ch%mem, s, ch%max_iter, dsp, guess=guess, cap=ch%cap, gate=sp%gate, &
-                             fixed=ch%stateful, x_fixed=xf, search=search, cap_slope=ch%cap_slope)
+      call split_deformation(n, ch%law, ch%mem, s, ch%max_iter, ch%cap, sp%gate, ch%cap_slope, ch%stateful, xf, dsp, &
+                             guess, search)
       sp%status = dsp%status
       sp%region = dsp%region
       sp%iterations = dsp%iterations
@@ -290,7 +308,7 @@ contains
       sp%sweeps = dsp%sweeps
       sp%guess = dsp%guess
       if (dsp%status /= split_ok) return
-      sp%x(1:n) = dsp%x(1:n)
+      sp%x = dsp%x                 ! (whole: 0 beyond n, stores in line rather than memcpy)
       do i = 1, n
          fb(i) = 0.0_wp
          if (.not. ch%rated(i)) cycle
@@ -429,6 +447,90 @@ contains
          dpsi = 1.0_wp + rate_slope(ch%law(a), va)*comp
       end subroutine psi_at
    end subroutine chain_split
+
+   !> chain_split of a chain with a lone rate-independent element l (no cap,
+   !! no gate; every other element a state, none the absorber): the general
+   !! path's operations in its order - split_deformation's split of one
+   !! free element (slack, taken up within its residual deformation, or
+   !! loaded: its deformation what the states leave), then the states' rates
+   !! at the tension and the rest's rate, all of it to l - on the chain's
+   !! arrays, without the general split's bookkeeping (issue 16 section 4:
+   !! some 40 % of a belt chain's split; the same bits, test_direct_splits_bits).
+   !! sp as chain_split leaves it before the split (cleared, no gates); s and
+   !! s_dot finite.
+   pure subroutine lone_split(ch, s, s_dot, aux, sp)
+      type(series_chain_t), intent(in) :: ch
+      real(wp), intent(in) :: s, s_dot, aux(:)
+      type(chain_split_t), intent(inout) :: sp
+      type(branch_point_t) :: bp
+      real(wp) :: held_sum, sfree, z, zfree, force, slope, t, r_dot, w, total
+      integer :: i, n, l, seg
+      n = ch%n
+      l = ch%lone
+      ! the states' deformations, and what they leave (split_deformation)
+      held_sum = 0.0_wp
+      do i = 1, n
+         if (i == l) cycle
+         sp%x(i) = ch%x_offset(i) + aux(n + 1 + ch%state(i))
+         held_sum = held_sum + sp%x(i)
+      end do
+      sfree = s - held_sum
+      force = 0.0_wp
+      slope = 0.0_wp
+      if (sfree > 0.0_wp) then
+         z = zero_extent(ch%law(l), ch%mem(l))
+         zfree = 0.0_wp + z
+         if (sfree <= zfree) then
+            sp%region = region_unloaded         ! taken up within its residual deformation
+            sp%x(l) = sfree*z/zfree
+         else
+            sp%region = region_loaded           ! its deformation what the states leave
+            sp%x(l) = sfree
+            seg = 0
+            call branch_eval(ch%law(l), ch%mem(l), sfree, seg, bp)
+            force = bp%force
+            slope = bp%slope
+            sp%iterations = 1
+         end if
+         sp%guess = sp%x(l)
+      end if
+      ! the states carry T with their own rate terms (chain_split)
+      t = max(force, 0.0_wp)
+      sp%force = t
+      r_dot = s_dot
+      do i = 1, n
+         if (i == l) cycle
+         bp = branch_at(ch%law(i), ch%mem(i), sp%x(i))
+         sp%rate(i) = rate_inverse(ch%law(i), t - bp%force)
+         r_dot = r_dot - sp%rate(i)
+         sp%aux_rate(n + 1 + ch%state(i)) = sp%rate(i)
+         if (t > 0.0_wp .and. i /= ch%rest) sp%aux_rate(i) = t*sp%rate(i)
+      end do
+      ! the rest to l: its share of the compliances, or of the residuals (1 but
+      ! where they are 0 or rigid, computed as chain_split computes it)
+      w = 0.0_wp
+      select case (sp%region)
+      case (region_loaded)
+         total = 0.0_wp
+         if (.not. slope > min_slope) then
+            w = 1.0_wp/real(1, wp)
+         else if (slope < rigid_slope) then
+            w = 1.0_wp/slope
+            total = total + w
+            if (total > 0.0_wp) then
+               w = w/total
+            else
+               w = 0.0_wp
+            end if
+         end if
+      case (region_unloaded)
+         total = 0.0_wp + sp%x(l)
+         if (total > 0.0_wp) w = sp%x(l)/total
+      end select
+      if (w > 0.0_wp) sp%rate(l) = w*r_dot
+      if (t > 0.0_wp) sp%aux_rate(n + 1) = t*s_dot
+      sp%guess_rate = sp%rate(l)
+   end subroutine lone_split
 
    !> The stored and dissipated energy of each element at the state of sp
    !! (chain_split's; aux the chain's auxiliary quantities): its stored
@@ -597,14 +699,17 @@ contains
       type(series_chain_t), intent(inout) :: ch
       real(wp), intent(in) :: s0
       type(deformation_split_t) :: dsp
-      real(wp) :: g(max_chain)
+      real(wp) :: g(max_chain), x_held(max_chain)
+      logical :: held(max_chain)                ! (every element free)
       integer :: i
       ch%x_offset = 0.0_wp
       ch%w_initial = 0.0_wp
       ch%w_initial_chain = 0.0_wp
       if (.not. s0 > 0.0_wp) return
       g = chain_gates(ch)
-      call split_deformation(ch%n, ch%law, ch%mem, s0, ch%max_iter, dsp, cap=ch%cap, gate=g, cap_slope=ch%cap_slope)
+      held = .false.
+      x_held = 0.0_wp
+      call split_deformation(ch%n, ch%law, ch%mem, s0, ch%max_iter, ch%cap, g, ch%cap_slope, held, x_held, dsp)
       if (dsp%status /= split_ok) return
       do i = 1, ch%n
          if (ch%stateful(i)) ch%x_offset(i) = dsp%x(i)

@@ -75,48 +75,39 @@ contains
    !! converge gives status split_no_convergence, one that meets a value that
    !! is not finite split_not_finite. guess: a start for the unknown (sp%guess
    !! of a nearby state); the result does not depend on it beyond the
-   !! tolerance, only the number of iterations does. cap (> 0 where given):
-   !! an element that bottoms out there (figure 25). gate (> 0 where given):
-   !! the steering column's gate (D-C19): held at its memory's x_hold while
-   !! its force lies from its branch's force there F_h to F_h + gate,
-   !! carrying gate plus its branch beyond, its branch alone below (where it
-   !! springs back, the gate free). cap_slope (> 0 where given, with a cap):
-   !! the cap is not rigid but the element, crushed solid, stiffens to that
-   !! slope beyond it (element_eval; series_chain's chains with a
-   !! rate-dependent element). fixed, x_fixed: elements held at x_fixed
-   !! whatever the force. search: the search by force alone, without
-   !! Newton's method first (the tests' reference).
-   pure subroutine split_deformation(n, law, mem, s, max_iter, sp, guess, cap, gate, fixed, x_fixed, search, &
-                                     cap_slope)
+   !! tolerance, only the number of iterations does. cap (> 0): an element
+   !! that bottoms out there (figure 25). gate (> 0): the steering column's
+   !! gate (D-C19): held at its memory's x_hold while its force lies from its
+   !! branch's force there F_h to F_h + gate, carrying gate plus its branch
+   !! beyond, its branch alone below (where it springs back, the gate free);
+   !! a gate <= 0 is none. cap_slope (> 0, with a cap): the cap is not rigid
+   !! but the element, crushed solid, stiffens to that slope beyond it
+   !! (element_eval; series_chain's chains with a rate-dependent element).
+   !! fixed, x_fixed: elements held at x_fixed whatever the force (x_fixed
+   !! read only there). search: the search by force alone, without Newton's
+   !! method first (the tests' reference).
+   !! (Issue 16 section 4: every array is explicit-shape, the chain's own
+   !! arrays passed as they lie - no descriptor built, nothing copied at a
+   !! call, which the optional assumed-shape arrays before cost some 150
+   !! instructions a split; only the scalars are optional.)
+   pure subroutine split_deformation(n, law, mem, s, max_iter, cap, gate, cap_slope, fixed, x_fixed, sp, guess, &
+                                     search)
       integer, intent(in) :: n
-      type(recurrent_law_t), intent(in) :: law(:)
-      type(loading_memory_t), intent(in) :: mem(:)
+      type(recurrent_law_t), intent(in) :: law(n)
+      type(loading_memory_t), intent(in) :: mem(n)
       real(wp), intent(in) :: s
       integer, intent(in) :: max_iter
+      real(wp), intent(in) :: cap(n), gate(n), cap_slope(n), x_fixed(n)
+      logical, intent(in) :: fixed(n)
       type(deformation_split_t), intent(out) :: sp
       real(wp), intent(in), optional :: guess
-      real(wp), intent(in), optional :: cap(:), gate(:), x_fixed(:)
-      logical, intent(in), optional :: fixed(:), search
-      real(wp), intent(in), optional :: cap_slope(:)
-      real(wp) :: z(max_chain), c(max_chain), g(max_chain), xf(max_chain), ks(max_chain), zfree, sfree
-      logical :: fx(max_chain), plain, by_force
+      logical, intent(in), optional :: search
+      real(wp) :: z(max_chain), zfree, sfree, held_sum
+      logical :: plain, by_force
       integer :: i, nfree, i1, i2
       type(branch_point_t) :: bp
       integer :: seg
 
-      ! (whole arrays of max_chain, not 1:n: stores in line, where a length
-      ! known only at run time is a call of memset each, some 15 % of a slack
-      ! chain's split; the elements beyond n are never read)
-      c = 0.0_wp
-      g = 0.0_wp
-      fx = .false.
-      xf = 0.0_wp
-      ks = 0.0_wp
-      if (present(cap)) c(1:n) = cap(1:n)
-      if (present(cap_slope)) ks(1:n) = cap_slope(1:n)
-      if (present(gate)) g(1:n) = max(gate(1:n), 0.0_wp)
-      if (present(fixed)) fx(1:n) = fixed(1:n)
-      if (present(x_fixed)) xf(1:n) = x_fixed(1:n)
       sp%iterations = 0
       sp%sweeps = 0
       sp%path = path_none
@@ -129,72 +120,79 @@ contains
          sp%status = split_not_finite
          return
       end if
+      ! the part of s the free elements share; the first and last free ones
+      held_sum = 0.0_wp
+      nfree = 0
+      i1 = 0
+      i2 = 0
       do i = 1, n
-         if (fx(i)) then
-            sp%x(i) = xf(i)
+         if (fixed(i)) then
+            sp%x(i) = x_fixed(i)
             sp%slope(i) = rigid_slope
+            held_sum = held_sum + x_fixed(i)
+         else
+            nfree = nfree + 1
+            if (i1 == 0) i1 = i
+            i2 = i
          end if
       end do
-      ! the part of s the free elements share
-      sfree = s - sum(xf(1:n), mask=fx(1:n))
-      nfree = count(.not. fx(1:n))
+      sfree = s - held_sum
       sp%region = region_slack
       if (.not. sfree > 0.0_wp .or. nfree < 1) then
          sp%guess = 0.0_wp
          return
       end if
       ! (the residual deformations only past the slack, which most splits are)
+      zfree = 0.0_wp
+      plain = .true.
       do i = 1, n
-         if (fx(i)) then
-            z(i) = xf(i)
+         if (fixed(i)) then
+            z(i) = x_fixed(i)
          else
             z(i) = zero_extent(law(i), mem(i))
+            zfree = zfree + z(i)
+            plain = plain .and. .not. (cap(i) > 0.0_wp .or. gate(i) > 0.0_wp)
          end if
       end do
-      zfree = sum(z(1:n), mask=.not. fx(1:n))
       if (sfree <= zfree) then
          ! taken up within the residual deformations: no force; the free
          ! deformation is shared in proportion to them (continuous with the
          ! loaded split)
          sp%region = region_unloaded
          do i = 1, n
-            if (.not. fx(i)) sp%x(i) = sfree*z(i)/zfree
+            if (.not. fixed(i)) sp%x(i) = sfree*z(i)/zfree
          end do
-         sp%guess = sp%x(findloc(fx(1:n), .false., 1))
+         sp%guess = sp%x(i1)
          return
       end if
 
       sp%region = region_loaded
-      plain = .true.
-      do i = 1, n
-         if (fx(i)) cycle
-         plain = plain .and. .not. (c(i) > 0.0_wp .or. g(i) > 0.0_wp)
-      end do
       by_force = .false.
       if (present(search)) by_force = search
       if (nfree == 1) then
          ! one free element: its deformation is what the others leave
-         i = findloc(fx(1:n), .false., 1)
+         i = i1
          sp%x(i) = sfree
          seg = 0
-         if (c(i) > 0.0_wp .and. .not. ks(i) > 0.0_wp) sp%x(i) = min(sfree, c(i))
-         call element_eval(law(i), mem(i), sp%x(i), c(i), ks(i), seg, bp)
+         if (cap(i) > 0.0_wp .and. .not. cap_slope(i) > 0.0_wp) sp%x(i) = min(sfree, cap(i))
+         call element_eval(law(i), mem(i), sp%x(i), cap(i), cap_slope(i), seg, bp)
          sp%force = bp%force
          sp%slope(i) = bp%slope
          sp%loading(i) = bp%loading
-         if (g(i) > 0.0_wp .and. sp%x(i) > max(mem(i)%x_hold, z(i))) sp%force = sp%force + g(i)
-         if (c(i) > 0.0_wp .and. .not. ks(i) > 0.0_wp .and. sfree >= c(i)) sp%slope(i) = rigid_slope
+         if (gate(i) > 0.0_wp .and. sp%x(i) > max(mem(i)%x_hold, z(i))) sp%force = sp%force + gate(i)
+         if (cap(i) > 0.0_wp .and. .not. cap_slope(i) > 0.0_wp .and. sfree >= cap(i)) sp%slope(i) = rigid_slope
          sp%iterations = 1
          sp%guess = sp%x(i)
       else if (nfree == 2 .and. plain .and. .not. by_force) then
-         i1 = findloc(fx(1:n), .false., 1)
-         i2 = findloc(fx(1:n), .false., 1, back=.true.)
-         call pair_split(law, mem, i1, i2, sfree, z, max_iter, sp, guess)
+         call pair_split(n, law, mem, i1, i2, sfree, z, max_iter, sp, guess)
       else
-         call split_by_force(n, law, mem, s, z, c, g, ks, fx, max_iter, by_force, sp, guess)
+         call split_by_force(n, law, mem, s, z, cap, gate, cap_slope, fixed, max_iter, by_force, sp, guess)
       end if
       if (sp%status /= split_ok) then
-         sp%x(1:n) = merge(xf(1:n), 0.0_wp, fx(1:n))
+         do i = 1, n
+            sp%x(i) = 0.0_wp
+            if (fixed(i)) sp%x(i) = x_fixed(i)
+         end do
          sp%force = 0.0_wp
       end if
    end subroutine split_deformation
@@ -203,11 +201,12 @@ contains
    !! g(e) = F_i1(e) - F_i2(s - e) = 0, g' = k_1 + k_2 >= 0 (g(z_1) < 0 <
    !! g(s - z_2)). First point: the secant through the bracket's ends (exact
    !! for linear branches), or the guess.
-   pure subroutine pair_split(law, mem, i1, i2, s, z, max_iter, sp, guess)
-      type(recurrent_law_t), intent(in) :: law(:)
-      type(loading_memory_t), intent(in) :: mem(:)
+   pure subroutine pair_split(n, law, mem, i1, i2, s, z, max_iter, sp, guess)
+      integer, intent(in) :: n
+      type(recurrent_law_t), intent(in) :: law(n)
+      type(loading_memory_t), intent(in) :: mem(n)
       integer, intent(in) :: i1, i2
-      real(wp), intent(in) :: s, z(:)
+      real(wp), intent(in) :: s, z(n)
       integer, intent(in) :: max_iter
       type(deformation_split_t), intent(inout) :: sp
       real(wp), intent(in), optional :: guess
@@ -305,10 +304,10 @@ contains
    !! alone (the tests' reference).
    pure subroutine split_by_force(n, law, mem, s, z, cap, gate, cap_slope, fixed, max_iter, search, sp, guess)
       integer, intent(in) :: n
-      type(recurrent_law_t), intent(in) :: law(:)
-      type(loading_memory_t), intent(in) :: mem(:)
-      real(wp), intent(in) :: s, z(:), cap(:), gate(:), cap_slope(:)
-      logical, intent(in) :: fixed(:)
+      type(recurrent_law_t), intent(in) :: law(n)
+      type(loading_memory_t), intent(in) :: mem(n)
+      real(wp), intent(in) :: s, z(n), cap(n), gate(n), cap_slope(n)
+      logical, intent(in) :: fixed(n)
       integer, intent(in) :: max_iter
       logical, intent(in) :: search      !< the search by force alone, no Newton's method first
       type(deformation_split_t), intent(inout) :: sp
@@ -321,17 +320,22 @@ contains
       integer :: i, status, seg(max_chain)
       type(branch_point_t) :: bp
       logical :: done, newton_free(max_chain), have_lo, have_hi
+      logical :: plastic_held(max_chain)     ! held_plastic of each element (its memory is read-only here)
       real(wp) :: f_newton, zsum
       ! each element's last point (x_at, f_at) on its branch and its slope k_at
       ! there (f_at < 0: none yet): where its next search at another force starts
       real(wp) :: x_at(max_chain), f_at(max_chain), k_at(max_chain)
 
-      seg(1:n) = 0
-      f_cap(1:n) = huge(1.0_wp)
-      x_h(1:n) = 0.0_wp
-      f_h(1:n) = 0.0_wp
+      ! (whole arrays of max_chain: stores in line, not a call of memset each;
+      ! the elements beyond n are never read)
+      seg = 0
+      f_cap = huge(1.0_wp)
+      x_h = 0.0_wp
+      f_h = 0.0_wp
+      x = 0.0_wp
       zsum = sum(z(1:n))
       do i = 1, n
+         plastic_held(i) = held_plastic(law(i), mem(i))
          x_max(i) = s - zsum + z(i)
          if (fixed(i)) then
             x_max(i) = z(i)
@@ -365,16 +369,16 @@ contains
       ! (D-B11) first Newton's method on the deformations and the force at once;
       ! where it does not converge in a few sweeps, or meets what it cannot
       ! handle, the search by force below decides, from where it ended
-      f_at(1:n) = -1.0_wp
-      x_at(1:n) = 0.0_wp
-      k_at(1:n) = 0.0_wp
+      f_at = -1.0_wp
+      x_at = 0.0_wp
+      k_at = 0.0_wp
       if (.not. search) then
          call newton_split(f0, x, seg, f_newton, sp%slope, newton_free, sp%loading, sp%iterations, sp%sweeps, &
                            x_at, f_at, k_at, done)
          if (done) then
             sp%force = f_newton
             sp%path = path_newton
-            sp%x(1:n) = x(1:n)
+            sp%x = x
             do i = 1, n
                if (newton_free(i)) cycle
                sp%slope(i) = rigid_slope        ! fixed, held (D-B10), at its cap, or behind its gate
@@ -434,7 +438,7 @@ contains
          x(1:n) = x_lo(1:n) + theta*(x_hi(1:n) - x_lo(1:n))
          sp%force = r%lo + theta*(r%hi - r%lo)
       end if
-      sp%x(1:n) = x(1:n)
+      sp%x = x
       do i = 1, n
          if (held(i, sp%force)) then
             sp%slope(i) = rigid_slope        ! fixed, held (D-B10), bottomed out, or held by its gate
@@ -485,7 +489,7 @@ contains
       pure subroutine newton_split(f_start, xs, hint, f, kb, free, on_loading, evaluations, sweeps, x_at, f_at, k_at, &
                                    done)
          real(wp), intent(in) :: f_start
-         real(wp), intent(out) :: xs(:)           !< the deformations
+         real(wp), intent(inout) :: xs(:)         !< the deformations (set for the n elements)
          integer, intent(inout) :: hint(:)        !< each element's table interval
          real(wp), intent(out) :: f               !< the force
          real(wp), intent(inout) :: kb(:)         !< the free elements' slopes
@@ -634,7 +638,7 @@ contains
          x_held = 0.0_wp
          if (fixed(k)) then
             x_held = z(k)
-         else if (held_plastic(law(k), mem(k)) .and. f <= mem(k)%f_max) then
+         else if (plastic_held(k) .and. f <= mem(k)%f_max) then
             x_held = mem(k)%delta_max
          else if (f >= f_cap(k)) then
             x_held = x_max(k)
@@ -648,7 +652,8 @@ contains
       !> x_i(F) for every element, h(F) = sum x_i - s and h'(F).
       pure subroutine deformations_at(f, xs, hf, dhf, st, iterations, hint, x_last, f_last, k_last)
          real(wp), intent(in) :: f
-         real(wp), intent(out) :: xs(:), hf, dhf
+         real(wp), intent(inout) :: xs(:)      ! (set for the n elements)
+         real(wp), intent(out) :: hf, dhf
          integer, intent(out) :: st
          integer, intent(inout) :: iterations
          integer, intent(inout) :: hint(:)     ! each element's table interval
@@ -689,9 +694,11 @@ contains
             else
                ! the start: on the tangent at the element's last point (an outer step
                ! or Newton's method before), else on its secant
-               x0 = on_secant(k, f)
-               if (f_last(k) >= 0.0_wp .and. k_last(k) > min_slope .and. k_last(k) < rigid_slope) &
+               if (f_last(k) >= 0.0_wp .and. k_last(k) > min_slope .and. k_last(k) < rigid_slope) then
                   x0 = x_last(k) + (f - f_last(k))/k_last(k)
+               else
+                  x0 = on_secant(k, f)
+               end if
                call root_begin(q, lo, hi, x0, defl_tol*s, force_tol, max_iter)
                do
                   call element_eval(law(k), mem(k), q%x, cap(k), cap_slope(k), hint(k), b)
