@@ -92,9 +92,11 @@ module switch_location
       !! with a function that crossed over it (issue 16 section 4)
       integer, allocatable :: group_of(:)
       logical, allocatable :: searched(:)
-      !> at the step's end (or the trial's): the values the functions of
-      !! the groups not searched keep through the search (none crossed)
-      real(wp), allocatable :: g_fill(:)
+      !> the functions of the searched groups, idx(1:n_searched): the search
+      !! reads and writes only these (the others keep their values at the
+      !! step's end, in g_hi, on the side they started on)
+      integer, allocatable :: idx(:)
+      integer :: n_searched = 0
       real(wp) :: t_prev = 0.0_wp          !< the last accepted state before the step
       !> a step taken again with the stepper's continuous extension stops
       !! this much short of its end and crosses the rest on the slope there
@@ -137,7 +139,7 @@ contains
       this%n_g = n
       this%on = relocates .and. n > 0
       if (.not. this%on) return
-      allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%live(n), this%g_fill(n))
+      allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%live(n), this%idx(n))
       allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n), this%g_end(n))
       allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)), this%y_lo(size(y)), this%f_lo(size(y)))
       allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)))
@@ -197,7 +199,7 @@ contains
       real(wp), intent(in), optional :: t_limit
       type(error_t) :: retry
       real(wp) :: t_lo, t_hi, t_to, t_end, tol_t, w_lo, w_hi, width(2), t_lo_start, t_seed
-      integer :: k, side, last_side
+      integer :: k, side, last_side, i, j
       integer(i8) :: rejected_before
       logical :: on_root, on_dense, current_is_hi, dense_done, is_trial, short, current, hi_bound
       located = .false.
@@ -223,12 +225,17 @@ contains
       ! at either end (it may have crossed and crossed back inside the
       ! step, which a try of the search can find); the others keep their
       ! values at the step's end, on the same side as at its start
-      this%g_fill = this%g_hi
       this%searched = .false.
       do k = 1, this%n_g
          if (this%live(k) .and. (crossed(this%g_prev(k), this%g_hi(k)) .or. &
              abs(this%g_hi(k) - this%g_prev(k)) >= min(abs(this%g_prev(k)), abs(this%g_hi(k))))) &
             this%searched(this%group_of(k)) = .true.
+      end do
+      this%n_searched = 0
+      do k = 1, this%n_g
+         if (.not. this%searched(this%group_of(k))) cycle
+         this%n_searched = this%n_searched + 1
+         this%idx(this%n_searched) = k
       end do
       if (is_trial) then
          if (this%n_run >= max_run) return
@@ -294,11 +301,17 @@ contains
          ! the bracket's start on a root of a function that changed sign
          ! over the step (a try that landed on it, g exactly 0): the root is
          ! there, and the next try goes just past it
-         on_root = any(this%live .and. crossed(this%g_prev, this%g_hi) .and. .not. abs(this%g_lo) > 0.0_wp)
+         on_root = .false.
+         do i = 1, this%n_searched
+            j = this%idx(i)
+            on_root = on_root .or. (this%live(j) .and. crossed(this%g_prev(j), this%g_hi(j)) &
+                                    .and. .not. abs(this%g_lo(j)) > 0.0_wp)
+         end do
          if (.not. on_root .and. .not. hi_bound) then
-            if (t_hi - first_crossing(this%g_lo, this%g_hi, this%live, 1.0_wp, 1.0_wp, t_lo, t_hi) <= tol_t) exit
+            if (t_hi - first_crossing(this%g_lo, this%g_hi, this%live, this%idx(:this%n_searched), &
+                                      1.0_wp, 1.0_wp, t_lo, t_hi) <= tol_t) exit
          end if
-         t_to = first_crossing(this%g_lo, this%g_hi, this%live, w_lo, w_hi, t_lo, t_hi)
+         t_to = first_crossing(this%g_lo, this%g_hi, this%live, this%idx(:this%n_searched), w_lo, w_hi, t_lo, t_hi)
          if (k == 1 .and. .not. on_dense) t_to = t_seed
          if (on_root) t_to = min(t_lo + 0.5_wp*tol_t, 0.5_wp*(t_lo + t_hi))
          ! the middle when two tries did not halve the bracket: it at least
@@ -330,10 +343,10 @@ contains
          ! the regula falsi reaches) is short of it, so that the state
          ! accepted has |g| > 0 and the effect's accept decides there as on
          ! the far side (a dislocation landed on its limit was not taken)
-         if (any(this%live .and. passed(this%g_prev, this%g_try))) then
+         if (any_passed(this%g_prev, this%g_try, this%live, this%idx(:this%n_searched))) then
             side = 1                       ! past a switch: the bracket's end
             t_hi = t
-            this%g_hi = this%g_try
+            call copy_on(this%g_hi, this%g_try, this%idx(:this%n_searched))
             this%y_hi = y
             hi_bound = .false.
             if (last_side == 1) w_lo = 0.5_wp*w_lo
@@ -342,7 +355,7 @@ contains
          else
             side = -1                      ! short of every switch: the bracket's start
             t_lo = t
-            this%g_lo = this%g_try
+            call copy_on(this%g_lo, this%g_try, this%idx(:this%n_searched))
             this%y_lo = y
             this%f_lo = stepper%f
             if (last_side == -1) w_hi = 0.5_wp*w_hi
@@ -480,7 +493,7 @@ contains
       logical, intent(out) :: short     !< a step taken again ended short of the time asked
       type(error_t) :: retry
       real(wp) :: t_to, t_b
-      integer :: j
+      integer :: j, i
       logical :: current
       done = .false.
       short = .false.
@@ -502,21 +515,21 @@ contains
             call stepper%dense(stepper%t_trial, this%y_work)
             call search_values(this, sys, stepper%t_trial, this%y_work, this%g_dt, stepper%stats)
             short = .true.
-            if (.not. any(this%live .and. crossed(this%g_lo, this%g_dt))) exit
+            if (.not. any_crossed(this%g_lo, this%g_dt, this%live, this%idx(:this%n_searched))) exit
             ! (a try of the location, counted as taken again, not rejected)
             stepper%stats%rejected = stepper%stats%rejected - 1
             stepper%stats%retaken = stepper%stats%retaken + 1
             t_b = stepper%t_trial
-            this%g_hi = this%g_dt
+            call copy_on(this%g_hi, this%g_dt, this%idx(:this%n_searched))
             this%g_shift = 0.0_wp
             short = .false.
             cycle
          end if
          if (short) exit
          call search_values(this, sys, t, y, this%g_try, stepper%stats)
-         if (any(this%live .and. passed(this%g_prev, this%g_try))) then
+         if (any_passed(this%g_prev, this%g_try, this%live, this%idx(:this%n_searched))) then
             t_hi = t
-            this%g_hi = this%g_try
+            call copy_on(this%g_hi, this%g_try, this%idx(:this%n_searched))
             this%y_hi = y
             current_is_hi = current
             done = .true.
@@ -525,10 +538,12 @@ contains
          ! short of every switch: the bracket's start, and the extension
          ! shifted to the step's switching functions there
          t_lo = t
-         this%g_lo = this%g_try
+         call copy_on(this%g_lo, this%g_try, this%idx(:this%n_searched))
          call stepper%dense(t, this%y_work)
          call search_values(this, sys, t, this%y_work, this%g_shift, stepper%stats)
-         this%g_shift = this%g_try - this%g_shift
+         do i = 1, this%n_searched
+            this%g_shift(this%idx(i)) = this%g_try(this%idx(i)) - this%g_shift(this%idx(i))
+         end do
       end do
       ! (the caller's bracket ends at the step's end)
       this%g_hi = this%g_end
@@ -551,20 +566,24 @@ contains
       logical, intent(in) :: dense
       real(wp) :: t_past
       real(wp) :: lo, hi, tau, w_lo, w_hi, h, sig
-      integer :: k, last_side
+      integer :: k, last_side, i, j
       lo = t_a
       hi = t_b
       h = t_b - t_a
-      this%g_da = this%g_lo
-      this%g_db = this%g_hi + this%g_shift
+      associate (ix => this%idx(:this%n_searched))
+      do i = 1, this%n_searched
+         j = ix(i)
+         this%g_da(j) = this%g_lo(j)
+         this%g_db(j) = this%g_hi(j) + this%g_shift(j)
+      end do
       t_past = t_b
-      if (.not. any(this%live .and. crossed(this%g_da, this%g_db))) return
+      if (.not. any_crossed(this%g_da, this%g_db, this%live, ix)) return
       w_lo = 1.0_wp
       w_hi = 1.0_wp
       last_side = 0
       do k = 1, max_tries
          if (hi - lo <= 0.125_wp*tol_t) exit
-         tau = first_crossing(this%g_da, this%g_db, this%live, w_lo, w_hi, lo, hi)
+         tau = first_crossing(this%g_da, this%g_db, this%live, ix, w_lo, w_hi, lo, hi)
          if (mod(k, 4) == 0) tau = 0.5_wp*(lo + hi)
          if (.not. (tau > lo .and. tau < hi)) tau = 0.5_wp*(lo + hi)
          if (.not. (tau > lo .and. tau < hi)) exit
@@ -578,22 +597,25 @@ contains
                           + (-2.0_wp*sig**3 + 3.0_wp*sig**2)*this%y_end + (sig**3 - sig**2)*h*this%f_end
          end if
          call search_values(this, sys, tau, this%y_work, this%g_dt, stats)
-         this%g_dt = this%g_dt + this%g_shift
-         if (any(this%live .and. crossed(this%g_da, this%g_dt))) then
+         do i = 1, this%n_searched
+            this%g_dt(ix(i)) = this%g_dt(ix(i)) + this%g_shift(ix(i))
+         end do
+         if (any_crossed(this%g_da, this%g_dt, this%live, ix)) then
             hi = tau
-            this%g_db = this%g_dt
+            call copy_on(this%g_db, this%g_dt, ix)
             if (last_side == 1) w_lo = 0.5_wp*w_lo
             w_hi = 1.0_wp
             last_side = 1
          else
             lo = tau
-            this%g_da = this%g_dt
+            call copy_on(this%g_da, this%g_dt, ix)
             if (last_side == -1) w_hi = 0.5_wp*w_hi
             w_lo = 1.0_wp
             last_side = -1
          end if
       end do
       t_past = hi
+      end associate
    end function interpolant_crossing
 
    !> The step taken again from the marked state to t_to, into (t, y); the
@@ -691,13 +713,15 @@ contains
    !> The earliest time in (t_lo, t_hi) at which a switching function that
    !! changed sign over the bracket reaches zero, by the regula falsi of
    !! each (its ends weighted by Illinois' factors w_lo, w_hi).
-   pure real(wp) function first_crossing(g_lo, g_hi, live, w_lo, w_hi, t_lo, t_hi) result(t_first)
+   pure real(wp) function first_crossing(g_lo, g_hi, live, idx, w_lo, w_hi, t_lo, t_hi) result(t_first)
       real(wp), intent(in) :: g_lo(:), g_hi(:), w_lo, w_hi, t_lo, t_hi
       logical, intent(in) :: live(:)
+      integer, intent(in) :: idx(:)          !< the functions searched
       real(wp) :: a, b, frac
-      integer :: i
+      integer :: i, m
       t_first = t_hi
-      do i = 1, size(g_lo)
+      do m = 1, size(idx)
+         i = idx(m)
          if (.not. (live(i) .and. crossed(g_lo(i), g_hi(i)))) cycle
          a = w_lo*g_lo(i)
          b = w_hi*g_hi(i)
@@ -707,10 +731,45 @@ contains
       end do
    end function first_crossing
 
+   !> Whether a live function among idx changed sign from a to b (crossed).
+   pure logical function any_crossed(a, b, live, idx) result(yes)
+      real(wp), intent(in) :: a(:), b(:)
+      logical, intent(in) :: live(:)
+      integer, intent(in) :: idx(:)
+      integer :: m
+      yes = .false.
+      do m = 1, size(idx)
+         yes = yes .or. (live(idx(m)) .and. crossed(a(idx(m)), b(idx(m))))
+      end do
+   end function any_crossed
+
+   !> Whether a live function among idx has in b the sign opposite to a's (passed).
+   pure logical function any_passed(a, b, live, idx) result(yes)
+      real(wp), intent(in) :: a(:), b(:)
+      logical, intent(in) :: live(:)
+      integer, intent(in) :: idx(:)
+      integer :: m
+      yes = .false.
+      do m = 1, size(idx)
+         yes = yes .or. (live(idx(m)) .and. passed(a(idx(m)), b(idx(m))))
+      end do
+   end function any_passed
+
+   !> dst = src on the functions idx.
+   pure subroutine copy_on(dst, src, idx)
+      real(wp), intent(inout) :: dst(:)
+      real(wp), intent(in) :: src(:)
+      integer, intent(in) :: idx(:)
+      integer :: m
+      do m = 1, size(idx)
+         dst(idx(m)) = src(idx(m))
+      end do
+   end subroutine copy_on
+
    !> Every switching function of the scene at (t, y), in the order of the
    !! occupants and their effects (counted in stats). The body state is
    !! made only for an occupant with an effect that has one.
-   subroutine switch_values(sys, t, y, g, stats, rates, counts, only, rest)
+   subroutine switch_values(sys, t, y, g, stats, rates, counts, only)
       type(crash_system_t), intent(in) :: sys
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
@@ -719,9 +778,8 @@ contains
       real(wp), intent(inout), contiguous :: rates(:)      !< workspace (the sliding switches' forces)
       integer(i8), intent(inout) :: counts(:)
       !> only the groups (switch_groups) marked here are evaluated; the
-      !! others' functions are given rest's values
+      !! others' functions are left as they are
       logical, intent(in), optional :: only(:)
-      real(wp), intent(in), optional :: rest(:)
       integer :: o, k, xo, ao, i, grp
       type(body_state_t) :: st
       logical :: made
@@ -736,7 +794,6 @@ contains
                   grp = grp + 1
                   if (present(only)) then
                      if (.not. only(grp)) then
-                        g(i + 1:i + e%n_switch) = rest(i + 1:i + e%n_switch)
                         stats%switch_groups_skipped = stats%switch_groups_skipped + 1
                         i = i + e%n_switch
                         cycle
@@ -754,7 +811,6 @@ contains
                grp = grp + 1
                if (present(only)) then
                   if (.not. only(grp)) then
-                     g(i + 1:i + 2*occ%n_slide) = rest(i + 1:i + 2*occ%n_slide)
                      stats%switch_groups_skipped = stats%switch_groups_skipped + 1
                      i = i + 2*occ%n_slide
                      cycle
@@ -772,8 +828,8 @@ contains
    end subroutine switch_values
 
    !> The switching functions at (t, y) as the search for a switch in the
-   !! step needs them: those of the searched groups evaluated, the others
-   !! at their values at the step's end (g_fill).
+   !! step needs them: those of the searched groups (the others, which the
+   !! search does not read, are left as they are).
    subroutine search_values(this, sys, t, y, g, stats)
       type(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(in) :: sys
@@ -781,7 +837,7 @@ contains
       real(wp), intent(in), contiguous :: y(:)
       real(wp), intent(inout) :: g(:)
       type(step_stats_t), intent(inout) :: stats
-      call switch_values(sys, t, y, g, stats, this%rates, this%counts, this%searched, this%g_fill)
+      call switch_values(sys, t, y, g, stats, this%rates, this%counts, this%searched)
    end subroutine search_values
 
    !> The group of each switching function of the scene, in switch_values'
