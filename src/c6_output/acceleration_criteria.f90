@@ -206,7 +206,8 @@ contains
    pure subroutine criteria_add_motion(this, t, a_vec, v_vec)
       class(acceleration_criteria_t), intent(inout) :: this
       real(wp), intent(in) :: t, a_vec(2), v_vec(2)
-      real(wp) :: dt, c(2, 0:2), a, tk, s_peak, a_peak
+      real(wp) :: dt, c(2, 0:2), a, tk, s_peak, a_peak, m_step(3)
+      integer :: i
       logical :: smooth, first
       a = hypot(a_vec(1), a_vec(2))
       smooth = this%motion
@@ -226,14 +227,20 @@ contains
             c(:, 0) = this%a_vec
             c(:, 1) = 6.0_wp*(v_vec - this%v_vec)/dt - 4.0_wp*this%a_vec - 2.0_wp*a_vec
             c(:, 2) = -6.0_wp*(v_vec - this%v_vec)/dt + 3.0_wp*this%a_vec + 3.0_wp*a_vec
-            this%gsi = this%gsi + dt*quadrature(c, 1.0_wp, .true.)
+            ! |a| at the step's Gauss nodes, for the GSI and for V at the step's end
+            ! (quadrature's with x = 1, where x*node and r*x are exact: the
+            ! magnitudes taken once for both)
+            do i = 1, 3
+               m_step(i) = magnitude(c, gl_node(i))
+            end do
+            this%gsi = this%gsi + dt*nodes_sum(m_step, .true.)
             call add_piece(this, this%a, a, dt)
             do
                tk = this%t0 + real(this%k + 1, wp)*this%h
                if (tk > t) exit
                call next_grid_point(this, this%v + dt*quadrature(c, (tk - this%t)/dt, .false.))
             end do
-            this%v = this%v + dt*quadrature(c, 1.0_wp, .false.)
+            this%v = this%v + dt*nodes_sum(m_step, .false.)
             call step_peak(c, s_peak, a_peak)
             ! (an interior peak only where it stands above the ends: not a
             ! rounding of a constant magnitude)
@@ -252,15 +259,28 @@ contains
       real(wp), intent(in) :: c(2, 0:2), x
       logical, intent(in) :: gsi
       integer :: i
-      real(wp) :: m
+      real(wp) :: m(3)
+      do i = 1, 3
+         m(i) = magnitude(c, x*gl_node(i))
+      end do
+      r = nodes_sum(m, gsi)*x
+   end function quadrature
+
+   !> quadrature's weighted sum of the magnitudes m at its nodes (of their
+   !! 2.5th powers when gsi), without its factor x.
+   pure real(wp) function nodes_sum(m, gsi) result(r)
+      real(wp), intent(in) :: m(3)
+      logical, intent(in) :: gsi
+      integer :: i
       r = 0.0_wp
       do i = 1, 3
-         m = magnitude(c, x*gl_node(i))
-         if (gsi) m = gadd(m)
-         r = r + gl_weight(i)*m
+         if (gsi) then
+            r = r + gl_weight(i)*gadd(m(i))
+         else
+            r = r + gl_weight(i)*m(i)
+         end if
       end do
-      r = r*x
-   end function quadrature
+   end function nodes_sum
 
    pure real(wp) function magnitude(c, s)
       real(wp), intent(in) :: c(2, 0:2), s
@@ -276,14 +296,18 @@ contains
    pure subroutine step_peak(c, s_peak, a_peak)
       real(wp), intent(in) :: c(2, 0:2)
       real(wp), intent(out) :: s_peak, a_peak
-      real(wp) :: lo, hi, mid, m
+      real(wp) :: lo, hi, mid, m, edge_slope(0:peak_cells)
       integer :: i, it
       s_peak = 0.0_wp
       a_peak = 0.0_wp
+      ! (the slope at each cell's edge once: a cell's end is the next one's start)
+      do i = 0, peak_cells
+         edge_slope(i) = slope(real(i, wp)/peak_cells)
+      end do
       do i = 1, peak_cells
          lo = real(i - 1, wp)/peak_cells
          hi = real(i, wp)/peak_cells
-         if (.not. (slope(lo) > 0.0_wp .and. slope(hi) <= 0.0_wp)) cycle
+         if (.not. (edge_slope(i - 1) > 0.0_wp .and. edge_slope(i) <= 0.0_wp)) cycle
          do it = 1, 60
             mid = 0.5_wp*(lo + hi)
             if (.not. (mid > lo .and. mid < hi)) exit
