@@ -343,7 +343,7 @@ contains
          ! the regula falsi reaches) is short of it, so that the state
          ! accepted has |g| > 0 and the effect's accept decides there as on
          ! the far side (a dislocation landed on its limit was not taken)
-         if (any_passed(this%g_prev, this%g_try, this%live, this%idx(:this%n_searched))) then
+         if (any_change(this%g_prev, this%g_try, this%live, this%idx(:this%n_searched), .true.)) then
             side = 1                       ! past a switch: the bracket's end
             t_hi = t
             call copy_on(this%g_hi, this%g_try, this%idx(:this%n_searched))
@@ -515,7 +515,7 @@ contains
             call stepper%dense(stepper%t_trial, this%y_work)
             call search_values(this, sys, stepper%t_trial, this%y_work, this%g_dt, stepper%stats)
             short = .true.
-            if (.not. any_crossed(this%g_lo, this%g_dt, this%live, this%idx(:this%n_searched))) exit
+            if (.not. any_change(this%g_lo, this%g_dt, this%live, this%idx(:this%n_searched), .false.)) exit
             ! (a try of the location, counted as taken again, not rejected)
             stepper%stats%rejected = stepper%stats%rejected - 1
             stepper%stats%retaken = stepper%stats%retaken + 1
@@ -527,7 +527,7 @@ contains
          end if
          if (short) exit
          call search_values(this, sys, t, y, this%g_try, stepper%stats)
-         if (any_passed(this%g_prev, this%g_try, this%live, this%idx(:this%n_searched))) then
+         if (any_change(this%g_prev, this%g_try, this%live, this%idx(:this%n_searched), .true.)) then
             t_hi = t
             call copy_on(this%g_hi, this%g_try, this%idx(:this%n_searched))
             this%y_hi = y
@@ -577,7 +577,7 @@ contains
          this%g_db(j) = this%g_hi(j) + this%g_shift(j)
       end do
       t_past = t_b
-      if (.not. any_crossed(this%g_da, this%g_db, this%live, ix)) return
+      if (.not. any_change(this%g_da, this%g_db, this%live, ix, .false.)) return
       w_lo = 1.0_wp
       w_hi = 1.0_wp
       last_side = 0
@@ -600,7 +600,7 @@ contains
          do i = 1, this%n_searched
             this%g_dt(ix(i)) = this%g_dt(ix(i)) + this%g_shift(ix(i))
          end do
-         if (any_crossed(this%g_da, this%g_dt, this%live, ix)) then
+         if (any_change(this%g_da, this%g_dt, this%live, ix, .false.)) then
             hi = tau
             call copy_on(this%g_db, this%g_dt, ix)
             if (last_side == 1) w_lo = 0.5_wp*w_lo
@@ -731,29 +731,25 @@ contains
       end do
    end function first_crossing
 
-   !> Whether a live function among idx changed sign from a to b (crossed).
-   pure logical function any_crossed(a, b, live, idx) result(yes)
+   !> Whether a live function among idx has in b the sign opposite to a's
+   !! (strict: passed) or changed sign from a to b (crossed).
+   pure logical function any_change(a, b, live, idx, strict) result(yes)
       real(wp), intent(in) :: a(:), b(:)
-      logical, intent(in) :: live(:)
+      logical, intent(in) :: live(:), strict
       integer, intent(in) :: idx(:)
-      integer :: m
+      integer :: m, i
       yes = .false.
       do m = 1, size(idx)
-         yes = yes .or. (live(idx(m)) .and. crossed(a(idx(m)), b(idx(m))))
+         i = idx(m)
+         if (.not. live(i)) cycle
+         if (strict) then
+            yes = passed(a(i), b(i))
+         else
+            yes = crossed(a(i), b(i))
+         end if
+         if (yes) return
       end do
-   end function any_crossed
-
-   !> Whether a live function among idx has in b the sign opposite to a's (passed).
-   pure logical function any_passed(a, b, live, idx) result(yes)
-      real(wp), intent(in) :: a(:), b(:)
-      logical, intent(in) :: live(:)
-      integer, intent(in) :: idx(:)
-      integer :: m
-      yes = .false.
-      do m = 1, size(idx)
-         yes = yes .or. (live(idx(m)) .and. passed(a(idx(m)), b(idx(m))))
-      end do
-   end function any_passed
+   end function any_change
 
    !> dst = src on the functions idx.
    pure subroutine copy_on(dst, src, idx)
