@@ -400,16 +400,21 @@ contains
       subroutine merge_near(t_hi)
          real(wp), intent(inout) :: t_hi
          real(wp) :: t_w, t_m, frac
-         integer :: i
-         logical :: later
+         integer :: i, m, n_on
+         logical :: later, inside, ahead
          ! the state no earlier than merge_window after the step's start
          t_w = max(t_hi, this%t_prev) + merge_window + 8.0_wp*spacing(t_end)
          this%y_work = this%y_hi + (t_w - t_hi)*stepper%f
-         call switch_values(sys, t_w, this%y_work, this%g_try, stepper%stats, this%rates, this%counts)
+         ! within the step only the searched functions can cross (the others
+         ! kept their side over all of it); past its end, any
+         inside = t_w <= t_end
+         call values_at(t_w, this%g_try, inside)
+         n_on = merge(this%n_searched, this%n_g, inside)
          ! the switches still ahead at t_hi that lie before t_w: past the last
          t_m = max(t_hi, this%t_prev + merge_window + 8.0_wp*spacing(t_end))
          later = .false.
-         do i = 1, size(this%g_try)
+         do m = 1, n_on
+            i = merge(this%idx(m), m, inside)
             if (.not. (this%live(i) .and. .not. passed(this%g_prev(i), this%g_hi(i)) &
                        .and. passed(this%g_prev(i), this%g_try(i)))) cycle
             later = .true.
@@ -421,9 +426,14 @@ contains
          if (later) then
             ! past all of them at t_m, or else at t_w
             this%y_work = this%y_hi + (t_m - t_hi)*stepper%f
-            call switch_values(sys, t_m, this%y_work, this%g_dt, stepper%stats, this%rates, this%counts)
-            if (any(this%live .and. .not. passed(this%g_prev, this%g_dt) .and. passed(this%g_prev, this%g_try))) &
-               t_m = t_w
+            call values_at(t_m, this%g_dt, inside)
+            ahead = .false.
+            do m = 1, n_on
+               i = merge(this%idx(m), m, inside)
+               ahead = ahead .or. (this%live(i) .and. .not. passed(this%g_prev(i), this%g_dt(i)) &
+                                   .and. passed(this%g_prev(i), this%g_try(i)))
+            end do
+            if (ahead) t_m = t_w
          end if
          if (present(t_limit)) then
             t_m = min(t_m, t_limit)
@@ -435,6 +445,19 @@ contains
             current_is_hi = .false.
          end if
       end subroutine merge_near
+
+      !> The switching functions at (t_at, y_work) that merge_near reads:
+      !! the searched ones inside the step, else all.
+      subroutine values_at(t_at, g, searched_only)
+         real(wp), intent(in) :: t_at
+         real(wp), intent(inout) :: g(:)
+         logical, intent(in) :: searched_only
+         if (searched_only) then
+            call search_values(this, sys, t_at, this%y_work, g, stepper%stats)
+         else
+            call switch_values(sys, t_at, this%y_work, g, stepper%stats, this%rates, this%counts)
+         end if
+      end subroutine values_at
 
       !> The trial stays rejected: the stepper back at the marked state
       !! (with y' there), to go on with its shorter step.
