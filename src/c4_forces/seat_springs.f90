@@ -230,7 +230,12 @@ contains
       associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
       end associate
       s = springs_state(this, st, this%mem)
-      call springs_forces(s, b)
+      ! C.4.d: S_1..S_6 = 0; S_7, S_8 = F'_s dy_z/d alpha; S_9, S_10: the hip
+      ! forces (F_s, -f) rotated by Phi plus F'_s d(y_1 + y_z)/dx_h, /dy_h
+      ! (springs_forces' sums, written out: the right-hand side's call
+      ! would not be inlined)
+      call add_hip_force(s%fr, [-s%f, s%f_s], b)
+      b = b + s%fp_s*s%ln%dh
       aux_rate(1) = s%dissipation
       aux_rate(2) = s%supply
    end subroutine springs_add_forces
@@ -570,12 +575,11 @@ contains
       if (sums) call springs_forces(s, b_sum)
    end subroutine springs_frame_values
 
-   !> The seat's generalized forces from its state s added to b (springs_add_forces').
+   !> The seat's generalized forces from its state s added to b, with
+   !! springs_add_forces' sums (C.4.d S_7..S_10, as there).
    pure subroutine springs_forces(s, b)
       type(springs_state_t), intent(in) :: s
       real(wp), intent(inout) :: b(n_dof)
-      ! C.4.d: S_1..S_6 = 0; S_7, S_8 = F'_s dy_z/d alpha; S_9, S_10: the hip
-      ! forces (F_s, -f) rotated by Phi plus F'_s d(y_1 + y_z)/dx_h, /dy_h
       call add_hip_force(s%fr, [-s%f, s%f_s], b)
       b = b + s%fp_s*s%ln%dh
    end subroutine springs_forces

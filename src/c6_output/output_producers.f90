@@ -306,7 +306,7 @@ contains
       type(output_registry_t), intent(in) :: reg
       real(wp), intent(in) :: t, f(:), total0
       real(wp), intent(in), contiguous :: y(:)
-      real(wp), intent(inout) :: v(:)
+      real(wp), intent(inout), contiguous :: v(:)
       type(energy_balance_t), intent(out) :: eb
       type(body_state_t) :: st
       type(body_outputs_t) :: bo
@@ -317,7 +317,8 @@ contains
       real(wp) :: c(n_seg), s(n_seg)
       logical :: reacts, sums
       integer :: none(0)
-      integer :: k, j, i, n, kind, xo, ao, n_eff, next_evaluated, n_item, n_producer, at0, summary, sum_at
+      integer :: k, j, i, n, kind, xo, ao, n_eff, next_evaluated, n_evaluated, n_item, n_producer, at0, summary, sum_at
+      integer :: sum_column(n_energy_kinds)
 
       associate (occ => sys%occupants(o), at => reg%value_at, n_at => reg%value_count)
          n_eff = size(occ%effects)
@@ -345,6 +346,7 @@ contains
          b_all = 0.0_wp
          list%n = 0
          next_evaluated = 1
+         n_evaluated = size(occ%evaluated)
          do k = 1, n_eff
             xo = occ%extra_offset(k)
             ao = occ%aux_offset(k)
@@ -352,7 +354,7 @@ contains
                ! occupant_forces' sum: the evaluated effects, in order, but
                ! those whose proximity guard holds (inert: what add_forces gives)
                sums = .false.
-               if (next_evaluated <= size(occ%evaluated)) then
+               if (next_evaluated <= n_evaluated) then
                   if (occ%evaluated(next_evaluated) == k) then
                      next_evaluated = next_evaluated + 1
                      sums = slides%n > 0
@@ -374,10 +376,11 @@ contains
             end associate
             call balance_add(eb, e)
             if (summary > 0) then
+               ! (the columns of the effect's energies, found by
+               ! registry_build: shared by the contact pairs, summed)
+               sum_column = reg%series(summary)%sum_column(n_energy_kinds*(k - 1) + 1:n_energy_kinds*k)
                do kind = 1, n_energy_kinds
-                  ! (the column of the effect's energy of this kind, found by
-                  ! registry_build: shared by the contact pairs, summed)
-                  j = reg%series(summary)%sum_column(n_energy_kinds*(k - 1) + kind)
+                  j = sum_column(kind)
                   if (j > 0) v(sum_at + j) = v(sum_at + j) + e(kind)
                end do
             end if
