@@ -17,6 +17,7 @@ module body_kinematics
 
    public :: point_state_t, segment_cg_state, joint_state, to_interior, joint_segment
    public :: point_force_generalized, joint_position_velocity, joint_positions
+   public :: link_cos_sin, body_points, cg_positions, to_interior_cs
 
    integer, parameter :: max_links = 4
    integer, parameter :: n_links(n_seg) = [0, 1, 2, 3, 3, 4, 0, 1]
@@ -67,9 +68,16 @@ contains
       real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
       integer, intent(in) :: j
       real(wp), intent(in) :: len
-      real(wp) :: c, s
-      c = cos(z(j))
-      s = sin(z(j))
+      call add_link_cs(p, zdot, zdd, j, len, cos(z(j)), sin(z(j)))
+   end subroutine add_link
+
+   !> add_link with the cosine c and sine s of z(j) at hand (link_cos_sin's):
+   !! the same sums.
+   pure subroutine add_link_cs(p, zdot, zdd, j, len, c, s)
+      type(point_state_t), intent(inout) :: p
+      real(wp), intent(in) :: zdot(n_dof), zdd(n_dof)
+      integer, intent(in) :: j
+      real(wp), intent(in) :: len, c, s
       p%x = p%x + len*c
       p%y = p%y + len*s
       p%vx = p%vx - len*zdot(j)*s
@@ -77,7 +85,75 @@ contains
       ! C.6 head/chest accelerations: -L(alpha'' sin + alpha'^2 cos), +L(alpha'' cos - alpha'^2 sin)
       p%ax = p%ax - len*(zdd(j)*s + zdot(j)**2*c)
       p%ay = p%ay + len*(zdd(j)*c - zdot(j)**2*s)
-   end subroutine add_link
+   end subroutine add_link_cs
+
+   !> The cosine and sine of each segment angle, c(j) = cos(z(j)) and
+   !! s(j) = sin(z(j)), with add_link's bits (the scalar library's), once
+   !! for every link that turns about segment j (a print time's frame). Not
+   !! the effects' st%c, st%s (segment_trig: the vector library's, other last
+   !! bits); so the loop is kept scalar, which vectorized would call the
+   !! vector library.
+   pure subroutine link_cos_sin(z, c, s)
+      real(wp), intent(in) :: z(n_seg)
+      real(wp), intent(out) :: c(n_seg), s(n_seg)
+      integer :: j
+      !GCC$ novector
+      do j = 1, n_seg
+         c(j) = cos(z(j))
+         s(j) = sin(z(j))
+      end do
+   end subroutine link_cos_sin
+
+   !> Every segment's proximal joint joint(i) (point_on_segment at d = 0,
+   !! as joint_state) and centre of gravity cg(i) (segment_cg_state), from
+   !! link_cos_sin's c and s: point_on_segment's sums in the same order, each
+   !! chain's prefix walked once (as joint_positions: the chain to segment
+   !! i's joint is the chain to the joint of its last link's segment j, then
+   !! that link; in the order 1..8, j comes before i).
+   pure subroutine body_points(body, z, zdot, zdd, c, s, joint, cg)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof), c(n_seg), s(n_seg)
+      type(point_state_t), intent(out) :: joint(n_seg), cg(n_seg)
+      type(point_state_t) :: chain_end(n_seg)
+      integer :: i, k, j
+      do i = 1, n_seg
+         k = n_links(i)
+         if (k == 0) then
+            chain_end(i) = point_state_t(z(hip_x), z(hip_y), zdot(hip_x), zdot(hip_y), zdd(hip_x), zdd(hip_y))
+         else
+            j = chain_seg(k, i)
+            chain_end(i) = chain_end(j)
+            call add_link_cs(chain_end(i), zdot, zdd, j, body%length(chain_len(k, i)), c(j), s(j))
+         end if
+         joint(i) = chain_end(i)
+         call add_link_cs(joint(i), zdot, zdd, i, 0.0_wp, c(i), s(i))
+         cg(i) = chain_end(i)
+         call add_link_cs(cg(i), zdot, zdd, i, body%rho(i), c(i), s(i))
+      end do
+   end subroutine body_points
+
+   !> The centres of gravity's positions p(:, i) alone (segment_cg_state's
+   !! x, y, which do not depend on the rates), from link_cos_sin's c and s:
+   !! body_points' sums for x and y.
+   pure function cg_positions(body, z, c, s) result(p)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), c(n_seg), s(n_seg)
+      real(wp) :: p(2, n_seg)
+      real(wp) :: chain_end(2, n_seg)
+      integer :: i, k, j
+      do i = 1, n_seg
+         k = n_links(i)
+         if (k == 0) then
+            chain_end(:, i) = [z(hip_x), z(hip_y)]
+         else
+            j = chain_seg(k, i)
+            chain_end(1, i) = chain_end(1, j) + body%length(chain_len(k, i))*c(j)
+            chain_end(2, i) = chain_end(2, j) + body%length(chain_len(k, i))*s(j)
+         end if
+         p(1, i) = chain_end(1, i) + body%rho(i)*c(i)
+         p(2, i) = chain_end(2, i) + body%rho(i)*s(i)
+      end do
+   end function cg_positions
 
    !> Centre of gravity of segment i (section B X_i, Y_i with errata E-B1,
    !! E-B2; C.6 with E-65).
@@ -180,9 +256,16 @@ contains
       type(point_state_t), intent(in) :: p
       real(wp), intent(in) :: vpos(3), vvel(3)
       type(point_state_t) :: q
-      real(wp) :: c, s, dx, dy, dvx, dvy
-      c = cos(vpos(3))
-      s = sin(vpos(3))
+      q = to_interior_cs(p, vpos, vvel, cos(vpos(3)), sin(vpos(3)))
+   end function to_interior
+
+   !> to_interior with the cosine c and sine s of the pitch vpos(3) at
+   !! hand (the scalar library's, as to_interior takes them): the same sums.
+   pure function to_interior_cs(p, vpos, vvel, c, s) result(q)
+      type(point_state_t), intent(in) :: p
+      real(wp), intent(in) :: vpos(3), vvel(3), c, s
+      type(point_state_t) :: q
+      real(wp) :: dx, dy, dvx, dvy
       dx = p%x - vpos(1)
       dy = p%y - vpos(2)
       dvx = p%vx - vvel(1)
@@ -191,5 +274,5 @@ contains
       q%y = dx*s + dy*c
       q%vx = dvx*c - dvy*s - q%y*vvel(3)
       q%vy = dvx*s + dvy*c + q%x*vvel(3)
-   end function to_interior
+   end function to_interior_cs
 end module body_kinematics

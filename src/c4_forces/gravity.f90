@@ -9,7 +9,7 @@ module gravity
    use effect_base, only: effect_t, body_state_t
    use effect_energies, only: energy_stored, n_energy_kinds
    use point_forces, only: point_force_list_t, point_force_add
-   use body_kinematics, only: point_state_t, segment_cg_state
+   use body_kinematics, only: point_state_t, segment_cg_state, link_cos_sin, cg_positions
    implicit none
    private
 
@@ -26,6 +26,7 @@ module gravity
       procedure :: add_forces => gravity_add_forces
       procedure :: energy => gravity_energy
       procedure :: point_forces => gravity_point_forces
+      procedure :: frame_values => gravity_frame_values
    end type gravity_effect_t
 
 contains
@@ -85,6 +86,38 @@ contains
          call point_force_add(list, i, [p%x, p%y], [0.0_wp, -this%body%mass(i)*this%g], across_bone=.false.)
       end do
    end subroutine gravity_point_forces
+
+   !> A print time's frame (effect_t's frame_values): the energy, G, and the
+   !! point forces with the centres of gravity walked once (cg_positions,
+   !! from each angle's cosine and sine taken once, the bits of
+   !! segment_cg_state's): the same bits as gravity_energy,
+   !! gravity_add_forces and gravity_point_forces. Gravity has no series of
+   !! its own.
+   pure subroutine gravity_frame_values(this, st, extra, aux, e, values, at, width, gf, b, pf, list, sums, b_sum)
+      class(gravity_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      real(wp), intent(inout) :: values(:)
+      integer, intent(in) :: at(:), width(:)
+      logical, intent(in) :: gf, pf, sums
+      real(wp), intent(inout) :: b(n_dof), b_sum(n_dof)
+      type(point_force_list_t), intent(inout) :: list
+      real(wp) :: c(n_seg), s(n_seg), p(2, n_seg)
+      integer :: i
+      associate (u1 => size(values) + size(at) + size(width))
+      end associate
+      call gravity_energy(this, st, extra, aux, e)
+      if (gf) call gravity_forces(this%bc, this%g, st%c, b)
+      if (pf) then
+         call link_cos_sin(st%z(1:n_seg), c, s)
+         p = cg_positions(this%body, st%z, c, s)
+         do i = 1, n_seg
+            call point_force_add(list, i, p(:, i), [0.0_wp, -this%body%mass(i)*this%g], across_bone=.false.)
+         end do
+      end if
+      if (sums) call gravity_forces(this%bc, this%g, st%c, b_sum)
+   end subroutine gravity_frame_values
 
    !> The potential whose gradient is G (C.4.b): V = g (a_9 y_h + sum a_i sin
    !! alpha_i), which is g times the sum of m_i times the inertial height of

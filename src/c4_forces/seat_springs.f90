@@ -72,6 +72,7 @@ module seat_springs
       procedure :: energy => springs_energy
       procedure :: outputs => springs_outputs
       procedure :: output_values => springs_output_values
+      procedure :: frame_values => springs_frame_values
       procedure :: describe => springs_describe
       procedure :: peaks => springs_peaks
    end type seat_springs_t
@@ -231,6 +232,8 @@ contains
       s = springs_state(this, st, this%mem)
       ! C.4.d: S_1..S_6 = 0; S_7, S_8 = F'_s dy_z/d alpha; S_9, S_10: the hip
       ! forces (F_s, -f) rotated by Phi plus F'_s d(y_1 + y_z)/dx_h, /dy_h
+      ! (springs_forces' sums, written out: the right-hand side's call
+      ! would not be inlined)
       call add_hip_force(s%fr, [-s%f, s%f_s], b)
       b = b + s%fp_s*s%ln%dh
       aux_rate(1) = s%dissipation
@@ -243,13 +246,20 @@ contains
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(point_force_list_t), intent(inout) :: list
-      type(springs_state_t) :: s
       associate (u1 => size(extra) + size(aux))
       end associate
-      s = springs_state(this, st, this%mem)
-      call add_seat_point_forces(s%fr, st%vehicle%pos, [-s%f, s%f_s], s%fp_s*[-s%ln%tan_phi, 1.0_wp], &
-                                 [this%p%z0, s%ln%h], s%ln%seg, list)
+      call springs_point_forces_of(this, springs_state(this, st, this%mem), st%vehicle%pos, list)
    end subroutine springs_point_forces
+
+   !> springs_point_forces from the seat's state s, the vehicle at vpos.
+   pure subroutine springs_point_forces_of(this, s, vpos, list)
+      class(seat_springs_t), intent(in) :: this
+      type(springs_state_t), intent(in) :: s
+      real(wp), intent(in) :: vpos(3)
+      type(point_force_list_t), intent(inout) :: list
+      call add_seat_point_forces(s%fr, vpos, [-s%f, s%f_s], s%fp_s*[-s%ln%tan_phi, 1.0_wp], [this%p%z0, s%ln%h], &
+                                 s%ln%seg, list)
+   end subroutine springs_point_forces_of
 
    !> Figure 12's decisions on an accepted step: the case (off, A, B), the
    !! leg on the front edge, the hip's law in the new case, the hip sliding
@@ -508,11 +518,19 @@ contains
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(out) :: values(:)
-      type(springs_state_t) :: s
-      integer :: leg
       associate (u1 => size(extra))
       end associate
-      s = springs_state(this, st, this%mem)
+      call springs_series(this, item, springs_state(this, st, this%mem), aux, values)
+   end subroutine springs_output_values
+
+   !> The values of series item from the seat's state s (springs_state).
+   pure subroutine springs_series(this, item, s, aux, values)
+      class(seat_springs_t), intent(in) :: this
+      integer, intent(in) :: item
+      type(springs_state_t), intent(in) :: s
+      real(wp), intent(in) :: aux(:)
+      real(wp), intent(out) :: values(:)
+      integer :: leg
       leg = 0
       if (s%leg) leg = s%ln%seg
       select case (item)
@@ -523,7 +541,48 @@ contains
       case default
          values = [s%e_hip, s%e_edge, aux(1), this%mem%e_switch, aux(2)]
       end select
-   end subroutine springs_output_values
+   end subroutine springs_series
+
+   !> A print time's frame (effect_t's frame_values): figure 12's state
+   !! taken once for the energies, the three series, the generalized force
+   !! and the point forces, the same bits as springs_energy,
+   !! springs_output_values, springs_add_forces and springs_point_forces
+   !! each taking it.
+   pure subroutine springs_frame_values(this, st, extra, aux, e, values, at, width, gf, b, pf, list, sums, b_sum)
+      class(seat_springs_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(out) :: e(n_energy_kinds)
+      real(wp), intent(inout) :: values(:)
+      integer, intent(in) :: at(:), width(:)
+      logical, intent(in) :: gf, pf, sums
+      real(wp), intent(inout) :: b(n_dof), b_sum(n_dof)
+      type(point_force_list_t), intent(inout) :: list
+      type(springs_state_t) :: s
+      integer :: j
+      associate (u1 => size(extra))
+      end associate
+      s = springs_state(this, st, this%mem)
+      ! springs_energy
+      e(energy_stored) = s%e_hip + s%e_edge
+      e(energy_dissipated) = aux(1) + this%mem%e_switch
+      e(energy_supplied) = aux(2)
+      do j = 1, size(at)
+         if (at(j) >= 0) call springs_series(this, j, s, aux, values(at(j) + 1:at(j) + width(j)))
+      end do
+      if (gf) call springs_forces(s, b)
+      if (pf) call springs_point_forces_of(this, s, st%vehicle%pos, list)
+      if (sums) call springs_forces(s, b_sum)
+   end subroutine springs_frame_values
+
+   !> The seat's generalized forces from its state s added to b, with
+   !! springs_add_forces' sums (C.4.d S_7..S_10, as there).
+   pure subroutine springs_forces(s, b)
+      type(springs_state_t), intent(in) :: s
+      real(wp), intent(inout) :: b(n_dof)
+      call add_hip_force(s%fr, [-s%f, s%f_s], b)
+      b = b + s%fp_s*s%ln%dh
+   end subroutine springs_forces
 
    function springs_describe(this) result(text)
       class(seat_springs_t), intent(in) :: this

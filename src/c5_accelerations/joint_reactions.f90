@@ -26,7 +26,7 @@ module joint_reactions
    private
 
    public :: joint_reaction_forces, body_imbalance, bone_components, distal_segment
-   public :: segment_cg_states, joint_reactions_at
+   public :: segment_cg_states, joint_reactions_at, bone_components_at
 
    !> distal(s, j): segment s lies on the distal side of joint j.
    logical, parameter :: distal(n_seg, n_joint) = reshape([ &
@@ -133,4 +133,18 @@ contains
          shear(j) = -r(1, j)*s + r(2, j)*c
       end do
    end subroutine bone_components
+
+   !> bone_components with the cosines c and sines s of the segment angles
+   !! at hand, with its bits (body_kinematics' link_cos_sin; a print time's
+   !! frame): the same sums.
+   pure subroutine bone_components_at(r, c, s, tension, shear)
+      real(wp), intent(in) :: r(2, n_joint), c(n_seg), s(n_seg)
+      real(wp), intent(out) :: tension(n_joint), shear(n_joint)
+      integer :: j, d
+      do j = 1, n_joint
+         d = distal_segment(j)
+         tension(j) = -(r(1, j)*c(d) + r(2, j)*s(d))
+         shear(j) = -r(1, j)*s(d) + r(2, j)*c(d)
+      end do
+   end subroutine bone_components_at
 end module joint_reactions

@@ -7,7 +7,7 @@
 module output_calc
    use kinds, only: wp, deg, g_std
    use model, only: body_section_t, vehicle_section_t, n_dof, n_seg, n_joint, hip_x, hip_y
-   use body_kinematics, only: point_state_t, segment_cg_state, joint_state, to_interior
+   use body_kinematics, only: point_state_t, segment_cg_state, joint_state, to_interior, to_interior_cs, joint_segment
    use body_state, only: body_state_t
    use joint_coupling, only: relative_angle, joint_columns
    use output_series, only: output_series_t, output_column_t, series_new, column
@@ -116,15 +116,17 @@ contains
 
    !> The C.6 quantities at the state st, with the accelerations zdd there;
    !! cg: the segments' centres of gravity there, when at hand (for the
-   !! kinetic energies).
-   pure subroutine body_outputs_compute(body, vehicle, st, zdd, r, cg)
+   !! kinetic energies); joint: each segment's proximal joint there, when at
+   !! hand (body_kinematics' body_points: joint_state's bits).
+   pure subroutine body_outputs_compute(body, vehicle, st, zdd, r, cg, joint)
       type(body_section_t), intent(in) :: body
       type(vehicle_section_t), intent(in) :: vehicle
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: zdd(n_dof)
       type(body_outputs_t), intent(out) :: r
-      type(point_state_t), intent(in), optional :: cg(n_seg)
+      type(point_state_t), intent(in), optional :: cg(n_seg), joint(n_seg)
       type(point_state_t) :: p
+      real(wp) :: c_pitch, s_pitch
       integer :: i
       associate (vs => st%vehicle)
          r%z = st%z
@@ -136,12 +138,24 @@ contains
          call head_chest_acceleration(body, st%c, st%s, r%zdot, r%zdd, r%head_acc, r%chest_acc)
          ! Theta_i = alpha_i + Phi (section B)
          r%theta = r%z(1:n_seg) + vs%pos(3)
-         do i = 1, n_joint
-            r%joint_angle(i) = relative_angle(r%z, i)
-            p = to_interior(joint_state(body, r%z, r%zdot, r%zdd, i), vs%pos, vs%vel)
-            r%joint_x(i) = p%x
-            r%joint_y(i) = p%y
-         end do
+         if (present(joint)) then
+            ! (the pitch's cosine and sine once: to_interior's, the scalar library's)
+            c_pitch = cos(vs%pos(3))
+            s_pitch = sin(vs%pos(3))
+            do i = 1, n_joint
+               r%joint_angle(i) = relative_angle(r%z, i)
+               p = to_interior_cs(joint(joint_segment(i)), vs%pos, vs%vel, c_pitch, s_pitch)
+               r%joint_x(i) = p%x
+               r%joint_y(i) = p%y
+            end do
+         else
+            do i = 1, n_joint
+               r%joint_angle(i) = relative_angle(r%z, i)
+               p = to_interior(joint_state(body, r%z, r%zdot, r%zdd, i), vs%pos, vs%vel)
+               r%joint_x(i) = p%x
+               r%joint_y(i) = p%y
+            end do
+         end if
          ! C.6 kinetic energies: vehicle, and segments with erratum E-65
          r%ke_vehicle = 0.5_wp*vehicle%mass*(vs%vel(1)**2 + vs%vel(2)**2) + 0.5_wp*vehicle%inertia*vs%vel(3)**2
          if (present(cg)) then

@@ -11,8 +11,8 @@ module output_producers
    use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds, energy_kind_name
    use point_forces, only: point_force_list_t
    use occupant, only: occupant_t, slide_set_t, occupant_active_slides, occupant_add_slide_forces
-   use joint_reactions, only: segment_cg_states, joint_reactions_at, bone_components
-   use body_kinematics, only: point_state_t
+   use joint_reactions, only: joint_reactions_at, bone_components_at
+   use body_kinematics, only: point_state_t, link_cos_sin, body_points
    use proximity_guard, only: guard_none, guard_holds
    use joint_coupling, only: joint_columns
    use equations_of_motion, only: crash_system_t, system_body_state
@@ -306,17 +306,19 @@ contains
       type(output_registry_t), intent(in) :: reg
       real(wp), intent(in) :: t, f(:), total0
       real(wp), intent(in), contiguous :: y(:)
-      real(wp), intent(inout) :: v(:)
+      real(wp), intent(inout), contiguous :: v(:)
       type(energy_balance_t), intent(out) :: eb
       type(body_state_t) :: st
       type(body_outputs_t) :: bo
       type(point_force_list_t) :: list
-      type(point_state_t) :: cg(n_seg)
+      type(point_state_t) :: cg(n_seg), joint(n_seg)
       type(slide_set_t) :: slides
       real(wp) :: zdd(n_dof), b_all(n_dof), gf(n_dof), e(n_energy_kinds), r(2, n_joint), ft(n_joint), fs(n_joint)
+      real(wp) :: c(n_seg), s(n_seg)
       logical :: reacts, sums
       integer :: none(0)
-      integer :: k, j, i, n, kind, xo, ao, n_eff, next_evaluated, n_item, n_producer, at0, summary, sum_at
+      integer :: k, j, i, n, kind, xo, ao, n_eff, next_evaluated, n_evaluated, n_item, n_producer, at0, summary, sum_at
+      integer :: sum_column(n_energy_kinds)
 
       associate (occ => sys%occupants(o), at => reg%value_at, n_at => reg%value_count)
          n_eff = size(occ%effects)
@@ -325,13 +327,13 @@ contains
          st = system_body_state(sys, o, t, y)
          zdd = f(occ%zdot_offset + 1:occ%zdot_offset + n_dof)
          reacts = any(at(:, producer_reactions, o) >= 0)
-         if (reacts) then
-            ! (the centres of gravity once, for the joint reactions and the kinetic energies)
-            cg = segment_cg_states(occ%body, st%z, st%zdot, zdd)
-            call body_outputs_compute(occ%body, vehicle, st, zdd, bo, cg)
-         else
-            call body_outputs_compute(occ%body, vehicle, st, zdd, bo)
-         end if
+         ! the joints and the centres of gravity once, for the body's series,
+         ! the kinetic energies and the joint reactions, from each angle's
+         ! cosine and sine taken once (the bits of joint_state's and
+         ! segment_cg_state's, not st%c's)
+         call link_cos_sin(st%z(1:n_seg), c, s)
+         call body_points(occ%body, st%z, st%zdot, zdd, c, s, joint, cg)
+         call body_outputs_compute(occ%body, vehicle, st, zdd, bo, cg, joint)
          ! the energy balance (balance_of's sums, effect by effect) and the
          ! energy summary's columns, summed as the effects come
          call balance_start(sum(bo%ke_seg), eb)
@@ -344,6 +346,7 @@ contains
          b_all = 0.0_wp
          list%n = 0
          next_evaluated = 1
+         n_evaluated = size(occ%evaluated)
          do k = 1, n_eff
             xo = occ%extra_offset(k)
             ao = occ%aux_offset(k)
@@ -351,7 +354,7 @@ contains
                ! occupant_forces' sum: the evaluated effects, in order, but
                ! those whose proximity guard holds (inert: what add_forces gives)
                sums = .false.
-               if (next_evaluated <= size(occ%evaluated)) then
+               if (next_evaluated <= n_evaluated) then
                   if (occ%evaluated(next_evaluated) == k) then
                      next_evaluated = next_evaluated + 1
                      sums = slides%n > 0
@@ -373,10 +376,11 @@ contains
             end associate
             call balance_add(eb, e)
             if (summary > 0) then
+               ! (the columns of the effect's energies, found by
+               ! registry_build: shared by the contact pairs, summed)
+               sum_column = reg%series(summary)%sum_column(n_energy_kinds*(k - 1) + 1:n_energy_kinds*k)
                do kind = 1, n_energy_kinds
-                  ! (the column of the effect's energy of this kind, found by
-                  ! registry_build: shared by the contact pairs, summed)
-                  j = reg%series(summary)%sum_column(n_energy_kinds*(k - 1) + kind)
+                  j = sum_column(kind)
                   if (j > 0) v(sum_at + j) = v(sum_at + j) + e(kind)
                end do
             end if
@@ -392,7 +396,7 @@ contains
          ! FT and FS of every joint (both series from one solve)
          if (reacts) then
             r = joint_reactions_at(occ%body, cg, list)
-            call bone_components(r, st%z, ft, fs)
+            call bone_components_at(r, c, s, ft, fs)
             do j = 1, 2
                i = at(j, producer_reactions, o)
                if (i >= 0) v(i + 1:i + n_joint) = merge(ft, fs, j == 1)
