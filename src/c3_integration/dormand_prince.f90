@@ -302,7 +302,9 @@ contains
             ok = .true.
             if (.not. all(ieee_is_finite(ynew))) return
             ok = .false.
-            if (.not. this%evaluate(sys, t + h, ynew, k7)) return
+            ! (first-same-as-last: f at the step's end, where it is accepted
+            ! if it is; evaluate_end, whose results the system may keep)
+            if (.not. this%evaluate_end(sys, t + h, ynew, k7)) return
             ok = .true.
             e = h*(e1*k1 + e3*k3 + e4*k4 + e5*k5 + e6*k6 + e7*k7)
             ! the scaled RMS norm over the error-controlled entries, without

@@ -20,7 +20,7 @@ module equations_of_motion
    use state_layout, only: state_layout_t
    use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init
    use body_state, only: body_state_t
-   use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_initial_y, &
+   use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_rhs_kept, occupant_initial_y, &
       occupant_add_effect, occupant_vehicle, occupant_settle, slides_overflow
    use sliding_constraints, only: max_slides
    use effect_base, only: effect_t
@@ -56,8 +56,13 @@ module equations_of_motion
       !> evaluations of each effect (effect, occupant)
       integer(i8), allocatable :: counts(:, :)
       integer(i8) :: evaluations = 0
+      !> the evaluation that ends a step keeps, in the effects that keep,
+      !! what their accept needs there (rhs_end; issue 16 section 4):
+      !! .false. evaluates it as any other (a test compares the two)
+      logical :: keep_for_accept = .true.
    contains
       procedure :: rhs => system_rhs
+      procedure :: rhs_end => system_rhs_end
       procedure :: error_controlled => system_error_controlled
       procedure :: failure_text => system_failure_text
    end type crash_system_t
@@ -170,6 +175,30 @@ contains
       real(wp), intent(in), contiguous :: y(:)
       real(wp), intent(out), contiguous :: dydt(:)
       integer, intent(out) :: status
+      call evaluate(this, t, y, dydt, status, .false.)
+   end subroutine system_rhs
+
+   !> rhs at the evaluation that ends a step (ode_system's rhs_end): the
+   !! same f, and the effects that keep keep what their accept needs at (t,
+   !! y), unless keep_for_accept is off (issue 16 section 4).
+   subroutine system_rhs_end(this, t, y, dydt, status)
+      class(crash_system_t), intent(inout) :: this
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out), contiguous :: dydt(:)
+      integer, intent(out) :: status
+      call evaluate(this, t, y, dydt, status, this%keep_for_accept)
+   end subroutine system_rhs_end
+
+   !> f(t, y), each occupant's part; keep: through occupant_rhs_kept for an
+   !! occupant whose effects keep (rhs_end).
+   subroutine evaluate(this, t, y, dydt, status, keep)
+      class(crash_system_t), intent(inout) :: this
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out), contiguous :: dydt(:)
+      integer, intent(out) :: status
+      logical, intent(in) :: keep
       type(body_state_t) :: st
       integer :: o, info
 
@@ -183,7 +212,11 @@ contains
             end if
             call occupant_state(occ, t, y, st)
             if (occ%needs_vehicle) call occupant_vehicle(occ, this%vm, t, st)
-            call occupant_rhs(occ, st, y, dydt, this%counts(:, o), info)
+            if (keep .and. occ%keeps) then
+               call occupant_rhs_kept(occ, st, y, dydt, this%counts(:, o), info)
+            else
+               call occupant_rhs(occ, st, y, dydt, this%counts(:, o), info)
+            end if
             if (info /= 0) then
                status = rhs_not_positive_definite
                if (info == slides_overflow) status = rhs_too_many_slides
@@ -193,7 +226,7 @@ contains
       end do
       ! every rate: z'', and the effects' extra and auxiliary quantities
       if (.not. all(ieee_is_finite(dydt))) status = rhs_not_finite
-   end subroutine system_rhs
+   end subroutine evaluate
 
    !> Why the evaluation at (t, y) failed with code (system_rhs's status),
    !! when a stepper gives up: the code's reason and, for a state out of
