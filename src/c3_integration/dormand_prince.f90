@@ -173,7 +173,9 @@ contains
       this%dense_ready = .false.
       this%trial_offered = .false.
       this%rejections_in_row = 0
-      if (.not. this%evaluate(sys, t, y, this%f)) call this%give_up_rhs(sys, err)
+      ! (evaluate_end: a restart at a located switch, the locator's, comes
+      ! before that state's accept, which may take what is kept here)
+      if (.not. this%evaluate_end(sys, t, y, this%f)) call this%give_up_rhs(sys, err)
    end subroutine dopri_begin
 
    !> Try steps until one is accepted (or the step collapses). A trial
