@@ -362,7 +362,7 @@ contains
       type(belt_body_t) :: bb
       type(chain_split_t) :: sp
       real(wp) :: s, s_dot, g(n_dof)
-      integer :: c, a
+      integer :: c, a, m
       associate (u1 => size(extra), u2 => size(extra_rate))
       end associate
       call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
@@ -381,7 +381,14 @@ contains
                cycle
             end if
             b = b - sp%force*g
-            call belt_chain_rates(ch, sp, s_dot - dot_product(g, st%zdot), aux_rate)
+            ! belt_chain_rates(ch, sp, s_dot - dot_product(g, st%zdot), aux_rate),
+            ! its three lines: called from belt_add_forces alone, it is inlined
+            ! there (a second caller took it out of line: +4.5 M instructions
+            ! on the belted driver). test_kept_accept compares the two.
+            m = chain_n_aux(ch%chain)
+            aux_rate(ch%aux_offset + 1:ch%aux_offset + m) = sp%aux_rate(1:m)
+            aux_rate(ch%aux_offset + m + 1) = sp%force*(s_dot - dot_product(g, st%zdot))
+            aux_rate(ch%start_aux) = sp%guess_rate
          end associate
       end do
       call kept_set(this%kept, st, aux)

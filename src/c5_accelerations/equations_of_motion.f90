@@ -60,6 +60,7 @@ module equations_of_motion
       !! what their accept needs there (rhs_end; issue 16 section 4):
       !! .false. evaluates it as any other (a test compares the two)
       logical :: keep_for_accept = .true.
+      logical :: keeps = .false.          !< an occupant keeps (occupant_t%keeps)
    contains
       procedure :: rhs => system_rhs
       procedure :: rhs_end => system_rhs_end
@@ -108,6 +109,7 @@ contains
       counts(1:size(sys%counts, 1), 1:n - 1) = sys%counts
       call move_alloc(counts, sys%counts)
       sys%needs_vehicle = sys%needs_vehicle .or. sys%occupants(n)%needs_vehicle
+      sys%keeps = sys%keeps .or. sys%occupants(n)%keeps
    end subroutine system_add_occupant
 
    !> One more effect for occupant o (its quantities go at the end of y).
@@ -122,6 +124,7 @@ contains
       counts(1:size(sys%counts, 1), :) = sys%counts
       call move_alloc(counts, sys%counts)
       sys%needs_vehicle = sys%needs_vehicle .or. sys%occupants(o)%needs_vehicle
+      sys%keeps = sys%keeps .or. sys%occupants(o)%keeps
    end subroutine system_add_effect
 
    !> The initial state vector.
@@ -175,30 +178,6 @@ contains
       real(wp), intent(in), contiguous :: y(:)
       real(wp), intent(out), contiguous :: dydt(:)
       integer, intent(out) :: status
-      call evaluate(this, t, y, dydt, status, .false.)
-   end subroutine system_rhs
-
-   !> rhs at the evaluation that ends a step (ode_system's rhs_end): the
-   !! same f, and the effects that keep keep what their accept needs at (t,
-   !! y), unless keep_for_accept is off (issue 16 section 4).
-   subroutine system_rhs_end(this, t, y, dydt, status)
-      class(crash_system_t), intent(inout) :: this
-      real(wp), intent(in) :: t
-      real(wp), intent(in), contiguous :: y(:)
-      real(wp), intent(out), contiguous :: dydt(:)
-      integer, intent(out) :: status
-      call evaluate(this, t, y, dydt, status, this%keep_for_accept)
-   end subroutine system_rhs_end
-
-   !> f(t, y), each occupant's part; keep: through occupant_rhs_kept for an
-   !! occupant whose effects keep (rhs_end).
-   subroutine evaluate(this, t, y, dydt, status, keep)
-      class(crash_system_t), intent(inout) :: this
-      real(wp), intent(in) :: t
-      real(wp), intent(in), contiguous :: y(:)
-      real(wp), intent(out), contiguous :: dydt(:)
-      integer, intent(out) :: status
-      logical, intent(in) :: keep
       type(body_state_t) :: st
       integer :: o, info
 
@@ -212,11 +191,7 @@ contains
             end if
             call occupant_state(occ, t, y, st)
             if (occ%needs_vehicle) call occupant_vehicle(occ, this%vm, t, st)
-            if (keep .and. occ%keeps) then
-               call occupant_rhs_kept(occ, st, y, dydt, this%counts(:, o), info)
-            else
-               call occupant_rhs(occ, st, y, dydt, this%counts(:, o), info)
-            end if
+            call occupant_rhs(occ, st, y, dydt, this%counts(:, o), info)
             if (info /= 0) then
                status = rhs_not_positive_definite
                if (info == slides_overflow) status = rhs_too_many_slides
@@ -226,7 +201,48 @@ contains
       end do
       ! every rate: z'', and the effects' extra and auxiliary quantities
       if (.not. all(ieee_is_finite(dydt))) status = rhs_not_finite
-   end subroutine evaluate
+   end subroutine system_rhs
+
+   !> rhs at the evaluation that ends a step (ode_system's rhs_end): the
+   !! same f, and the effects that keep keep what their accept needs at (t,
+   !! y) (occupant_rhs_kept), unless keep_for_accept is off (issue 16
+   !! section 4). (system_rhs's loop written out again, so that rhs, at
+   !! every other evaluation, stays as it was.)
+   subroutine system_rhs_end(this, t, y, dydt, status)
+      class(crash_system_t), intent(inout) :: this
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out), contiguous :: dydt(:)
+      integer, intent(out) :: status
+      type(body_state_t) :: st
+      integer :: o, info
+
+      if (.not. (this%keep_for_accept .and. this%keeps)) then
+         call system_rhs(this, t, y, dydt, status)
+         return
+      end if
+      this%evaluations = this%evaluations + 1
+      status = 0
+      do o = 1, size(this%occupants)
+         associate (occ => this%occupants(o))
+            if (.not. in_range(occ, y)) then
+               status = rhs_diverged
+               return
+            end if
+            call occupant_state(occ, t, y, st)
+            if (occ%needs_vehicle) call occupant_vehicle(occ, this%vm, t, st)
+            ! (an occupant whose effects keep nothing evaluates them as rhs
+            ! does; occupant_rhs is called from rhs alone, where it is inlined)
+            call occupant_rhs_kept(occ, st, y, dydt, this%counts(:, o), info)
+            if (info /= 0) then
+               status = rhs_not_positive_definite
+               if (info == slides_overflow) status = rhs_too_many_slides
+               return
+            end if
+         end associate
+      end do
+      if (.not. all(ieee_is_finite(dydt))) status = rhs_not_finite
+   end subroutine system_rhs_end
 
    !> Why the evaluation at (t, y) failed with code (system_rhs's status),
    !! when a stepper gives up: the code's reason and, for a state out of

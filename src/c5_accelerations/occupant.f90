@@ -306,15 +306,21 @@ contains
       real(wp), intent(inout), contiguous :: dydt(:)
       integer(i8), intent(inout) :: counts(:)
       integer, intent(out) :: info
-      real(wp) :: b(n_dof)
+      real(wp) :: b(n_dof), zdd(n_dof)
       call occupant_forces(occ, st, y, b, dydt, counts)
-      call occupant_motion(occ, st, y, b, dydt, info)
+      call body_accelerations(occ%bc, st%c, st%s, b, zdd, info, occ%solver)
+      if (info == 0 .and. occ%n_slide > max_slides) info = slides_overflow
+      if (info == 0 .and. occ%n_slide > 0) call slide(occ, st, y, zdd, dydt, info)
+      dydt(occ%z_offset + 1:occ%z_offset + n_dof) = st%zdot
+      dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = zdd
    end subroutine occupant_rhs
 
    !> occupant_rhs at the evaluation that ends a step (rhs_end; issue 16
    !! section 4): the same bits, but the effects that keep (effect_t%keeps)
    !! are evaluated through add_forces_kept, which keeps what their accept
    !! needs at this state. Only the effects' kept results change.
+   !! (occupant_forces' loop and occupant_rhs' solve written out again, so
+   !! that every other evaluation stays as it was.)
    subroutine occupant_rhs_kept(occ, st, y, dydt, counts, info)
       type(occupant_t), intent(inout) :: occ
       type(body_state_t), intent(in) :: st
@@ -322,7 +328,7 @@ contains
       real(wp), intent(inout), contiguous :: dydt(:)
       integer(i8), intent(inout) :: counts(:)
       integer, intent(out) :: info
-      real(wp) :: b(n_dof)
+      real(wp) :: b(n_dof), zdd(n_dof)
       integer :: n, k, xo, ao
       logical :: inert
       ! occupant_forces, the keeping effects through add_forces_kept
@@ -347,25 +353,12 @@ contains
          end associate
          counts(k) = counts(k) + 1
       end do
-      call occupant_motion(occ, st, y, b, dydt, info)
-   end subroutine occupant_rhs_kept
-
-   !> occupant_rhs from the effects' forces b: z' and z'' from A z'' = b
-   !! (C.5) with the active sliding constraints, into dydt.
-   pure subroutine occupant_motion(occ, st, y, b, dydt, info)
-      type(occupant_t), intent(in) :: occ
-      type(body_state_t), intent(in) :: st
-      real(wp), intent(in), contiguous :: y(:)
-      real(wp), intent(in) :: b(n_dof)
-      real(wp), intent(inout), contiguous :: dydt(:)
-      integer, intent(out) :: info
-      real(wp) :: zdd(n_dof)
       call body_accelerations(occ%bc, st%c, st%s, b, zdd, info, occ%solver)
       if (info == 0 .and. occ%n_slide > max_slides) info = slides_overflow
       if (info == 0 .and. occ%n_slide > 0) call slide(occ, st, y, zdd, dydt, info)
       dydt(occ%z_offset + 1:occ%z_offset + n_dof) = st%zdot
       dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = zdd
-   end subroutine occupant_motion
+   end subroutine occupant_rhs_kept
 
    !> The active sliding constraints (issue 15) held at zdd: their
    !! multipliers, each clipped to its range, added to zdd, and the power
