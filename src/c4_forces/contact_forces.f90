@@ -558,44 +558,8 @@ contains
       real(wp), intent(inout) :: b(n_dof)
       real(wp), intent(out) :: aux_rate(:)
       type(pair_state_t) :: ps
-      call pair_eval(this, st, aux, ps)
-      call pair_add_state(this, st, ps, b, aux_rate)
-   end subroutine pair_add_full
-
-   !> pair_add_forces at the evaluation that ends a step (effect_t's
-   !! add_forces_kept): the same bits, and on the full path pair_eval's
-   !! state kept for accept, tagged by st and aux.
-   subroutine pair_add_forces_kept(this, st, extra, aux, b, extra_rate, aux_rate)
-      class(contact_pair_effect_t), intent(inout) :: this
-      type(body_state_t), intent(in) :: st
-      real(wp), intent(in) :: extra(:), aux(:)
-      real(wp), intent(inout) :: b(n_dof)
-      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
-      type(pair_state_t) :: ps
-      associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
-      end associate
-      if (this%exit_far) then
-         if (pair_far(this, st)) then
-            ! pair_add_forces' early exit (accept's short path needs nothing kept)
-            aux_rate = 0.0_wp
-            if (chain_relaxing(this%chain, aux)) call slack_rates(this, aux, aux_rate)
-            return
-         end if
-      end if
-      call pair_eval(this, st, aux, ps)
-      call pair_add_state(this, st, ps, b, aux_rate)
-      this%kept_ps = ps
-      call kept_set(this%kept, st, aux)
-   end subroutine pair_add_forces_kept
-
-   !> add_forces' full path from the pair's state ps at st (pair_eval's).
-   pure subroutine pair_add_state(this, st, ps, b, aux_rate)
-      class(contact_pair_effect_t), intent(in) :: this
-      type(body_state_t), intent(in) :: st
-      type(pair_state_t), intent(in) :: ps
-      real(wp), intent(inout) :: b(n_dof)
-      real(wp), intent(out) :: aux_rate(:)
       real(wp) :: b_n(n_dof), b_t(n_dof)
+      call pair_eval(this, st, aux, ps)
       if (ps%split%status /= split_ok) then
          aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)
          return
@@ -614,7 +578,51 @@ contains
       ! absorbs and dissipates
       aux_rate(this%aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(b_n, st%zdot)) &
                                - ps%p_t*(dot_product(b_t, st%zdot) - ps%cs%v_t)
-   end subroutine pair_add_state
+   end subroutine pair_add_full
+
+   !> pair_add_forces at the evaluation that ends a step (effect_t's
+   !! add_forces_kept): the same bits, and on the full path pair_eval's
+   !! state kept for accept, tagged by st and aux. (pair_add_full's lines
+   !! written out again: with a second caller, the compiler no longer puts
+   !! them in line in add_forces, at every evaluation; test_kept_accept
+   !! compares the two.)
+   subroutine pair_add_forces_kept(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(contact_pair_effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      type(pair_state_t) :: ps
+      real(wp) :: b_n(n_dof), b_t(n_dof)
+      associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
+      end associate
+      if (this%exit_far) then
+         if (pair_far(this, st)) then
+            ! pair_add_forces' early exit (accept's short path needs nothing kept)
+            aux_rate = 0.0_wp
+            if (chain_relaxing(this%chain, aux)) call slack_rates(this, aux, aux_rate)
+            return
+         end if
+      end if
+      call pair_eval(this, st, aux, ps)
+      this%kept_ps = ps
+      call kept_set(this%kept, st, aux)
+      ! pair_add_full
+      if (ps%split%status /= split_ok) then
+         aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)
+         return
+      end if
+      aux_rate(1:this%aux_friction - 1) = ps%split%aux_rate(1:this%aux_friction - 1)
+      aux_rate(this%aux_friction:this%aux_supplied) = 0.0_wp
+      if (.not. ps%split%force > 0.0_wp) return
+      b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
+      b_t = 0.0_wp
+      if (abs(ps%p_t) > 0.0_wp) b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%t_in)
+      b = b + ps%split%force*b_n - ps%p_t*b_t
+      aux_rate(this%aux_friction) = ps%p_t*ps%cs%v_t
+      aux_rate(this%aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(b_n, st%zdot)) &
+                               - ps%p_t*(dot_product(b_t, st%zdot) - ps%cs%v_t)
+   end subroutine pair_add_forces_kept
 
    !> D-C16a's memory of a flat surface's pair, and its proximity guard
    !! with it (D-C29: a slab once come from behind, else a half-plane).

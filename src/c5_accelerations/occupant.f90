@@ -329,7 +329,8 @@ contains
       integer(i8), intent(inout) :: counts(:)
       integer, intent(out) :: info
       real(wp) :: b(n_dof), zdd(n_dof)
-      integer :: n, k, xo, ao
+      type(slide_set_t) :: set
+      integer :: n, k, xo, ao, c
       logical :: inert
       ! occupant_forces, the keeping effects through add_forces_kept
       b = 0.0_wp
@@ -355,7 +356,22 @@ contains
       end do
       call body_accelerations(occ%bc, st%c, st%s, b, zdd, info, occ%solver)
       if (info == 0 .and. occ%n_slide > max_slides) info = slides_overflow
-      if (info == 0 .and. occ%n_slide > 0) call slide(occ, st, y, zdd, dydt, info)
+      if (info == 0 .and. occ%n_slide > 0) then
+         ! slide's lines (with a second caller, the compiler no longer puts
+         ! slide in line in occupant_rhs, at every evaluation)
+         call gather_slides(occ, st, y, set)
+         if (set%n > 0) call set_multipliers(occ, st, zdd, set, info)
+         if (set%n > 0 .and. info == 0) then
+            do c = 1, set%n
+               zdd = zdd + set%y_cols(:, c)*set%lam_clipped(c)
+               if (set%aux_at(c) > 0) dydt(set%aux_at(c)) = dydt(set%aux_at(c)) &
+                                                           - set%lam_clipped(c)*(dot_product(set%d(:, c), st%zdot) &
+                                                                                 + set%offset(c))
+               if (set%aux_supplied(c) > 0) dydt(set%aux_supplied(c)) = dydt(set%aux_supplied(c)) &
+                                                                       - set%lam_clipped(c)*set%offset(c)
+            end do
+         end if
+      end if
       dydt(occ%z_offset + 1:occ%z_offset + n_dof) = st%zdot
       dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = zdd
    end subroutine occupant_rhs_kept
