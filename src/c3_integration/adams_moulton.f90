@@ -216,8 +216,12 @@ contains
                end do
             end if
          end if
-         ! final evaluation at the accepted point
-         if (.not. evaluate(t_new, ynew, fnew)) return
+         ! final evaluation at the accepted point (evaluate_end: what the
+         ! system keeps there serves the accepted step's bookkeeping)
+         if (.not. this%evaluate_end(sys, t_new, ynew, fnew)) then
+            call this%give_up_rhs(sys, err)
+            return
+         end if
          if (starting .and. this%start == am_start_rk4) then
             do i = 1, size(le)
                le(i) = le(i) - (h/6.0_wp)*fnew(i)

@@ -173,7 +173,9 @@ contains
       this%dense_ready = .false.
       this%trial_offered = .false.
       this%rejections_in_row = 0
-      if (.not. this%evaluate(sys, t, y, this%f)) call this%give_up_rhs(sys, err)
+      ! (evaluate_end: a restart at a located switch, the locator's, comes
+      ! before that state's accept, which may take what is kept here)
+      if (.not. this%evaluate_end(sys, t, y, this%f)) call this%give_up_rhs(sys, err)
    end subroutine dopri_begin
 
    !> Try steps until one is accepted (or the step collapses). A trial
@@ -302,7 +304,9 @@ contains
             ok = .true.
             if (.not. all(ieee_is_finite(ynew))) return
             ok = .false.
-            if (.not. this%evaluate(sys, t + h, ynew, k7)) return
+            ! (first-same-as-last: f at the step's end, where it is accepted
+            ! if it is; evaluate_end, whose results the system may keep)
+            if (.not. this%evaluate_end(sys, t + h, ynew, k7)) return
             ok = .true.
             e = h*(e1*k1 + e3*k3 + e4*k4 + e5*k5 + e6*k6 + e7*k7)
             ! the scaled RMS norm over the error-controlled entries, without

@@ -26,6 +26,7 @@ module ode_system
    type, abstract :: ode_system_t
    contains
       procedure(rhs_interface), deferred :: rhs
+      procedure :: rhs_end => system_rhs_end
       procedure :: error_controlled => system_error_controlled
       procedure :: failure_text => system_failure_text
    end type ode_system_t
@@ -112,6 +113,7 @@ module ode_system
       procedure :: has_dense => stepper_has_dense
       procedure :: dense => stepper_dense
       procedure, non_overridable :: evaluate => stepper_evaluate
+      procedure, non_overridable :: evaluate_end => stepper_evaluate_end
       procedure, non_overridable :: restartable => stepper_restartable
       procedure, non_overridable :: give_up_rhs => stepper_give_up_rhs
       procedure, non_overridable :: give_up_not_finite => stepper_give_up_not_finite
@@ -241,6 +243,27 @@ contains
       end if
    end function stepper_evaluate
 
+   !> As evaluate, for the evaluation that ends a step: at the point the
+   !! step is accepted at, if it is, so that the system may keep what is
+   !! computed there for what follows an accepted step (rhs_end; issue 16
+   !! section 4). The same f.
+   logical function stepper_evaluate_end(this, sys, t, y, f) result(ok)
+      class(stepper_t), intent(inout) :: this
+      class(ode_system_t), intent(inout) :: sys
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out), contiguous :: f(:)
+      integer :: code
+      call sys%rhs_end(t, y, f, code)
+      this%stats%evaluations = this%stats%evaluations + 1
+      ok = code == 0
+      if (.not. ok) then
+         this%t_failed = t
+         this%code_failed = code
+         this%y_failed = y
+      end if
+   end function stepper_evaluate_end
+
    !> The stepper gives up because its last evaluation failed: err says
    !! when and, through the system's failure_text at that evaluation, why.
    subroutine stepper_give_up_rhs(this, sys, err)
@@ -305,6 +328,19 @@ contains
       if (len(why) > 0) why = ': '//why
       call error_set(err, exit_numerical, 'the right-hand side could not be evaluated at t = '//num(t)//' s'//why)
    end subroutine rhs_failed
+
+   !> rhs at the evaluation that ends a step (stepper_evaluate_end): the
+   !! same f and status as rhs; a system may keep there what its accepted
+   !! step's bookkeeping would compute again at (t, y) (crash_system_t:
+   !! its effects' results for their accept). By default rhs.
+   subroutine system_rhs_end(this, t, y, dydt, status)
+      class(ode_system_t), intent(inout) :: this
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out), contiguous :: dydt(:)
+      integer, intent(out) :: status
+      call this%rhs(t, y, dydt, status)
+   end subroutine system_rhs_end
 
    !> Why the evaluation at (t, y) failed with the system's code (rhs's
    !! status): asked only when a stepper gives up, never at a trial, so it

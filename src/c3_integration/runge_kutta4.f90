@@ -98,8 +98,13 @@ contains
             call this%give_up_not_finite(err)
             return
          end if
-         ! derivative at the new point: the first stage of the next step
-         if (.not. evaluate(t_new, yt, k2)) return
+         ! derivative at the new point: the first stage of the next step, and
+         ! the evaluation that ends it (evaluate_end: what the system keeps
+         ! there serves the accepted step's bookkeeping)
+         if (.not. this%evaluate_end(sys, t_new, yt, k2)) then
+            call this%give_up_rhs(sys, err)
+            return
+         end if
          ! local error estimate (docs/accuracy.md): the embedded third-order
          ! solution y + h/6 (k1 + 2 k2 + 2 k3 + f(t+h, y_new)) from the
          ! stages already taken (the last is the next step's first): no

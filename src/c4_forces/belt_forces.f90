@@ -43,7 +43,7 @@ module belt_forces
    use kinds, only: wp, deg
    use strings, only: num, itoa, upper
    use model, only: model_t, n_dof, n_seg, belt_card_lap2, coupling_torso
-   use effect_base, only: effect_t, body_state_t
+   use effect_base, only: effect_t, body_state_t, kept_inputs_t, kept_set, kept_matches
    use effect_events, only: accept_result_t
    use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
    use point_forces, only: point_force_list_t, point_force_add
@@ -84,8 +84,16 @@ module belt_forces
       real(wp) :: length(n_seg) = 0.0_wp              !< segment lengths (L_1, L_2 place joints 2, 3)
       integer :: last_segment = 3                     !< the highest segment its sections lie on
       integer :: max_iter = 60
+      !> each chain's deformation, its rate and its split at the evaluation
+      !! that ended the step (add_forces_kept), for accept, and the inputs
+      !! they were computed from (issue 16 section 4: a cache, forgotten at
+      !! every accept)
+      real(wp) :: kept_s(max_belt_sections) = 0.0_wp, kept_s_dot(max_belt_sections) = 0.0_wp
+      type(chain_split_t) :: kept_split(max_belt_sections)
+      type(kept_inputs_t) :: kept
    contains
       procedure :: add_forces => belt_add_forces
+      procedure :: add_forces_kept => belt_add_forces_kept
       procedure :: accept => belt_accept
       procedure :: switches => belt_switches
       procedure :: energy => belt_energy
@@ -189,6 +197,7 @@ contains
       end do
       e%n_switch = e%n_switch + count(e%geom(1:e%n_sections)%kind == belt_lap)
       e%has_memory = e%has_memory .or. e%n_switch > 0
+      e%keeps = .true.      ! (its accept takes the chains' splits from the step's last evaluation)
    contains
       !> Section j of the *BELTS cards: its geometry at t = 0 (C.2).
       subroutine add_section(j)
@@ -340,6 +349,51 @@ contains
       end do
    end subroutine belt_add_forces
 
+   !> belt_add_forces at the evaluation that ends a step (effect_t's
+   !! add_forces_kept): the same bits (its loop, written out again so that
+   !! add_forces stays as it is), and each chain's s, s' and split kept for
+   !! accept, tagged by st and aux.
+   subroutine belt_add_forces_kept(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(belt_effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      type(belt_body_t) :: bb
+      type(chain_split_t) :: sp
+      real(wp) :: s, s_dot, g(n_dof)
+      integer :: c, a, m
+      associate (u1 => size(extra), u2 => size(extra_rate))
+      end associate
+      call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
+                          this%last_segment, bb)
+      do c = 1, this%n_chains
+         associate (ch => this%chain(c))
+            call chain_deformation(this, ch, bb, s, s_dot, g)
+            call belt_chain_split(ch, s, s_dot, aux, sp)
+            this%kept_s(c) = s
+            this%kept_s_dot(c) = s_dot
+            this%kept_split(c) = sp
+            if (sp%status /= split_ok) then
+               a = ch%aux_offset
+               aux_rate(a + 1:a + belt_chain_n_aux(ch)) = ieee_value(0.0_wp, ieee_quiet_nan)
+               aux_rate(ch%start_aux) = ieee_value(0.0_wp, ieee_quiet_nan)
+               cycle
+            end if
+            b = b - sp%force*g
+            ! belt_chain_rates(ch, sp, s_dot - dot_product(g, st%zdot), aux_rate),
+            ! its three lines: called from belt_add_forces alone, it is inlined
+            ! there (a second caller took it out of line: +4.5 M instructions
+            ! on the belted driver). test_kept_accept compares the two.
+            m = chain_n_aux(ch%chain)
+            aux_rate(ch%aux_offset + 1:ch%aux_offset + m) = sp%aux_rate(1:m)
+            aux_rate(ch%aux_offset + m + 1) = sp%force*(s_dot - dot_product(g, st%zdot))
+            aux_rate(ch%start_aux) = sp%guess_rate
+         end associate
+      end do
+      call kept_set(this%kept, st, aux)
+   end subroutine belt_add_forces_kept
+
    !> The chain's deformation s: its sections' nominal deformations less
    !! its slack (D-B1), with its rate and its gradient in z.
    pure subroutine chain_deformation(this, ch, bb, s, s_dot, g)
@@ -372,21 +426,36 @@ contains
       type(chain_split_t) :: sp
       real(wp) :: s, s_dot, g(n_dof)
       integer :: c
-      logical :: changed, update
+      logical :: changed, update, reuse
       associate (u1 => size(extra))
       end associate
-      call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
-                          this%last_segment, bb)
+      ! each chain's s, s' and split: those kept at the evaluation that ended
+      ! the step where it was at st and aux exactly (with the memory as it
+      ! is: kept since the last accept), else computed: the same bits
+      reuse = kept_matches(this%kept, st, aux)
+      this%kept%valid = .false.          ! (the memory may change below)
+      if (reuse) then
+         this%accepts_reused = this%accepts_reused + 1
+      else
+         call belt_body_fill(this%length, st%z, st%zdot, st%c, st%s, st%vehicle%pos, st%vehicle%vel, &
+                             this%last_segment, bb)
+      end if
       do c = 1, this%n_chains
          associate (ch => this%chain(c))
-            call chain_deformation(this, ch, bb, s, s_dot, g)
+            if (reuse) then
+               s = this%kept_s(c)
+               s_dot = this%kept_s_dot(c)
+               sp = this%kept_split(c)
+            else
+               call chain_deformation(this, ch, bb, s, s_dot, g)
+               call belt_chain_split(ch, s, s_dot, aux, sp)
+            end if
             update = .not. (all(ch%chain%law(1:ch%chain%n)%elastic) .and. ch%chain%n_states == 0)   ! no memory
             if (update .and. .not. s > 0.0_wp) then
                update = ch%chain%n_states > 0
                if (update) update = chain_relaxing(ch%chain, aux(ch%aux_offset + 1:ch%aux_offset &
                                                                  + chain_n_aux(ch%chain)))
             end if
-            call belt_chain_split(ch, s, s_dot, aux, sp)
             call belt_chain_accept(ch, s, s_dot, aux, sp, update, changed)
             result%restart = result%restart .or. changed
          end associate

@@ -22,7 +22,7 @@ module contact_forces
    use text_io, only: string_t, append_string
    use model, only: body_section_t, n_dof, arc_name
    use contact_tables, only: surface_name
-   use effect_base, only: effect_t, body_state_t
+   use effect_base, only: effect_t, body_state_t, kept_inputs_t, kept_set, kept_matches
    use effect_events, only: accept_result_t, accept_add_event
    use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
    use point_forces, only: point_force_list_t, point_force_add
@@ -46,6 +46,18 @@ module contact_forces
 
    public :: contact_pair_effect_t, contact_pair_effect, pair_set_initial, pair_far, free_point_mass, pair_guard
 
+
+   !> Everything about the pair at one state (pair_eval sets every field;
+   !! no default values, which every evaluation would store first). The
+   !! generalized forces of unit forces along n and t, J_C^T n and J_C^T t,
+   !! are add_forces' own: no other caller reads them.
+   type :: pair_state_t
+      type(contact_feature_t) :: f             !< the body point (f.1) in the interior frame
+      type(contact_state_t) :: cs
+      type(chain_split_t) :: split
+      real(wp) :: c_in(2), n_in(2), t_in(2)    !< C, n, t, inertial
+      real(wp) :: p_t                          !< P', the friction force
+   end type pair_state_t
 
    type, extends(effect_t) :: contact_pair_effect_t
       integer :: i = 0, k = 0
@@ -109,8 +121,14 @@ module contact_forces
       !! pair_far the sizes that scale its rounding margin (the body's
       !! lengths and radii, the surface's)
       real(wp) :: tk(2) = 0.0_wp, nk(2) = 0.0_wp, size_sum = 0.0_wp
+      !> pair_eval at the evaluation that ended the step (add_forces_kept's
+      !! full path), for accept, and the inputs it was computed from (issue
+      !! 16 section 4: a cache, forgotten at every accept)
+      type(pair_state_t) :: kept_ps
+      type(kept_inputs_t) :: kept
    contains
       procedure :: add_forces => pair_add_forces
+      procedure :: add_forces_kept => pair_add_forces_kept
       procedure :: accept => pair_accept
       procedure :: energy => pair_energy
       procedure :: outputs => pair_outputs
@@ -130,17 +148,6 @@ module contact_forces
    !! over this time (s) (its sign is what matters)
    real(wp), parameter :: friction_time = 1.0e-3_wp
 
-   !> Everything about the pair at one state (pair_eval sets every field;
-   !! no default values, which every evaluation would store first). The
-   !! generalized forces of unit forces along n and t, J_C^T n and J_C^T t,
-   !! are add_forces' own: no other caller reads them.
-   type :: pair_state_t
-      type(contact_feature_t) :: f             !< the body point (f.1) in the interior frame
-      type(contact_state_t) :: cs
-      type(chain_split_t) :: split
-      real(wp) :: c_in(2), n_in(2), t_in(2)    !< C, n, t, inertial
-      real(wp) :: p_t                          !< P', the friction force
-   end type pair_state_t
 
 contains
 
@@ -211,6 +218,7 @@ contains
       ! loading cycles, the side a flat surface's pair came from (D-C16a), the
       ! windshield, Table 9's contacts and D-C18b's note
       e%has_memory = .true.
+      e%keeps = .true.      ! (its accept takes pair_eval from the step's last evaluation)
       e%tk = [cos(sf%psi), sin(sf%psi)]
       e%nk = [-e%tk(2), e%tk(1)]
       e%size_sum = sum(abs(body%length)) + sum(abs(body%rho_arc)) + sum(abs(body%r_arc)) + abs(sf%s(1)) + &
@@ -572,6 +580,50 @@ contains
                                - ps%p_t*(dot_product(b_t, st%zdot) - ps%cs%v_t)
    end subroutine pair_add_full
 
+   !> pair_add_forces at the evaluation that ends a step (effect_t's
+   !! add_forces_kept): the same bits, and on the full path pair_eval's
+   !! state kept for accept, tagged by st and aux. (pair_add_full's lines
+   !! written out again: with a second caller, the compiler no longer puts
+   !! them in line in add_forces, at every evaluation; test_kept_accept
+   !! compares the two.)
+   subroutine pair_add_forces_kept(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(contact_pair_effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      type(pair_state_t) :: ps
+      real(wp) :: b_n(n_dof), b_t(n_dof)
+      associate (u1 => size(extra) + size(aux), u2 => size(extra_rate))
+      end associate
+      if (this%exit_far) then
+         if (pair_far(this, st)) then
+            ! pair_add_forces' early exit (accept's short path needs nothing kept)
+            aux_rate = 0.0_wp
+            if (chain_relaxing(this%chain, aux)) call slack_rates(this, aux, aux_rate)
+            return
+         end if
+      end if
+      call pair_eval(this, st, aux, ps)
+      this%kept_ps = ps
+      call kept_set(this%kept, st, aux)
+      ! pair_add_full
+      if (ps%split%status /= split_ok) then
+         aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)
+         return
+      end if
+      aux_rate(1:this%aux_friction - 1) = ps%split%aux_rate(1:this%aux_friction - 1)
+      aux_rate(this%aux_friction:this%aux_supplied) = 0.0_wp
+      if (.not. ps%split%force > 0.0_wp) return
+      b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
+      b_t = 0.0_wp
+      if (abs(ps%p_t) > 0.0_wp) b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%t_in)
+      b = b + ps%split%force*b_n - ps%p_t*b_t
+      aux_rate(this%aux_friction) = ps%p_t*ps%cs%v_t
+      aux_rate(this%aux_supplied) = ps%split%force*(ps%cs%delta_dot + dot_product(b_n, st%zdot)) &
+                               - ps%p_t*(dot_product(b_t, st%zdot) - ps%cs%v_t)
+   end subroutine pair_add_forces_kept
+
    !> D-C16a's memory of a flat surface's pair, and its proximity guard
    !! with it (D-C29: a slab once come from behind, else a half-plane).
    pure subroutine set_behind(this, behind)
@@ -747,8 +799,19 @@ contains
    end function pair_peaks
 
    !> The loading cycle (figure 18) from the accepted deformation and rate;
-   !! a changed law restarts the stepper.
+   !! a changed law restarts the stepper. What was kept at the evaluation
+   !! that ended the step is forgotten: the memory may change here.
    subroutine pair_accept(this, st, extra, aux, result)
+      class(contact_pair_effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(accept_result_t), intent(inout) :: result
+      call pair_accept_paths(this, st, extra, aux, result)
+      this%kept%valid = .false.
+   end subroutine pair_accept
+
+   !> pair_accept's short path, where the pair is far, or its full path.
+   subroutine pair_accept_paths(this, st, extra, aux, result)
       class(contact_pair_effect_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
@@ -776,10 +839,13 @@ contains
          end if
       end if
       call pair_accept_full(this, st, aux, result)
-   end subroutine pair_accept
+   end subroutine pair_accept_paths
 
    !> accept's full path (its own procedure: the pair's state is not set
-   !! up on the short path).
+   !! up on the short path). The pair's state at st is the one kept at the
+   !! evaluation that ended the step where that was at st and aux exactly
+   !! (with the memory as it is: kept since the last accept), else
+   !! pair_eval's: the same bits.
    subroutine pair_accept_full(this, st, aux, result)
       class(contact_pair_effect_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
@@ -789,7 +855,12 @@ contains
       type(contact_state_t) :: cs
       logical :: changed
       integer :: side
-      call pair_eval(this, st, aux, ps)
+      if (kept_matches(this%kept, st, aux)) then
+         ps = this%kept_ps
+         this%accepts_reused = this%accepts_reused + 1
+      else
+         call pair_eval(this, st, aux, ps)
+      end if
       ! D-C16a: the side of the surface's line the point is on, where it is decided
       side = front_side(ps%f, this%surface, this%tk)
       if (side /= 0) call set_behind(this, side < 0)

@@ -24,6 +24,15 @@
 !! Evaluations are counted by the system, not by the effect (which is
 !! read-only while it is evaluated).
 !!
+!! The evaluation that ends a step (the integrator marks it: ode_system's
+!! rhs_end) is at the state the step is accepted at, with the memory accept
+!! then starts from. An effect that `keeps` takes it through
+!! `add_forces_kept` instead of add_forces, which may keep what its accept
+!! needs (a cache, not memory: the forces are add_forces' bits), tagged by
+!! the inputs it was computed from (kept_inputs_t); accept takes it where
+!! the tags match bit for bit and computes it again where they do not, and
+!! forgets it (its memory may change). Issue 16 section 4.
+!!
 !! An effect whose force or slope changes discontinuously at a threshold
 !! of the state declares switching functions (n_switch, `switches`), which
 !! the driver locates inside steps (issue 15).
@@ -36,7 +45,7 @@
 !! (what accept reports), effect_energies, point_forces, effect_peaks,
 !! proximity_guard, output_series; effect_slots holds effects in a list.
 module effect_base
-   use kinds, only: wp
+   use kinds, only: wp, i8
    use model, only: n_dof
    use body_state, only: body_state_t
    use effect_energies, only: n_energy_kinds
@@ -52,6 +61,7 @@ module effect_base
 
    !> (body_state_t: the interface's state argument, public here too)
    public :: effect_t, body_state_t, slide_t
+   public :: kept_inputs_t, kept_set, kept_matches
 
    type, abstract :: effect_t
       character(len=24) :: name = ' '    !< HDF5 group /effects/<name>; lower case, no blanks
@@ -77,8 +87,15 @@ module effect_base
       logical :: external = .false.
       !> where the effect is inert for certain, tested before each dispatch (D-C29)
       type(proximity_guard_t) :: guard
+      !> the evaluation that ends a step goes through add_forces_kept, which
+      !! keeps what accept needs (issue 16 section 4); .false.: add_forces
+      logical :: keeps = .false.
+      !> accepts that took the kept results instead of computing them again
+      !! (counted, for the tests and measurements)
+      integer(i8) :: accepts_reused = 0
    contains
       procedure(add_forces_interface), deferred :: add_forces
+      procedure :: add_forces_kept => effect_add_forces_kept
       procedure :: accept => effect_accept
       procedure :: energy => effect_energy
       procedure :: outputs => effect_outputs
@@ -110,7 +127,77 @@ module effect_base
       end subroutine add_forces_interface
    end interface
 
+   !> The inputs an effect's kept results were computed from: the time, the
+   !! occupant's coordinates and rates, the effect's auxiliary quantities.
+   !! What else an evaluation reads is a function of these (the segments'
+   !! cosines and sines, the vehicle's state at t, the interior frame's
+   !! data) or the effect's memory, which accept forgets the kept results
+   !! with. valid: set by kept_set.
+   type :: kept_inputs_t
+      logical :: valid = .false.
+      real(wp) :: t = 0.0_wp
+      real(wp) :: z(n_dof) = 0.0_wp, zdot(n_dof) = 0.0_wp
+      real(wp), allocatable :: aux(:)
+   end type kept_inputs_t
+
 contains
+
+   !> add_forces at the evaluation that ends a step (rhs_end): the default
+   !! keeps nothing.
+   subroutine effect_add_forces_kept(this, st, extra, aux, b, extra_rate, aux_rate)
+      class(effect_t), intent(inout) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      real(wp), intent(inout) :: b(n_dof)
+      real(wp), intent(out) :: extra_rate(:), aux_rate(:)
+      call this%add_forces(st, extra, aux, b, extra_rate, aux_rate)
+   end subroutine effect_add_forces_kept
+
+   !> Tag kept results with the inputs (st, aux) they were computed from
+   !! (aux's room allocated at the first, then reused: its size is fixed).
+   pure subroutine kept_set(k, st, aux)
+      type(kept_inputs_t), intent(inout) :: k
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: aux(:)
+      integer :: i
+      if (.not. allocated(k%aux)) allocate (k%aux(size(aux)))
+      if (size(k%aux) /= size(aux)) then
+         deallocate (k%aux)
+         allocate (k%aux(size(aux)))
+      end if
+      k%t = st%t
+      k%z = st%z
+      k%zdot = st%zdot
+      do i = 1, size(aux)
+         k%aux(i) = aux(i)
+      end do
+      k%valid = .true.
+   end subroutine kept_set
+
+   !> The kept results were computed from exactly these inputs: every one
+   !! the same bits (a signed zero or a NaN is not taken for another).
+   pure logical function kept_matches(k, st, aux) result(same)
+      type(kept_inputs_t), intent(in) :: k
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: aux(:)
+      integer :: i
+      same = .false.
+      if (.not. k%valid) return
+      if (size(k%aux) /= size(aux)) return
+      if (.not. same_bits(k%t, st%t)) return
+      do i = 1, n_dof
+         if (.not. (same_bits(k%z(i), st%z(i)) .and. same_bits(k%zdot(i), st%zdot(i)))) return
+      end do
+      do i = 1, size(aux)
+         if (.not. same_bits(k%aux(i), aux(i))) return
+      end do
+      same = .true.
+   contains
+      pure logical function same_bits(a, b)
+         real(wp), intent(in) :: a, b
+         same_bits = transfer(a, 0_i8) == transfer(b, 0_i8)
+      end function same_bits
+   end function kept_matches
 
    !> The forces from outside the body that the effect applies, appended
    !! to list: none for the default effect (internal torques, inertia).

@@ -20,7 +20,7 @@ module equations_of_motion
    use state_layout, only: state_layout_t
    use vehicle_motion, only: vehicle_motion_t, vehicle_motion_init
    use body_state, only: body_state_t
-   use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_initial_y, &
+   use occupant, only: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_rhs_kept, occupant_initial_y, &
       occupant_add_effect, occupant_vehicle, occupant_settle, slides_overflow
    use sliding_constraints, only: max_slides
    use effect_base, only: effect_t
@@ -56,8 +56,14 @@ module equations_of_motion
       !> evaluations of each effect (effect, occupant)
       integer(i8), allocatable :: counts(:, :)
       integer(i8) :: evaluations = 0
+      !> the evaluation that ends a step keeps, in the effects that keep,
+      !! what their accept needs there (rhs_end; issue 16 section 4):
+      !! .false. evaluates it as any other (a test compares the two)
+      logical :: keep_for_accept = .true.
+      logical :: keeps = .false.          !< an occupant keeps (occupant_t%keeps)
    contains
       procedure :: rhs => system_rhs
+      procedure :: rhs_end => system_rhs_end
       procedure :: error_controlled => system_error_controlled
       procedure :: failure_text => system_failure_text
    end type crash_system_t
@@ -103,6 +109,7 @@ contains
       counts(1:size(sys%counts, 1), 1:n - 1) = sys%counts
       call move_alloc(counts, sys%counts)
       sys%needs_vehicle = sys%needs_vehicle .or. sys%occupants(n)%needs_vehicle
+      sys%keeps = sys%keeps .or. sys%occupants(n)%keeps
    end subroutine system_add_occupant
 
    !> One more effect for occupant o (its quantities go at the end of y).
@@ -117,6 +124,7 @@ contains
       counts(1:size(sys%counts, 1), :) = sys%counts
       call move_alloc(counts, sys%counts)
       sys%needs_vehicle = sys%needs_vehicle .or. sys%occupants(o)%needs_vehicle
+      sys%keeps = sys%keeps .or. sys%occupants(o)%keeps
    end subroutine system_add_effect
 
    !> The initial state vector.
@@ -194,6 +202,47 @@ contains
       ! every rate: z'', and the effects' extra and auxiliary quantities
       if (.not. all(ieee_is_finite(dydt))) status = rhs_not_finite
    end subroutine system_rhs
+
+   !> rhs at the evaluation that ends a step (ode_system's rhs_end): the
+   !! same f, and the effects that keep keep what their accept needs at (t,
+   !! y) (occupant_rhs_kept), unless keep_for_accept is off (issue 16
+   !! section 4). (system_rhs's loop written out again, so that rhs, at
+   !! every other evaluation, stays as it was.)
+   subroutine system_rhs_end(this, t, y, dydt, status)
+      class(crash_system_t), intent(inout) :: this
+      real(wp), intent(in) :: t
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(out), contiguous :: dydt(:)
+      integer, intent(out) :: status
+      type(body_state_t) :: st
+      integer :: o, info
+
+      if (.not. (this%keep_for_accept .and. this%keeps)) then
+         call system_rhs(this, t, y, dydt, status)
+         return
+      end if
+      this%evaluations = this%evaluations + 1
+      status = 0
+      do o = 1, size(this%occupants)
+         associate (occ => this%occupants(o))
+            if (.not. in_range(occ, y)) then
+               status = rhs_diverged
+               return
+            end if
+            call occupant_state(occ, t, y, st)
+            if (occ%needs_vehicle) call occupant_vehicle(occ, this%vm, t, st)
+            ! (an occupant whose effects keep nothing evaluates them as rhs
+            ! does; occupant_rhs is called from rhs alone, where it is inlined)
+            call occupant_rhs_kept(occ, st, y, dydt, this%counts(:, o), info)
+            if (info /= 0) then
+               status = rhs_not_positive_definite
+               if (info == slides_overflow) status = rhs_too_many_slides
+               return
+            end if
+         end associate
+      end do
+      if (.not. all(ieee_is_finite(dydt))) status = rhs_not_finite
+   end subroutine system_rhs_end
 
    !> Why the evaluation at (t, y) failed with code (system_rhs's status),
    !! when a stepper gives up: the code's reason and, for a state out of

@@ -23,6 +23,7 @@ module occupant
    private
 
    public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces, occupant_frame
+   public :: occupant_rhs_kept
    public :: occupant_vehicle
    public :: occupant_initial_y, occupant_add_effect, occupant_point_forces
    public :: occupant_slide_switches, occupant_settle, occupant_slide_forces
@@ -45,6 +46,9 @@ module occupant
       !! integrating quantities of their own), and those with memory (whose
       !! accept is called after each accepted step)
       integer, allocatable :: evaluated(:), remembering(:)
+      !> an evaluated effect with memory keeps, at the evaluation that ends a
+      !! step, what its accept needs (effect_t%keeps; occupant_rhs_kept)
+      logical :: keeps = .false.
       !> the effects that may hold sliding constraints (issue 15), and how
       !! many constraints they may hold in all
       integer, allocatable :: sliding(:)
@@ -129,6 +133,7 @@ contains
          if (.not. allocated(occ%remembering)) allocate (occ%remembering(0))
          if (e%acts .or. e%n_aux > 0 .or. e%n_extra > 0) occ%evaluated = [(occ%evaluated(j), j=1, size(occ%evaluated)), k]
          if (e%has_memory) occ%remembering = [(occ%remembering(j), j=1, size(occ%remembering)), k]
+         occ%keeps = occ%keeps .or. (e%keeps .and. e%has_memory .and. any(occ%evaluated == k))
          if (.not. allocated(occ%sliding)) allocate (occ%sliding(0))
          if (e%n_slide > 0) then
             occ%sliding = [(occ%sliding(j), j=1, size(occ%sliding)), k]
@@ -309,6 +314,67 @@ contains
       dydt(occ%z_offset + 1:occ%z_offset + n_dof) = st%zdot
       dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = zdd
    end subroutine occupant_rhs
+
+   !> occupant_rhs at the evaluation that ends a step (rhs_end; issue 16
+   !! section 4): the same bits, but the effects that keep (effect_t%keeps)
+   !! are evaluated through add_forces_kept, which keeps what their accept
+   !! needs at this state. Only the effects' kept results change.
+   !! (occupant_forces' loop and occupant_rhs' solve written out again, so
+   !! that every other evaluation stays as it was.)
+   subroutine occupant_rhs_kept(occ, st, y, dydt, counts, info)
+      type(occupant_t), intent(inout) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in), contiguous :: y(:)
+      real(wp), intent(inout), contiguous :: dydt(:)
+      integer(i8), intent(inout) :: counts(:)
+      integer, intent(out) :: info
+      real(wp) :: b(n_dof), zdd(n_dof)
+      type(slide_set_t) :: set
+      integer :: n, k, xo, ao, c
+      logical :: inert
+      ! occupant_forces, the keeping effects through add_forces_kept
+      b = 0.0_wp
+      do n = 1, size(occ%evaluated)
+         k = occ%evaluated(n)
+         xo = occ%extra_offset(k)
+         ao = occ%aux_offset(k)
+         associate (e => occ%effects(k)%e)
+            inert = .false.
+            if (e%guard%kind /= guard_none) inert = guard_holds(e%guard, st)
+            if (inert) then
+               dydt(xo + 1:xo + 2*e%n_extra) = 0.0_wp
+               dydt(ao + 1:ao + e%n_aux) = 0.0_wp
+            else if (e%keeps) then
+               call e%add_forces_kept(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), b, &
+                                      dydt(xo + 1:xo + 2*e%n_extra), dydt(ao + 1:ao + e%n_aux))
+            else
+               call e%add_forces(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), b, &
+                                 dydt(xo + 1:xo + 2*e%n_extra), dydt(ao + 1:ao + e%n_aux))
+            end if
+         end associate
+         counts(k) = counts(k) + 1
+      end do
+      call body_accelerations(occ%bc, st%c, st%s, b, zdd, info, occ%solver)
+      if (info == 0 .and. occ%n_slide > max_slides) info = slides_overflow
+      if (info == 0 .and. occ%n_slide > 0) then
+         ! slide's lines (with a second caller, the compiler no longer puts
+         ! slide in line in occupant_rhs, at every evaluation)
+         call gather_slides(occ, st, y, set)
+         if (set%n > 0) call set_multipliers(occ, st, zdd, set, info)
+         if (set%n > 0 .and. info == 0) then
+            do c = 1, set%n
+               zdd = zdd + set%y_cols(:, c)*set%lam_clipped(c)
+               if (set%aux_at(c) > 0) dydt(set%aux_at(c)) = dydt(set%aux_at(c)) &
+                                                           - set%lam_clipped(c)*(dot_product(set%d(:, c), st%zdot) &
+                                                                                 + set%offset(c))
+               if (set%aux_supplied(c) > 0) dydt(set%aux_supplied(c)) = dydt(set%aux_supplied(c)) &
+                                                                       - set%lam_clipped(c)*set%offset(c)
+            end do
+         end if
+      end if
+      dydt(occ%z_offset + 1:occ%z_offset + n_dof) = st%zdot
+      dydt(occ%zdot_offset + 1:occ%zdot_offset + n_dof) = zdd
+   end subroutine occupant_rhs_kept
 
    !> The active sliding constraints (issue 15) held at zdd: their
    !! multipliers, each clipped to its range, added to zdd, and the power

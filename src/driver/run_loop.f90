@@ -55,6 +55,7 @@ module run_loop
       procedure :: is_done => run_is_done
       procedure :: finish => run_finish
       procedure :: time => run_time
+      procedure :: peek => run_peek
    end type run_t
 
 contains
@@ -205,6 +206,17 @@ contains
       class(run_t), intent(in) :: this
       run_time = this%t
    end function run_time
+
+   !> A copy of the run's system (its effects and their memories) and of
+   !! its state at the last accepted point: for tests that compare runs
+   !! step by step.
+   subroutine run_peek(this, sys, y)
+      class(run_t), intent(in) :: this
+      type(crash_system_t), intent(out) :: sys
+      real(wp), allocatable, intent(out) :: y(:)
+      sys = this%sys
+      y = this%y
+   end subroutine run_peek
 
    !> The run's summary (the cost, each effect's evaluations and peaks
    !! added), given to the sinks' finish; err: a numerical failure, or the
