@@ -567,45 +567,60 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       real(wp), intent(out) :: values(:)
       type(belt_state_t) :: bs
-      real(wp) :: ce(max_chain), de(max_chain), supplied
-      integer :: k, c, q, i
+      real(wp) :: ce(max_chain, max_belt_sections), de(max_chain, max_belt_sections), supplied(max_belt_sections)
+      integer :: c
       associate (u1 => size(extra))
       end associate
-      values = 0.0_wp
       bs = belt_section_state(this, st, aux)
+      ce = 0.0_wp
+      de = 0.0_wp
+      supplied = 0.0_wp
+      if (item == out_energy) then
+         do c = 1, this%n_chains
+            call belt_chain_energies(this%chain(c), bs%split(c), aux, ce(:, c), de(:, c), supplied(c))
+         end do
+      end if
+      call belt_item_values(this, bs, item, ce, de, supplied, values)
+   end subroutine belt_output_values
+
+   !> Series item of the belt (belt_outputs' layout) into v, from the
+   !! sections' state bs and, for the energies, each chain's elements'
+   !! stored and dissipated energies ce, de and its supplied work.
+   pure subroutine belt_item_values(this, bs, item, ce, de, supplied, v)
+      class(belt_effect_t), intent(in) :: this
+      type(belt_state_t), intent(in) :: bs
+      integer, intent(in) :: item
+      real(wp), intent(in) :: ce(:, :), de(:, :), supplied(:)
+      real(wp), intent(out) :: v(:)
+      integer :: k, q, i, ic
+      v = 0.0_wp
       do k = 1, this%n_sections
-         c = this%chain_of(k)
+         ic = this%chain_of(k)
          q = this%position(k)
-         associate (ch => this%chain(c), sp => bs%split(c))
+         associate (ch => this%chain(ic), sp => bs%split(ic))
             select case (item)
             case (out_force)
-               values(k) = sp%force
+               v(k) = sp%force
             case (out_angle)
-               values(k) = bs%kin(k)%phi
+               v(k) = bs%kin(k)%phi
             case (out_deformation)
-               values(3*k - 2) = bs%kin(k)%delta
-               values(3*k - 1) = sp%x(ch%webbing(q))
-               if (ch%body(q) > 0) values(3*k) = sp%x(ch%body(q))
+               v(3*k - 2) = bs%kin(k)%delta
+               v(3*k - 1) = sp%x(ch%webbing(q))
+               if (ch%body(q) > 0) v(3*k) = sp%x(ch%body(q))
             case (out_rate)
-               values(3*k - 2) = bs%kin(k)%delta_rate
-               values(3*k - 1) = sp%rate(ch%webbing(q))
-               if (ch%body(q) > 0) values(3*k) = sp%rate(ch%body(q))
+               v(3*k - 2) = bs%kin(k)%delta_rate
+               v(3*k - 1) = sp%rate(ch%webbing(q))
+               if (ch%body(q) > 0) v(3*k) = sp%rate(ch%body(q))
             case (out_energy)
-               call belt_chain_energies(ch, sp, aux, ce, de, supplied)
                i = ch%webbing(q)
-               values(4*k - 3:4*k - 2) = [ce(i), de(i)]
+               v(4*k - 3:4*k - 2) = [ce(i, ic), de(i, ic)]
                i = ch%body(q)
-               if (i > 0) values(4*k - 1:4*k) = [ce(i), de(i)]
+               if (i > 0) v(4*k - 1:4*k) = [ce(i, ic), de(i, ic)]
             end select
          end associate
       end do
-      if (item == out_energy) then
-         do c = 1, this%n_chains
-            call belt_chain_energies(this%chain(c), bs%split(c), aux, ce, de, supplied)
-            values(4*this%n_sections + c) = supplied
-         end do
-      end if
-   end subroutine belt_output_values
+      if (item == out_energy) v(4*this%n_sections + 1:4*this%n_sections + this%n_chains) = supplied(1:this%n_chains)
+   end subroutine belt_item_values
 
    !> A print time's frame (effect_t's frame_values): the sections' state
    !! and splits (belt_section_state) once for the energies, the five series
@@ -631,7 +646,7 @@ contains
       type(belt_state_t) :: bs
       real(wp) :: ce(max_chain, max_belt_sections), de(max_chain, max_belt_sections), supplied(max_belt_sections)
       real(wp) :: cphi, sphi, f
-      integer :: k, q, i, n, item, ic
+      integer :: k, n, item, ic
       associate (u1 => size(extra))
       end associate
       bs = belt_section_state(this, st, aux)
@@ -647,36 +662,7 @@ contains
       ! belt_output_values
       do item = 1, min(size(at), out_energy)
          if (at(item) < 0) cycle
-         associate (v => values(at(item) + 1:at(item) + width(item)))
-            v = 0.0_wp
-            do k = 1, this%n_sections
-               ic = this%chain_of(k)
-               q = this%position(k)
-               associate (ch => this%chain(ic), sp => bs%split(ic))
-                  select case (item)
-                  case (out_force)
-                     v(k) = sp%force
-                  case (out_angle)
-                     v(k) = bs%kin(k)%phi
-                  case (out_deformation)
-                     v(3*k - 2) = bs%kin(k)%delta
-                     v(3*k - 1) = sp%x(ch%webbing(q))
-                     if (ch%body(q) > 0) v(3*k) = sp%x(ch%body(q))
-                  case (out_rate)
-                     v(3*k - 2) = bs%kin(k)%delta_rate
-                     v(3*k - 1) = sp%rate(ch%webbing(q))
-                     if (ch%body(q) > 0) v(3*k) = sp%rate(ch%body(q))
-                  case (out_energy)
-                     i = ch%webbing(q)
-                     v(4*k - 3:4*k - 2) = [ce(i, ic), de(i, ic)]
-                     i = ch%body(q)
-                     if (i > 0) v(4*k - 1:4*k) = [ce(i, ic), de(i, ic)]
-                  end select
-               end associate
-            end do
-            if (item == out_energy) v(4*this%n_sections + 1:4*this%n_sections + this%n_chains) = &
-               supplied(1:this%n_chains)
-         end associate
+         call belt_item_values(this, bs, item, ce, de, supplied, values(at(item) + 1:at(item) + width(item)))
       end do
       if (gf) call add_forces_into(b)
       if (sums) call add_forces_into(b_sum)
