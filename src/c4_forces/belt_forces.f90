@@ -294,11 +294,20 @@ contains
       real(wp), intent(in) :: extra(:), aux(:)
       type(point_force_list_t), intent(inout) :: list
       type(belt_state_t) :: bs
-      real(wp) :: c, s, f
-      integer :: k
       associate (u1 => size(extra))
       end associate
       bs = belt_section_state(this, st, aux)
+      call belt_state_point_forces(this, st, bs, list)
+   end subroutine belt_point_forces
+
+   !> The sections' forces on the body (belt_point_forces) from their state bs.
+   pure subroutine belt_state_point_forces(this, st, bs, list)
+      class(belt_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      type(belt_state_t), intent(in) :: bs
+      type(point_force_list_t), intent(inout) :: list
+      real(wp) :: c, s, f
+      integer :: k
       c = cos(st%vehicle%pos(3))
       s = sin(st%vehicle%pos(3))
       do k = 1, this%n_sections
@@ -310,7 +319,7 @@ contains
                                  [c*d(1) + s*d(2), -s*d(1) + c*d(2)])
          end associate
       end do
-   end subroutine belt_point_forces
+   end subroutine belt_state_point_forces
 
    !> B = -F sum_j d(delta_j)/dz per chain (C.4.e, BE-1), and the rates of the
    !! auxiliary quantities: per element W, E_abs, D_v (E6-2), per chain the
@@ -645,8 +654,7 @@ contains
       type(point_force_list_t), intent(inout) :: list
       type(belt_state_t) :: bs
       real(wp) :: ce(max_chain, max_belt_sections), de(max_chain, max_belt_sections), supplied(max_belt_sections)
-      real(wp) :: cphi, sphi, f
-      integer :: k, n, item, ic
+      integer :: n, item, ic
       associate (u1 => size(extra))
       end associate
       bs = belt_section_state(this, st, aux)
@@ -666,20 +674,7 @@ contains
       end do
       if (gf) call add_forces_into(b)
       if (sums) call add_forces_into(b_sum)
-      ! belt_point_forces
-      if (pf) then
-         cphi = cos(st%vehicle%pos(3))
-         sphi = sin(st%vehicle%pos(3))
-         do k = 1, this%n_sections
-            f = bs%split(this%chain_of(k))%force
-            if (.not. f > 0.0_wp) cycle
-            associate (p => bs%kin(k)%point, d => -f*bs%kin(k)%direction)
-               call point_force_add(list, this%geom(k)%segment, &
-                                    st%vehicle%pos(1:2) + [cphi*p(1) + sphi*p(2), -sphi*p(1) + cphi*p(2)], &
-                                    [cphi*d(1) + sphi*d(2), -sphi*d(1) + cphi*d(2)])
-            end associate
-         end do
-      end if
+      if (pf) call belt_state_point_forces(this, st, bs, list)
    contains
       !> belt_add_forces' B added to bb
       pure subroutine add_forces_into(bb)
