@@ -69,6 +69,9 @@ module ode_system
       !> effects' (or sliding constraints') switching functions not evaluated
       !! in a search for a switch, where none of them could cross (issue 16)
       integer(i8) :: switch_groups_skipped = 0
+      !> effects' (or sliding constraints') switching functions kept after an
+      !! accept that changed none of their memory (issue 16)
+      integer(i8) :: switch_groups_kept = 0
       real(wp) :: h_min = huge(1.0_wp), h_max = 0.0_wp   !< accepted step sizes
    end type step_stats_t
 

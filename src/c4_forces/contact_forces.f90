@@ -207,6 +207,7 @@ contains
       e%n_chain_switch = chain_switch_count(e%chain)
       e%n_region_switch = region_switch_count(i, sf)
       e%n_switch = 1 + e%n_chain_switch + e%n_region_switch
+      e%reports_unchanged = .true.        ! (accept's far path, pair_accept_paths)
       if (e%mu > 0.0_wp) e%n_switch = e%n_switch + 2
       if (e%mu > 0.0_wp .and. e%dt_fixed > 0.0_wp) e%n_switch = e%n_switch + 1
       if (e%fsw > 0.0_wp) e%n_switch = e%n_switch + 1
@@ -816,7 +817,7 @@ contains
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
-      logical :: far
+      logical :: far, behind_was, loaded_was, once_was
       integer :: side
       associate (u1 => size(extra))
       end associate
@@ -827,12 +828,20 @@ contains
          ! (a rate-dependent element still loaded takes the full path: it
          ! recovers out of contact, its memory follows it, series_chain)
          if (far .and. side /= side_unknown .and. .not. chain_relaxing(this%chain, aux)) then
+            behind_was = this%behind
+            loaded_was = this%was_loaded
+            once_was = this%accepted_once
+            result%memory_unchanged = this%face == 0
             if (side /= 0) call set_behind(this, side < 0)   ! D-C16a, as front_side
             this%face = 0                                ! (no solid met from inside)
             if (this%undesired) then                     ! D-C28: not loaded
                this%was_loaded = .false.
                this%accepted_once = .true.
             end if
+            ! (the side, the face and Table 9's flags are all the memory this
+            ! path can change; the switching functions read the side)
+            result%memory_unchanged = result%memory_unchanged .and. (this%behind .eqv. behind_was) &
+                                      .and. (this%was_loaded .eqv. loaded_was) .and. (this%accepted_once .eqv. once_was)
             ! no force: the glass holds (D-C24; broken glass, whose cut needs
             ! delta, has side_unknown), and the loading cycle keeps its memory
             return

@@ -76,6 +76,10 @@ module effect_base
       logical :: needs_joints = .false.
       logical :: acts = .true.           !< adds generalized forces (a pure monitor does not)
       logical :: has_memory = .false.    !< its accept changes something (only such are called)
+      !> its accept may say it changed none of its memory (accept_result_t's
+      !! memory_unchanged; the switch locator then keeps its switching
+      !! functions, issue 16 section 4)
+      logical :: reports_unchanged = .false.
       !> switching functions (`switches`): where the force or its slope
       !! changes discontinuously (issue 15); none by default
       integer :: n_switch = 0

@@ -51,6 +51,10 @@ module effect_events
    !> What `accept` reports.
    type :: accept_result_t
       logical :: restart = .false.  !< the right-hand side jumped: the stepper must restart
+      !> the accept changed none of the effect's memory: its switching
+      !! functions at the state are those before it (issue 16 section 4;
+      !! the default says nothing of the kind)
+      logical :: memory_unchanged = .false.
       integer :: n_events = 0
       type(event_t) :: events(max_events_per_step)
    end type accept_result_t

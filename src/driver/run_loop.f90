@@ -191,7 +191,8 @@ contains
       if (this%summary%end_reason == end_energy) reason = end_energy
       this%reason = reason
       ! the signs the next step is compared with, with the memory just updated
-      if (reason == end_none) call this%switches%accepted(this%sys, this%t, this%y, this%stepper%stats)
+      if (reason == end_none) &
+         call this%switches%accepted(this%sys, this%t, this%y, this%stepper%stats, this%books%memory_unchanged)
    end subroutine run_advance
 
    !> The run has ended: TMAX, an end test (C.7), a numerical failure, or

@@ -61,6 +61,11 @@ module step_bookkeeping
       real(wp) :: t_accepted = 0.0_wp
       integer(i8) :: rejected_seen = 0
       real(wp), allocatable :: y_moved(:), f_moved(:)
+      !> at the last accept, effect k of occupant o (k, o) changed none of
+      !! its memory (an effect without memory, or one whose accept said so;
+      !! none where a sliding constraint left its surface): the switch
+      !! locator keeps its switching functions (issue 16 section 4)
+      logical, allocatable :: memory_unchanged(:, :)
    contains
       procedure :: init => books_init
       procedure :: accept => books_accept
@@ -147,6 +152,14 @@ contains
       any_rest = .false.
       all_rested = .true.
       reason = end_none
+      if (.not. allocated(this%memory_unchanged)) then
+         k = 0
+         do o = 1, size(sys%occupants)
+            k = max(k, size(sys%occupants(o)%effects))
+         end do
+         allocate (this%memory_unchanged(k, size(sys%occupants)))
+      end if
+      this%memory_unchanged = .true.
       ! the step's local error estimate (a fixed-step stepper's), read once;
       ! the step was taken again to a located switch when the stepper
       ! rejected one (the windshield's jump) or took one again (a switch)
@@ -179,11 +192,13 @@ contains
                k = occ%remembering(q)
                ar%restart = .false.
                ar%n_events = 0
+               ar%memory_unchanged = .false.
                xo = occ%extra_offset(k)
                ao = occ%aux_offset(k)
                associate (e => occ%effects(k)%e)
                   call e%accept(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), ar)
                end associate
+               this%memory_unchanged(k, o) = ar%memory_unchanged
                restart = restart .or. ar%restart
                do j = 1, ar%n_events
                   ar%events(j)%occupant = o
@@ -218,6 +233,7 @@ contains
       if (.not. allocated(this%rates)) allocate (this%rates(size(y)), this%counts(size(sys%counts, 1)))
       call system_settle(sys, t, y, settled, this%rates, this%counts)
       restart = restart .or. settled
+      if (settled) this%memory_unchanged = .false.
       if (present(kink)) restart = restart .or. (kink .and. stepper%multistep)
       if (restart) then
          ! the derivative at the accepted point is kept, for the frame of a

@@ -92,6 +92,19 @@ module switch_location
       !! with a function that crossed over it (issue 16 section 4)
       integer, allocatable :: group_of(:)
       logical, allocatable :: searched(:)
+      !> each group's occupant and effect (0: the occupant's sliding constraints)
+      integer, allocatable :: group_occ(:), group_eff(:)
+      !> g_hi holds every switching function at (t_full, y_full), the state
+      !! a step ended on without crossing, with the memory before its accept
+      logical :: full_at_end = .false.
+      real(wp) :: t_full = 0.0_wp
+      real(wp), allocatable :: y_full(:)
+      !> at the last accept some effect with memory and switching functions
+      !! said it changed none: the next step's end is kept for its accept
+      logical :: keeps_end = .true.
+      !> some effect with switching functions may say so (reports_unchanged:
+      !! a scene without one, the body alone, pays nothing for it)
+      logical :: may_keep = .false.
       !> the functions of the searched groups, idx(1:n_searched): the search
       !! reads and writes only these (the others keep their values at the
       !! step's end, in g_hi, on the side they started on)
@@ -133,8 +146,14 @@ contains
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
       type(step_stats_t), intent(inout) :: stats
-      integer :: n
-      call switch_groups(sys, this%group_of, this%searched)
+      integer :: n, k
+      call switch_groups(sys, this%group_of, this%searched, this%group_occ, this%group_eff)
+      this%may_keep = .false.
+      do k = 1, size(this%group_eff)
+         if (this%group_eff(k) == 0) cycle
+         this%may_keep = this%may_keep .or. sys%occupants(this%group_occ(k))%effects(this%group_eff(k))%e%reports_unchanged
+      end do
+      this%keeps_end = this%may_keep
       n = size(this%group_of)
       this%n_g = n
       this%on = relocates .and. n > 0
@@ -143,20 +162,67 @@ contains
       allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n), this%g_end(n))
       allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)), this%y_lo(size(y)), this%f_lo(size(y)))
       allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)))
-      allocate (this%counts(size(sys%counts, 1)))
+      allocate (this%counts(size(sys%counts, 1)), this%y_full(size(y)))
       call this%accepted(sys, t, y, stats)
    end subroutine locator_init
 
    !> (t, y) was accepted and every effect's memory updated there: the
    !! switching functions' signs that the next step is compared with.
-   subroutine locator_accepted(this, sys, t, y, stats)
+   !! unchanged(k, o): effect k of occupant o changed no memory at this
+   !! accept (step_bookkeeping): where the step ended on (t, y) without a
+   !! switch, its functions are those the step's end gave, kept, not
+   !! evaluated again (a sliding constraint's, only where no effect of its
+   !! occupant changed).
+   subroutine locator_accepted(this, sys, t, y, stats, unchanged)
       class(switch_locator_t), intent(inout) :: this
       type(crash_system_t), intent(in) :: sys
       real(wp), intent(in) :: t
       real(wp), intent(in), contiguous :: y(:)
       type(step_stats_t), intent(inout) :: stats
+      logical, intent(in), optional :: unchanged(:, :)
+      integer :: grp, o, n_eff, i
+      logical :: reuse
       if (.not. this%on) return
-      call switch_values(sys, t, y, this%g_prev, stats, this%rates, this%counts)
+      reuse = .false.
+      if (present(unchanged) .and. this%may_keep) then
+         this%keeps_end = .false.
+         do grp = 1, size(this%searched)
+            if (this%group_eff(grp) == 0) cycle
+            associate (e => sys%occupants(this%group_occ(grp))%effects(this%group_eff(grp))%e)
+               if (e%reports_unchanged .and. unchanged(this%group_eff(grp), this%group_occ(grp))) this%keeps_end = .true.
+            end associate
+         end do
+         if (this%full_at_end .and. this%keeps_end) then
+            ! (the same state, bit for bit)
+            reuse = same_bits(t, this%t_full)
+            do i = 1, size(y)
+               if (.not. reuse) exit
+               reuse = same_bits(y(i), this%y_full(i))
+            end do
+         end if
+      end if
+      this%full_at_end = .false.
+      if (.not. reuse) then
+         call switch_values(sys, t, y, this%g_prev, stats, this%rates, this%counts)
+         return
+      end if
+      do grp = 1, size(this%searched)
+         o = this%group_occ(grp)
+         if (this%group_eff(grp) > 0) then
+            this%searched(grp) = .not. unchanged(this%group_eff(grp), o)
+         else
+            n_eff = size(sys%occupants(o)%effects)
+            this%searched(grp) = .not. all(unchanged(1:n_eff, o))
+         end if
+      end do
+      this%g_prev = this%g_hi
+      call switch_values(sys, t, y, this%g_prev, stats, this%rates, this%counts, this%searched)
+      stats%switch_groups_kept = stats%switch_groups_kept + count(.not. this%searched)
+   contains
+      pure logical function same_bits(a, b)
+         real(wp), intent(in) :: a, b
+         same_bits = transfer(a, 0_i8) == transfer(b, 0_i8)
+      end function same_bits
    end subroutine locator_accepted
 
    !> The accepted state (t, y) a step is about to start from, y' = f there.
@@ -216,8 +282,17 @@ contains
       ! just located there, or a constraint just left) has no side to
       ! cross from: its memory there decided its side
       this%live = abs(this%g_prev) > at_root*abs(this%g_hi)
+      this%full_at_end = .false.
       if (.not. any(this%live .and. crossed(this%g_prev, this%g_hi))) then
-         if (.not. is_trial) this%n_run = 0
+         if (.not. is_trial) then
+            this%n_run = 0
+            ! (every function at the state the run accepts next)
+            if (this%keeps_end) then
+               this%full_at_end = .true.
+               this%t_full = t
+               this%y_full = y
+            end if
+         end if
          return
       end if
       ! the search evaluates only the groups with a function that crossed
@@ -813,7 +888,6 @@ contains
                   grp = grp + 1
                   if (present(only)) then
                      if (.not. only(grp)) then
-                        stats%switch_groups_skipped = stats%switch_groups_skipped + 1
                         i = i + e%n_switch
                         cycle
                      end if
@@ -830,7 +904,6 @@ contains
                grp = grp + 1
                if (present(only)) then
                   if (.not. only(grp)) then
-                     stats%switch_groups_skipped = stats%switch_groups_skipped + 1
                      i = i + 2*occ%n_slide
                      cycle
                   end if
@@ -857,24 +930,29 @@ contains
       real(wp), intent(inout) :: g(:)
       type(step_stats_t), intent(inout) :: stats
       call switch_values(sys, t, y, g, stats, this%rates, this%counts, this%searched)
+      stats%switch_groups_skipped = stats%switch_groups_skipped + count(.not. this%searched)
    end subroutine search_values
 
    !> The group of each switching function of the scene, in switch_values'
    !! order: each effect's functions one group, each occupant's sliding
    !! constraints' one more; searched: room for a flag per group.
-   subroutine switch_groups(sys, group_of, searched)
+   subroutine switch_groups(sys, group_of, searched, group_occ, group_eff)
       type(crash_system_t), intent(in) :: sys
       integer, allocatable, intent(out) :: group_of(:)
       logical, allocatable, intent(out) :: searched(:)
-      integer :: o, k, i, grp, n
+      integer, allocatable, intent(out) :: group_occ(:), group_eff(:)   !< each group's occupant and effect (0: slides)
+      integer :: o, k, i, grp, n, n_grp
       n = 0
+      n_grp = 0
       do o = 1, size(sys%occupants)
          do k = 1, size(sys%occupants(o)%effects)
             n = n + sys%occupants(o)%effects(k)%e%n_switch
+            if (sys%occupants(o)%effects(k)%e%n_switch > 0) n_grp = n_grp + 1
          end do
          n = n + 2*sys%occupants(o)%n_slide     ! (each sliding constraint's range, occupant_slide_switches)
+         if (sys%occupants(o)%n_slide > 0) n_grp = n_grp + 1
       end do
-      allocate (group_of(n))
+      allocate (group_of(n), group_occ(n_grp), group_eff(n_grp))
       i = 0
       grp = 0
       do o = 1, size(sys%occupants)
@@ -882,11 +960,15 @@ contains
             do k = 1, size(occ%effects)
                if (occ%effects(k)%e%n_switch == 0) cycle
                grp = grp + 1
+               group_occ(grp) = o
+               group_eff(grp) = k
                group_of(i + 1:i + occ%effects(k)%e%n_switch) = grp
                i = i + occ%effects(k)%e%n_switch
             end do
             if (occ%n_slide > 0) then
                grp = grp + 1
+               group_occ(grp) = o
+               group_eff(grp) = 0
                group_of(i + 1:i + 2*occ%n_slide) = grp
                i = i + 2*occ%n_slide
             end if
