@@ -66,6 +66,9 @@ module step_bookkeeping
       !! none where a sliding constraint left its surface): the switch
       !! locator keeps its switching functions (issue 16 section 4)
       logical, allocatable :: memory_unchanged(:, :)
+      !> some effect may say so (effect_t%reports_unchanged): else the flags
+      !! stay false and cost nothing
+      logical :: tracks_unchanged = .false.
    contains
       procedure :: init => books_init
       procedure :: accept => books_accept
@@ -158,8 +161,14 @@ contains
             k = max(k, size(sys%occupants(o)%effects))
          end do
          allocate (this%memory_unchanged(k, size(sys%occupants)))
+         this%memory_unchanged = .false.
+         do o = 1, size(sys%occupants)
+            do k = 1, size(sys%occupants(o)%effects)
+               if (sys%occupants(o)%effects(k)%e%reports_unchanged) this%tracks_unchanged = .true.
+            end do
+         end do
       end if
-      this%memory_unchanged = .true.
+      if (this%tracks_unchanged) this%memory_unchanged = .true.
       ! the step's local error estimate (a fixed-step stepper's), read once;
       ! the step was taken again to a located switch when the stepper
       ! rejected one (the windshield's jump) or took one again (a switch)
@@ -198,7 +207,7 @@ contains
                associate (e => occ%effects(k)%e)
                   call e%accept(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), ar)
                end associate
-               this%memory_unchanged(k, o) = ar%memory_unchanged
+               if (this%tracks_unchanged) this%memory_unchanged(k, o) = ar%memory_unchanged
                restart = restart .or. ar%restart
                do j = 1, ar%n_events
                   ar%events(j)%occupant = o
@@ -233,7 +242,7 @@ contains
       if (.not. allocated(this%rates)) allocate (this%rates(size(y)), this%counts(size(sys%counts, 1)))
       call system_settle(sys, t, y, settled, this%rates, this%counts)
       restart = restart .or. settled
-      if (settled) this%memory_unchanged = .false.
+      if (settled .and. this%tracks_unchanged) this%memory_unchanged = .false.
       if (present(kink)) restart = restart .or. (kink .and. stepper%multistep)
       if (restart) then
          ! the derivative at the accepted point is kept, for the frame of a
