@@ -67,7 +67,7 @@ cleanup() {
         steps=()
         for pid in $(cd /proc && echo [0-9]*); do
             [ "$(cat /proc/$pid/comm 2>/dev/null)" = slurmstepd ] &&
-                tr '\0' '\n' </proc/$pid/environ 2>/dev/null | grep -qx "SLURM_CONF=$SLURM_CONF" && steps+=($pid)
+                { tr "\\0" "\\n" </proc/$pid/environ; } 2>/dev/null | grep -qx "SLURM_CONF=$SLURM_CONF" && steps+=($pid)
         done
         [ ${#steps[@]} -eq 0 ] && break
         sleep 0.1
