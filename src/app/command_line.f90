@@ -17,6 +17,11 @@ module command_line
       logical :: deck_format = .false., print_default_deck = .false., check_only = .false.
       logical :: outputs = .false.
       logical :: refine = .false.   !< --refine: the convergence check (issue 16)
+      !> a study (C.8; docs/modification.md)
+      character(len=:), allocatable :: results_dir   !< --results DIR ('' = none)
+      integer :: jobs = 1                            !< --jobs N
+      integer :: shard = 0, n_shards = 0             !< --shard K/N
+      logical :: collect = .false., study_size = .false.
    end type options_t
 
 contains
@@ -24,13 +29,16 @@ contains
    subroutine parse_command_line(opts, err)
       type(options_t), intent(out) :: opts
       type(error_t), intent(inout) :: err
-      integer :: i, n
+      integer :: i, n, ios, slash
       character(len=:), allocatable :: arg
-      logical :: options_done, stdin_named, listing_named, h5_named
+      logical :: options_done, stdin_named, listing_named, h5_named, results_named, ok
+      character(len=:), allocatable :: text
 
       allocate (opts%decks(0))
       opts%listing_file = ''
       opts%h5_file = ''
+      opts%results_dir = ''
+      results_named = .false.
       options_done = .false.
       stdin_named = .false.
       listing_named = .false.
@@ -86,6 +94,49 @@ contains
                               //'standard output (-)')
                return
             end if
+         case ('--results')
+            if (.not. value_of(opts%results_dir, results_named, 'the results directory (--results)')) return
+         case ('--jobs')
+            text = ''
+            ok = i < n
+            if (ok) then
+               i = i + 1
+               text = argument(i)
+               read (text, *, iostat=ios) opts%jobs
+               ok = ios == 0 .and. verify(text, '0123456789') == 0 .and. len(text) > 0 .and. len(text) <= 4
+               if (ok) ok = opts%jobs >= 1
+            end if
+            if (.not. ok) then
+               call error_set(err, exit_usage, 'option --jobs needs a number of worker processes from 1 to 9999; '// &
+                              'found "'//text//'"')
+               return
+            end if
+         case ('--shard')
+            text = ''
+            ok = i < n
+            if (ok) then
+               i = i + 1
+               text = argument(i)
+               slash = index(text, '/')
+               ok = slash > 1 .and. slash < len(text)
+               if (ok) ok = verify(text(1:slash - 1), '0123456789') == 0 .and. &
+                            verify(text(slash + 1:), '0123456789') == 0 .and. len(text) <= 19
+               if (ok) then
+                  read (text(1:slash - 1), *, iostat=ios) opts%shard
+                  if (ios == 0) read (text(slash + 1:), *, iostat=ios) opts%n_shards
+                  ok = ios == 0
+               end if
+               if (ok) ok = opts%n_shards >= 1 .and. opts%shard >= 1 .and. opts%shard <= opts%n_shards
+            end if
+            if (.not. ok) then
+               call error_set(err, exit_usage, 'option --shard needs K/N, slice K of N (1 <= K <= N), e.g. '// &
+                              '--shard 3/20; found "'//text//'"')
+               return
+            end if
+         case ('--collect')
+            opts%collect = .true.
+         case ('--study-size')
+            opts%study_size = .true.
          case ('--')
             options_done = .true.
          case default
@@ -137,12 +188,21 @@ contains
       call take(opts%outputs, '--outputs')
       call take(opts%check_only, '--check')
       call take(opts%refine, '--refine')
+      call take(opts%collect, '--collect')
+      call take(opts%study_size, '--study-size')
+      call take(opts%n_shards > 0, '--shard')
       if (len(other) > 0) then
          call error_set(err, exit_usage, mode//' and '//other//' cannot go together; give one of them')
       else if ((opts%deck_format .or. opts%print_default_deck) .and. size(opts%decks) > 0) then
          call error_set(err, exit_usage, mode//' reads no deck; "'//opts%decks(1)%s//'" would be ignored')
       else if (h5_named .and. (opts%deck_format .or. opts%print_default_deck .or. opts%outputs .or. opts%refine)) then
          call error_set(err, exit_usage, mode//' writes no HDF5 file; --h5 would be ignored')
+      else if (opts%jobs > 1 .and. len(mode) > 0) then
+         call error_set(err, exit_usage, mode//' runs no study''s runs; --jobs would be ignored')
+      else if (h5_named .and. (opts%collect .or. opts%study_size .or. opts%n_shards > 0 .or. &
+                               len(opts%results_dir) > 0 .or. opts%jobs > 1)) then
+         call error_set(err, exit_usage, 'a study writes no HDF5 file of its own (*STUDY KEEP writes each run''s); '// &
+                        '--h5 would be ignored')
       end if
    contains
       subroutine take(given, name)
@@ -187,10 +247,17 @@ contains
           '                      one (DT/2, or RTOL/100) and print how far each criterion,'//nl// &
           '                      peak and angle moved, with a verdict; writes nothing else'//nl// &
           '  --deck-format       print the card reference (docs/deck-format.md) and exit'//nl// &
+          nl//'a study (a deck with *STUDY, report C.8; docs/modification.md):'//nl// &
+          '  --results DIR       keep each run''s result in DIR (made if missing) and the table'//nl// &
+          '                      in DIR/results.csv; running again resumes the study'//nl// &
+          '  --jobs N            run the study''s runs on N worker processes (needs --results)'//nl// &
+          '  --shard K/N         run slice K of N of the runs (a job array; needs --results)'//nl// &
+          '  --collect           merge the rows in DIR into the table and the listing; run nothing'//nl// &
+          '  --study-size        print the number of runs of the study and exit'//nl//nl// &
           '  --default-deck      print the built-in default deck and exit'//nl// &
           '  -V, --version       print the version and exit'//nl// &
           '  -h, --help          print this help and exit'//nl//nl// &
           'exit status: 0 success, 1 bad command line, 2 deck error, 3 numerical failure,'//nl// &
-          '             4 input/output error'
+          '             4 input/output error, 5 a study with runs missing or none that succeeded'
    end function usage_text
 end module command_line

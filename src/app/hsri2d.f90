@@ -13,6 +13,10 @@ program hsri2d
    use output_files, only: output_file_t
    use posix_files, only: posix_ignore_output_signals
    use version_info, only: hsri2d_version
+   use kinds, only: wp
+   use strings, only: itoa
+   use posix_processes, only: posix_is_terminal
+   use study_driver, only: study_request_t, run_study, study_size, deck_has_study
    implicit none
 
    interface
@@ -27,7 +31,8 @@ program hsri2d
    type(run_request_t) :: req
    type(error_t) :: err
    type(string_t), allocatable :: builtin(:), warnings(:)
-   integer :: ignore, i, ios
+   type(study_request_t) :: study
+   integer :: ignore, i, ios, n_runs
 
    ! A file-size limit (ulimit -f) or a pipe closed by its reader (hsri2d |
    ! head) then makes writes fail with an error that is reported (exit
@@ -73,6 +78,38 @@ program hsri2d
       call say(builtin, opts%listing_file)
       call finish(exit_ok)
    end if
+   ! C.8: a deck with *STUDY (or a study's option) runs a study
+   if (opts%collect .or. opts%study_size .or. opts%n_shards > 0 .or. len(opts%results_dir) > 0 .or. &
+       opts%jobs > 1 .or. deck_has_study(opts%decks)) then
+      study%decks = opts%decks
+      study%listing_file = opts%listing_file
+      study%results_dir = opts%results_dir
+      study%jobs = opts%jobs
+      study%shard = opts%shard
+      study%n_shards = opts%n_shards
+      study%collect = opts%collect
+      study%program = '/proc/self/exe'
+      if (opts%study_size) then
+         call study_size(study, n_runs, err)
+         if (err%failed()) call quit(err)
+         call say([string_t(itoa(n_runs))], opts%listing_file)
+         call finish(exit_ok)
+      end if
+      if (opts%check_only) then
+         call study_size(study, n_runs, err)
+         if (err%failed()) call quit(err)
+         call say([string_t('hsri2d: the study deck is valid ('//itoa(n_runs)//' runs)')], '')
+         call finish(exit_ok)
+      end if
+      if (posix_is_terminal(2)) then
+         call run_study(study, err, show_progress)
+         write (error_unit, '(a)', iostat=ios) ''
+      else
+         call run_study(study, err)
+      end if
+      if (err%failed()) call quit(err)
+      call finish(exit_ok)
+   end if
    call run_case(req, err, warnings=warnings)
    do i = 1, size(warnings)
       write (error_unit, '(a)', iostat=ios) 'hsri2d: warning: '//warnings(i)%s
@@ -115,6 +152,19 @@ contains
       if (code == exit_numerical) write (error_unit, '(a)', iostat=ios) 'hsri2d: the listing holds the run up to the failure'
       call finish(code)
    end subroutine quit
+
+   !> A study's progress on standard error (a terminal only): one line,
+   !! rewritten after each run.
+   subroutine show_progress(done, bad, total, seconds)
+      integer, intent(in) :: done, bad, total
+      real(wp), intent(in) :: seconds
+      integer :: ios2
+      character(len=:), allocatable :: eta
+      eta = ''
+      if (done > 0 .and. done < total) eta = ', about '//itoa(nint(seconds/done*(total - done)))//' s to go'
+      write (error_unit, '(a)', advance='no', iostat=ios2) achar(13)//'hsri2d: study: '//itoa(done)//' of '// &
+         itoa(total)//' runs done, '//itoa(bad)//' failed, '//itoa(total - done)//' remaining'//eta//'   '
+   end subroutine show_progress
 
    subroutine finish(code)
       integer, intent(in) :: code

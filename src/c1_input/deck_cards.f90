@@ -30,6 +30,7 @@ module deck_cards
    public :: g_loadpoly, g_loadrate, g_loadtable, g_beltloading
    public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
    public :: g_belts, g_beltoptions
+   public :: g_study, g_vary, g_values, g_criteria, study_methods, max_study_variables
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -61,7 +62,18 @@ module deck_cards
    integer, parameter :: g_belts = 29, g_beltoptions = 30
    !> The interior's contact surfaces (C.4.f; docs/contacts.md).
    integer, parameter :: g_surfaces = 31, g_interior = 32, g_contactoff = 33
-   integer, parameter :: n_groups = 33
+   !> A study: the program varies its own inputs (C.8; docs/modification.md).
+   integer, parameter :: g_study = 34, g_vary = 35, g_values = 36, g_criteria = 37
+   integer, parameter :: n_groups = 37
+
+   !> C.8's methods, in the order of *STUDY's METHOD words.
+   character(len=*), parameter :: study_methods = 'OAT|GRID|RANDOM|LHS|ENSEMBLE|OPTIMIZE'
+   !> The evaluation criteria a study may judge a run by (c8_modification's
+   !! study_criteria holds each one's meaning; test_study checks the two agree).
+   character(len=*), parameter :: criterion_word_list = &
+      'HIC15|HIC36|HEADG|HEADGSI|CHESTG|CHESTGSI|CLIP3MS|HEADX|BELTF|LAPF|TORSOF|NECKF|NECKINJ|TORSOINJ|' &
+      //'UNWANTED|INJURY|DISLOC|ENDED'
+   integer, parameter :: max_study_variables = 20
 
    !> One field of a card.
    type :: field_spec_t
@@ -74,7 +86,7 @@ module deck_cards
       real(wp) :: default = 0.0_wp          !< in deck units
       real(wp) :: low = -huge(1.0_wp), high = huge(1.0_wp) !< valid range, deck units
       logical :: low_open = .false.         !< the range excludes low
-      character(len=24) :: words = ' '      !< allowed words, separated by '|'
+      character(len=320) :: words = ' '     !< allowed words, separated by '|'
       character(len=72) :: meaning = ' '
    end type field_spec_t
 
@@ -490,6 +502,7 @@ contains
       call belt_groups(t)
 
       call seat_groups(t)
+      call study_groups(t)
 
       block
          integer :: i
@@ -743,5 +756,95 @@ contains
          int_field('I', blank_required, 0, 1, 10, 'body point i'), &
          int_field('K', blank_required, 0, 1, 32, 'surface k')])
    end subroutine contact_groups
+
+   !> C.8: a study of the deck (docs/modification.md).
+   pure subroutine study_groups(t)
+      type(group_spec_t), intent(inout) :: t(:)
+      real(wp), parameter :: zero = 0.0_wp, one = 1.0_wp
+      character(len=:), allocatable :: names
+      integer :: i
+      t(g_study)%name = 'STUDY'
+      t(g_study)%title = 'A study: runs of the deck with fields varied (C.8)'
+      t(g_study)%note = 'With this group the program varies the fields *VARY names and runs the deck once for ' &
+         //'each variation, judging each run by *CRITERIA. METHOD: OAT one field at a time about the deck, ' &
+         //'GRID every combination, RANDOM and LHS (Latin hypercube) RUNS draws (SEED required), ENSEMBLE RUNS ' &
+         //'small perturbations (SPREAD) about the deck (SEED required), OPTIMIZE minimises criterion OBJECT ' &
+         //'of occupant OCC within the limits of *CRITERIA (Nelder-Mead within LOW-HIGH, at most RUNS runs, ' &
+         //'to TOL). KEEP: also each run''s own listing and HDF5 file. docs/modification.md.'
+      call set_fields(t(g_study), [ &
+         word_field('METHOD', study_methods, blank_required, 'how the fields vary'), &
+         int_field('RUNS', blank_absent, 0, 1, 1000000, 'runs (RANDOM, LHS, ENSEMBLE; OPTIMIZE: budget)'), &
+         int_field('SEED', blank_absent, 0, 1, huge(1), 'seed of the random methods'), &
+         real_field('TOL', '-', one, blank_default, 1.0e-3_wp, zero, one, 'OPTIMIZE: convergence tolerance', &
+                    .true.), &
+         word_field('OBJECT', criterion_word_list, blank_absent, 'OPTIMIZE: the criterion minimised'), &
+         int_field('OCC', blank_default, 1, 1, 2, 'the occupant OBJECT is read from'), &
+         word_field('KEEP', 'NONE|LISTING|H5|BOTH', blank_default, 'each run''s own outputs')])
+      t(g_study)%field(7)%default = real(1, wp)
+
+      names = ''
+      do i = 1, size(t)
+         if (t(i)%name == ' ') cycle
+         if (len(names) > 0) names = names//'|'
+         names = names//trim(t(i)%name)
+      end do
+      t(g_vary)%name = 'VARY'
+      t(g_vary)%title = 'The fields a study varies (C.8)'
+      t(g_vary)%layout = layout_multi
+      t(g_vary)%max_index = max_study_variables
+      t(g_vary)%max_cards = max_study_variables
+      t(g_vary)%index_name = 'variable v'
+      t(g_vary)%note = 'One card per varied field: the field FIELD of card CARD of group GROUP (CARD: the row ' &
+         //'index in a group of one card per index, such as *BELTS, else the card''s number in its group, ' &
+         //'comment cards not counted). Its values: those of ' &
+         //'*VALUES for v if given, else COUNT values from LOW to HIGH (OAT, GRID) or draws within LOW-HIGH ' &
+         //'(RANDOM, LHS; OPTIMIZE searches there); ENSEMBLE adds SPREAD times a standard normal draw to the ' &
+         //'deck''s value, kept within LOW-HIGH. LOW, HIGH, SPREAD in the field''s own deck units.'
+      call set_fields(t(g_vary), [ &
+         word_field('GROUP', 'TITLE', blank_required, 'card group of the field'), &
+         int_field('CARD', blank_default, 1, 1, 99999, 'its card (row index or number)'), &
+         text_field('FIELD', blank_required, 'field name'), &
+         real_field('LOW', '(field)', one, blank_absent, zero, -huge(one), huge(one), 'lowest value'), &
+         real_field('HIGH', '(field)', one, blank_absent, zero, -huge(one), huge(one), 'highest value'), &
+         int_field('COUNT', blank_absent, 0, 1, 10000, 'values from LOW to HIGH (OAT, GRID)'), &
+         real_field('SPREAD', '(field)', one, blank_absent, zero, zero, huge(one), 'ENSEMBLE: standard deviation')])
+      t(g_vary)%field(1)%words = names
+      ! the group's name may be as long as 14 letters (PULSEPOSITIONS)
+      t(g_vary)%field(1)%first_col = 3
+      t(g_vary)%field(1)%last_col = 17
+      t(g_vary)%field(2)%first_col = 18
+      t(g_vary)%field(2)%last_col = 22
+      t(g_vary)%field(3)%first_col = 23
+      t(g_vary)%field(3)%last_col = 32
+
+      t(g_values)%name = 'VALUES'
+      t(g_values)%title = 'The values of a varied field (C.8)'
+      t(g_values)%layout = layout_multi
+      t(g_values)%max_index = max_study_variables
+      t(g_values)%max_cards = 10000
+      t(g_values)%index_name = 'variable v'
+      t(g_values)%note = 'The list of values of *VARY''s variable v, in its field''s deck units, in order over ' &
+         //'as many cards as needed (blank fields skipped).'
+      call set_fields(t(g_values), [ &
+         real_field('V1', '(field)', one, blank_absent, zero, -huge(one), huge(one), 'a value'), &
+         real_field('V2', '(field)', one, blank_absent, zero, -huge(one), huge(one), 'a value'), &
+         real_field('V3', '(field)', one, blank_absent, zero, -huge(one), huge(one), 'a value'), &
+         real_field('V4', '(field)', one, blank_absent, zero, -huge(one), huge(one), 'a value'), &
+         real_field('V5', '(field)', one, blank_absent, zero, -huge(one), huge(one), 'a value'), &
+         real_field('V6', '(field)', one, blank_absent, zero, -huge(one), huge(one), 'a value'), &
+         real_field('V7', '(field)', one, blank_absent, zero, -huge(one), huge(one), 'a value')])
+
+      t(g_criteria)%name = 'CRITERIA'
+      t(g_criteria)%title = 'How a study judges each run (C.8)'
+      t(g_criteria)%layout = layout_list
+      t(g_criteria)%max_cards = 40
+      t(g_criteria)%note = 'One card per criterion reported for each run (docs/modification.md lists them); a ' &
+         //'run meets the study''s limits when every criterion with a LIMIT is at most its LIMIT (a count ' &
+         //'such as UNWANTED with LIMIT 0: no such event).'
+      call set_fields(t(g_criteria), [ &
+         word_field('CRIT', criterion_word_list, blank_required, 'the criterion'), &
+         int_field('OCC', blank_default, 1, 1, 2, 'of occupant'), &
+         real_field('LIMIT', '(crit.)', one, blank_absent, zero, -huge(one), huge(one), 'largest value allowed')])
+   end subroutine study_groups
 
 end module deck_cards

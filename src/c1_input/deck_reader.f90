@@ -23,6 +23,7 @@ module deck_reader
    public :: deck_init, deck_add_file, deck_add_lines, deck_finish
    public :: echo_comment, echo_header, echo_data, echo_blank, echo_bad
    public :: max_reported_errors, deck_names
+   public :: deck_field_address, deck_set_field, field_text
 
    !> Stop listing problems after this many (the count is still given).
    integer, parameter :: max_reported_errors = 200
@@ -61,6 +62,7 @@ module deck_reader
       integer :: kind = echo_blank
       integer :: group = 0                       !< the group it belongs to (0: none)
       character(len=:), allocatable :: text      !< at most card_width bytes (see echo_text)
+      logical :: varied = .false.                !< a field set by deck_set_field (C.8)
    end type echo_line_t
 
    !> The tables of a deck, built from one or more sources.
@@ -1019,5 +1021,144 @@ contains
       end if
       call error_append(err, exit_deck, loc//message)
    end subroutine report
+
+   ! --- a field set by name (C.8) ---------------------------------------------
+
+   !> Where field `field` of card `card_ref` of group `group` is in deck: the
+   !! group gid, the card's position ic in deck%group(gid)%card and the
+   !! field's number k; or why not (why /= ''). card_ref is the row index in
+   !! an indexed group (one card per index: *BELTS 3), else the card's
+   !! number in its group as read (1 for a single card; *LOADTABLE 2 is the
+   !! table's second card, whatever its curve).
+   !! Only numbers (real and integer fields) can be set.
+   subroutine deck_field_address(deck, group, card_ref, field, gid, ic, k, why)
+      type(deck_t), intent(in) :: deck
+      character(len=*), intent(in) :: group, field
+      integer, intent(in) :: card_ref
+      integer, intent(out) :: gid, ic, k
+      character(len=:), allocatable, intent(out) :: why
+      integer :: j
+      why = ''
+      ic = 0
+      k = 0
+      gid = group_by_name(deck, upper(trim(adjustl(group))))
+      if (gid == 0) then
+         why = 'no card group *'//trim(adjustl(group))//'; expected one of: '//group_names(deck)
+         return
+      end if
+      associate (s => deck%spec(gid), g => deck%group(gid))
+         if (.not. g%present) then
+            why = 'the deck has no *'//trim(s%name)//' group, so it has no field to vary there'
+            return
+         end if
+         do j = 1, s%n_fields
+            if (s%field(j)%name == upper(trim(adjustl(field)))) k = j
+         end do
+         if (k == 0) then
+            why = '*'//trim(s%name)//' has no field '//trim(adjustl(field))//'; its fields are: '//field_names(s)
+            return
+         end if
+         if (s%field(k)%kind /= kind_real .and. s%field(k)%kind /= kind_int) then
+            why = 'field '//trim(s%field(k)%name)//' of *'//trim(s%name)//' holds a word or a text; only numbers '// &
+               'can be varied'
+            k = 0
+            return
+         end if
+         if (s%layout == layout_indexed) then
+            do j = 1, g%n
+               if (g%card(j)%index == card_ref) then
+                  ic = j
+                  exit
+               end if
+            end do
+            if (ic == 0) why = '*'//trim(s%name)//' has no card with '//trim(s%index_name)//' = '//itoa(card_ref)
+         else if (card_ref >= 1 .and. card_ref <= g%n) then
+            ic = card_ref
+         else
+            why = '*'//trim(s%name)//' has '//itoa(g%n)//' card(s); there is no card '//itoa(card_ref)
+         end if
+      end associate
+   end subroutine deck_field_address
+
+   !> Set field k of card ic of group gid (deck_field_address) to x, in the
+   !! field's deck units (C.8: a variation is a deck as a user could have
+   !! written it). x is written into the field's columns of the card image
+   !! (field_text: an integer field takes the nearest integer) and read
+   !! back by the same check as every card, so a value the field refuses is
+   !! an error located at the card, as a deck's own; the card then holds
+   !! the value read. The echo shows the new card, marked varied. written:
+   !! the value the card's text holds, in deck units (x rounded to what the
+   !! field's columns hold).
+   subroutine deck_set_field(deck, gid, ic, k, x, err, written)
+      type(deck_t), intent(inout) :: deck
+      integer, intent(in) :: gid, ic, k
+      real(wp), intent(in) :: x
+      type(error_t), intent(inout) :: err
+      real(wp), intent(out), optional :: written
+      character(len=card_width) :: c
+      character(len=:), allocatable :: t, where
+      type(card_t) :: card
+      type(field_spec_t) :: f
+      integer :: e, w
+      logical :: ok
+      f = deck%spec(gid)%field(k)
+      card = deck%group(gid)%card(ic)
+      e = echo_of(deck, card%source, card%line)
+      c = deck%echo(e)%text
+      w = f%last_col - f%first_col + 1
+      if (f%kind == kind_int) then
+         t = itoa(nint(x))
+      else
+         t = field_text(x, w)
+      end if
+      c(f%first_col:f%last_col) = repeat(' ', max(0, w - len(t)))//t(1:min(len(t), w))
+      if (present(written)) then
+         call read_real(trim(adjustl(c(f%first_col:f%last_col))), written, ok)
+         if (.not. ok) written = x
+      end if
+      where = '*'//trim(deck%spec(gid)%name)//' card '//itoa(card%number)
+      ok = .true.
+      call parse_field(deck, err, f, where//' (varied)', card%source, card%line, c, card, k, ok)
+      if (.not. ok) return
+      deck%group(gid)%card(ic) = card
+      deck%echo(e)%text = trim(c)
+      deck%echo(e)%varied = .true.
+   end subroutine deck_set_field
+
+   !> x as a deck's field of `width` columns would hold it: the shortest
+   !! decimal that reads back as x (strings' num), else x to the most
+   !! significant digits that fit.
+   pure function field_text(x, width) result(t)
+      real(wp), intent(in) :: x
+      integer, intent(in) :: width
+      character(len=:), allocatable :: t
+      integer :: d
+      do d = 15, 1, -1
+         t = num(x, d)
+         if (len(t) <= width) return
+      end do
+   end function field_text
+
+   !> The echo line of a card (source, line).
+   pure integer function echo_of(deck, src, line) result(e)
+      type(deck_t), intent(in) :: deck
+      integer, intent(in) :: src, line
+      do e = 1, deck%n_echo
+         if (deck%echo(e)%source == src .and. deck%echo(e)%line == line) return
+      end do
+      e = 0
+   end function echo_of
+
+   !> A group's field names, for a message.
+   pure function field_names(s) result(names)
+      type(group_spec_t), intent(in) :: s
+      character(len=:), allocatable :: names
+      integer :: j
+      names = ''
+      do j = 1, s%n_fields
+         if (j > 1) names = names//', '
+         names = names//trim(s%field(j)%name)
+      end do
+   end function field_names
 
 end module deck_reader

@@ -226,6 +226,7 @@ contains
             mark = ' '
             if (e%group < 0) mark = 'R'          ! replaced by a later deck
             if (e%kind == echo_bad) mark = '?'
+            if (e%varied) mark = 'V'             ! a field set by a study (C.8)
             where = source_line(deck, e%source, e%line)
             ! the card number right-aligned in 5 columns, and wider from 100,000 (never asterisks)
             write (line, '(a,2x,a1,2x,a28,1x,a)') repeat(' ', max(0, 5 - len(itoa(k))))//itoa(k), mark, where, e%text
@@ -239,6 +240,8 @@ contains
       end do
       call lst%blank()
       call lst%put(' M: R = card of a group replaced by a later deck; the listing uses the later group.')
+      if (any(deck%echo(1:deck%n_echo)%varied)) &
+         call lst%put('    V = card with a field the study set for this run (C.8; docs/modification.md).')
       call lst%put('    : the fields of the group and their columns, from the card table (docs/deck-format.md).')
    end subroutine write_deck_echo
 

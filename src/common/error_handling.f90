@@ -12,7 +12,7 @@ module error_handling
    private
 
    public :: error_t, error_set, error_append, error_prefix
-   public :: exit_ok, exit_usage, exit_deck, exit_numerical, exit_io
+   public :: exit_ok, exit_usage, exit_deck, exit_numerical, exit_io, exit_study
    public :: error_category_name
 
    !> Exit statuses (documented in README.md and docs/usage.md).
@@ -21,6 +21,8 @@ module error_handling
    integer, parameter :: exit_deck = 2        !< the deck has errors
    integer, parameter :: exit_numerical = 3   !< the integration failed
    integer, parameter :: exit_io = 4          !< a file could not be read or written
+   !> a study (C.8) has runs without a result (--collect), or every run failed
+   integer, parameter :: exit_study = 5
 
    !> An error: its category (one of the exit_* values) and a message, which
    !! may hold several lines (one per problem found).
@@ -82,6 +84,7 @@ contains
       case (exit_deck);      name = 'deck error'
       case (exit_numerical); name = 'numerical failure'
       case (exit_io);        name = 'input/output error'
+      case (exit_study);     name = 'study incomplete'
       case default;          name = 'error'
       end select
    end function error_category_name

@@ -322,6 +322,16 @@ int hsri2d_remove(const char *path)
     return unlink(path) == 0 ? 0 : errno;
 }
 
+/* Make the directory path (its parent must exist); one that exists is not
+ * an error. */
+int hsri2d_make_dir(const char *path)
+{
+    struct stat st;
+    if (mkdir(path, 0777) == 0) return 0;
+    if (errno == EEXIST && stat(path, &st) == 0 && S_ISDIR(st.st_mode)) return 0;
+    return errno;
+}
+
 /* The system's description of an errno value, into out (cap bytes). */
 void hsri2d_error_text(int errnum, char *out, size_t cap, size_t *len)
 {

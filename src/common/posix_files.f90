@@ -13,7 +13,7 @@ module posix_files
 
    public :: file_info_t, posix_file_info, posix_fd_info, posix_real_path, posix_target_path, posix_check_writable
    public :: posix_create_temp, posix_open_for_writing, posix_write, posix_sync, posix_close
-   public :: posix_sync_path, posix_rename, posix_remove, posix_error_text
+   public :: posix_sync_path, posix_rename, posix_remove, posix_error_text, posix_make_dir
    public :: posix_ignore_output_signals, posix_clear_errno, posix_errno
    public :: kind_none, kind_regular, kind_directory, kind_other, kind_character, stdin_fd, stdout_fd
    public :: errno_not_found
@@ -122,6 +122,11 @@ module posix_files
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: path(*)
       end function c_remove
+
+      integer(c_int) function c_make_dir(path) bind(c, name='hsri2d_make_dir')
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+      end function c_make_dir
 
       subroutine c_error_text(errnum, out, cap, len) bind(c, name='hsri2d_error_text')
          import :: c_int, c_char, c_size_t
@@ -266,6 +271,12 @@ contains
       character(len=*), intent(in) :: path
       errno = int(c_remove(c_string(path)))
    end function posix_remove
+
+   !> Make directory path (its parent must exist); one that exists is fine.
+   integer function posix_make_dir(path) result(errno)
+      character(len=*), intent(in) :: path
+      errno = int(c_make_dir(c_string(path)))
+   end function posix_make_dir
 
    !> The system's words for an errno value ("No space left on device").
    function posix_error_text(errno) result(text)

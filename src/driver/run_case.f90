@@ -3,12 +3,12 @@
 !! tests call. The program (src/app/hsri2d.f90) only parses its command
 !! line, calls run_case and turns the error into an exit status.
 module run_case_mod
-   use error_handling, only: error_t, error_set, exit_io
+   use error_handling, only: error_t, error_set, exit_io, exit_usage
    use strings, only: num, itoa
    use accuracy_estimate, only: accuracy_warnings, corrector_warning, widened_ramp_warning
    use text_io, only: string_t, append_string
    use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
-   use deck_cards, only: g_pulsefile
+   use deck_cards, only: g_pulsefile, g_study
    use default_deck, only: default_deck_lines
    use model_builder, only: build_model
    use model, only: model_t, nint_adams, nint_dopri
@@ -32,7 +32,7 @@ module run_case_mod
    implicit none
    private
 
-   public :: run_request_t, run_case, read_case_deck, builtin_deck_name, describe_outputs, refine_case
+   public :: run_request_t, run_case, write_case, read_case_deck, builtin_deck_name, describe_outputs, refine_case
 
    !> The outputs of a case: the listing, and the HDF5 file when asked for.
    type, extends(output_sink_t) :: case_sink_t
@@ -82,6 +82,9 @@ contains
          end if
       end do
       if (err%code /= exit_io) call deck_finish(deck, err)
+      if (.not. err%failed() .and. deck%group(g_study)%present) &
+         call error_set(err, exit_usage, 'a study deck (*STUDY, report C.8) is run from its files, not from '// &
+                        'standard input: name the deck files on the command line (docs/modification.md)')
       if (.not. err%failed()) call build_model(deck, m, err)
       if (.not. err%failed()) m%warnings = [m%warnings, initial_warnings(m)]
    end subroutine read_case_deck
@@ -116,15 +119,8 @@ contains
       type(deck_t) :: deck
       type(model_t) :: m
       type(run_summary_t) :: res
-      type(error_t) :: run_err, io_err
-      ! on the heap: it holds the model, which outgrows the stack's static limit
-      type(case_sink_t), allocatable, target :: sink
-      type(sink_list_t) :: sinks
-      type(run_t) :: run
-      type(output_file_t) :: h5_file
-      type(string_t), allocatable :: notes(:), accuracy(:)
-      character(len=:), allocatable :: who
-      integer :: o, k
+      type(string_t), allocatable :: notes(:)
+      integer :: k
 
       call read_case_deck(req, deck, m, err)
       m%options%locate_switches = req%locate_switches
@@ -142,16 +138,46 @@ contains
       ! paths are known not to be inputs (--check checks them too)
       call check_output_paths(deck_files(req), pulse_file(deck, m), req%listing_file, req%h5_file, err)
       if (err%failed() .or. req%check_only) return
+      call write_case(deck, m, req%listing_file, req%h5_file, err, res, notes)
+      if (present(warnings)) then
+         do k = 1, size(notes)
+            call append_string(warnings, notes(k)%s)
+         end do
+      end if
+      if (present(summary)) summary = res
+   end subroutine run_case
+
+   !> Simulate model m of deck (C.2-C.7) and write its listing (listing_file,
+   !! '' = standard output) and HDF5 file (h5_file, '' = none), whose paths
+   !! the caller has checked; res: the run's summary; notes: the warnings
+   !! of the run's accuracy (the listing shows them too). err as run_case's.
+   subroutine write_case(deck, m, listing_file, h5_file, err, res, notes)
+      type(deck_t), intent(in) :: deck
+      type(model_t), intent(in) :: m
+      character(len=*), intent(in) :: listing_file, h5_file
+      type(error_t), intent(inout) :: err
+      type(run_summary_t), intent(out) :: res
+      type(string_t), allocatable, intent(out) :: notes(:)
+      type(error_t) :: run_err, io_err
+      ! on the heap: it holds the model, which outgrows the stack's static limit
+      type(case_sink_t), allocatable, target :: sink
+      type(sink_list_t) :: sinks
+      type(run_t) :: run
+      type(output_file_t) :: h5_file_out
+      type(string_t), allocatable :: accuracy(:)
+      character(len=:), allocatable :: who
+      integer :: o, k
+
       allocate (notes(0), sink)
-      call sink%listing%lst%create_text(req%listing_file, 'listing', err)
+      call sink%listing%lst%create_text(listing_file, 'listing', err)
       if (err%failed()) return
-      sink%with_h5 = len(req%h5_file) > 0
+      sink%with_h5 = len(h5_file) > 0
       if (sink%with_h5) then
-         call h5_file%reserve(req%h5_file, 'HDF5 file', io_err)
+         call h5_file_out%reserve(h5_file, 'HDF5 file', io_err)
          if (.not. io_err%failed()) &
-            call history_sink_open(sink%h5, h5_file%writing_path(), m%title, deck_text(deck), io_err)
+            call history_sink_open(sink%h5, h5_file_out%writing_path(), m%title, deck_text(deck), io_err)
          if (io_err%failed()) then
-            call deliver_outputs(io_err, sink%listing%lst, h5_file)
+            call deliver_outputs(io_err, sink%listing%lst, h5_file_out)
             call error_set(err, io_err%code, io_err%message)
             return
          end if
@@ -180,7 +206,7 @@ contains
          io_err = run_err
       end if
       if (sink%with_h5) then
-         call deliver_outputs(io_err, sink%listing%lst, h5_file)
+         call deliver_outputs(io_err, sink%listing%lst, h5_file_out)
       else
          call deliver_outputs(io_err, sink%listing%lst)
       end if
@@ -210,13 +236,7 @@ contains
             'the energy balance failed its tolerance at t = '//num(res%occ(o)%t_flagged)//' s (*NUMERICS ' &
             //'EBTOL; EBFAIL = CONTINUE ran on): the results are not trustworthy')
       end do
-      if (present(warnings)) then
-         do o = 1, size(notes)
-            call append_string(warnings, notes(o)%s)
-         end do
-      end if
-      if (present(summary)) summary = res
-   end subroutine run_case
+   end subroutine write_case
 
    subroutine case_begin(this, sys, reg, first, err)
       class(case_sink_t), intent(inout) :: this

@@ -1,0 +1,760 @@
+!> A study, start to end (report C.8; docs/modification.md): the base deck
+!! and its *STUDY read and checked once; the runs' values (study_sampling,
+!! or a Nelder-Mead search for OPTIMIZE); each run made (study_runs) in this
+!! process, in worker processes (--jobs) or in a slice (--shard, for a job
+!! array); each run's row written at once, atomically, under the results
+!! directory, so that a study killed or stopped resumes where it was; the
+!! rows merged in run order into results.csv and the study's listing.
+!! Nothing a run does ends the study: a run that fails is a row that says so.
+module study_driver
+   use, intrinsic :: iso_c_binding, only: c_long
+   use kinds, only: wp
+   use error_handling, only: error_t, error_set, error_append, exit_usage, exit_io, exit_study
+   use strings, only: itoa, num
+   use text_io, only: string_t, append_string, read_text_file, standard_input_path
+   use posix_files, only: file_info_t, posix_file_info, posix_make_dir, posix_error_text, kind_regular
+   use posix_processes, only: posix_spawn_program, posix_wait, posix_sleep_ms
+   use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
+   use default_deck, only: default_deck_lines
+   use run_case_mod, only: builtin_deck_name
+   use model, only: model_t
+   use model_builder, only: build_model
+   use output_files, only: output_file_t
+   use version_info, only: hsri2d_version
+   use study_input, only: study_t, read_study, has_study, method_optimize
+   use study_criteria, only: criterion_column, criterion_unit, criterion_index
+   use study_runs, only: study_run
+   use study_table, only: run_row_t, row_csv, row_from_csv, table_header, status_word, &
+      status_completed, status_ended, status_failed, status_invalid
+   use study_sampling, only: study_variable_t, study_points
+   use nelder_mead, only: nm_t
+   implicit none
+   private
+
+   public :: study_request_t, run_study, study_size, deck_has_study, progress_report
+
+   !> What to do with a study deck and where its results go.
+   type :: study_request_t
+      type(string_t), allocatable :: decks(:)
+      character(len=:), allocatable :: listing_file   !< '' = standard output
+      character(len=:), allocatable :: results_dir    !< '' = rows kept in memory only
+      integer :: jobs = 1                             !< worker processes
+      integer :: shard = 0, n_shards = 0              !< --shard K/N (0: the whole study)
+      logical :: collect = .false.                    !< merge the rows, run nothing
+      character(len=:), allocatable :: program        !< this program, for the workers
+   end type study_request_t
+
+   abstract interface
+      !> Told after each run (or each poll of the workers): runs done,
+      !! failed or invalid, and in all; the CPU or wall seconds so far.
+      subroutine progress_report(done, bad, total, seconds)
+         import :: wp
+         integer, intent(in) :: done, bad, total
+         real(wp), intent(in) :: seconds
+      end subroutine progress_report
+   end interface
+
+   !> A study, read and checked.
+   type :: study_case_t
+      type(deck_t) :: deck
+      type(study_t) :: st
+      real(wp), allocatable :: points(:, :)   !< (variable, run); OPTIMIZE: none
+      integer :: n_runs = 0
+      character(len=:), allocatable :: deck_text
+   end type study_case_t
+
+contains
+
+   !> The deck files hold a *STUDY group (read without checking the rest).
+   logical function deck_has_study(decks)
+      type(string_t), intent(in) :: decks(:)
+      type(deck_t) :: deck
+      type(error_t) :: ignored
+      integer :: k
+      call deck_init(deck)
+      do k = 1, size(decks)
+         ! (standard input is read once, by the run: run_case refuses a study there)
+         if (decks(k)%s == standard_input_path .or. decks(k)%s == builtin_deck_name) cycle
+         call deck_add_file(deck, decks(k)%s, ignored)
+      end do
+      deck_has_study = has_study(deck)
+   end function deck_has_study
+
+   !> The number of runs of the study (OPTIMIZE: its budget).
+   subroutine study_size(req, n, err)
+      type(study_request_t), intent(in) :: req
+      integer, intent(out) :: n
+      type(error_t), intent(inout) :: err
+      type(study_case_t), allocatable :: sc
+      allocate (sc)
+      n = 0
+      call read_case(req, sc, err)
+      if (.not. err%failed()) n = sc%n_runs
+   end subroutine study_size
+
+   !> Run (or collect) the study of req; err: exit 2 for the deck, 1 for
+   !! the command line or a results directory of another study, 4 for a
+   !! file, 5 when runs are missing (--collect) or every run failed.
+   subroutine run_study(req, err, progress)
+      type(study_request_t), intent(in) :: req
+      type(error_t), intent(inout) :: err
+      procedure(progress_report), optional :: progress
+      type(study_case_t), allocatable :: sc
+      type(run_row_t), allocatable :: rows(:)
+      logical, allocatable :: have(:)
+      integer :: r, n_made
+
+      allocate (sc)
+      call read_case(req, sc, err)
+      if (err%failed()) return
+      call check_request(req, sc, err)
+      if (err%failed()) return
+      if (len(req%results_dir) > 0) then
+         call prepare_directory(req%results_dir, sc%deck_text, err)
+         if (err%failed()) return
+      end if
+      allocate (rows(sc%n_runs), have(sc%n_runs))
+      have = .false.
+
+      if (req%collect) then
+         call read_rows(req%results_dir, sc, rows, have)
+      else if (sc%st%method == method_optimize) then
+         call optimize(req, sc, rows, have, n_made, err, progress)
+         if (err%failed()) return
+         ! a search that converged before its budget: the runs it made
+         rows = rows(1:n_made)
+         have = have(1:n_made)
+      else if (req%jobs > 1) then
+         call run_workers(req, sc, err, progress)
+         if (err%failed()) return
+         if (req%n_shards > 0) return   ! a slice writes its rows only
+         call read_rows(req%results_dir, sc, rows, have)
+      else
+         do r = 1, sc%n_runs
+            if (req%n_shards > 0) then
+               if (mod(r - 1, req%n_shards) /= req%shard - 1) cycle
+            end if
+            call one_run(req, sc, r, sc%points(:, r), rows(r), err)
+            if (err%failed()) return
+            have(r) = .true.
+            if (present(progress)) call progress(count(have), bad_runs(rows, have), sc%n_runs, cpu_now())
+         end do
+      end if
+      if (req%n_shards > 0) return   ! a slice writes its rows only
+      call write_results(req, sc, rows, have, err)
+      if (err%failed()) return
+      if (.not. all(have)) then
+         call error_set(err, exit_study, 'the study has '//itoa(count(.not. have))//' run(s) without a result in ' &
+                        //req%results_dir//': '//missing_list(have)//' (run their shards, then --collect again)')
+      else if (bad_runs(rows, have) == sc%n_runs) then
+         call error_set(err, exit_study, 'every run of the study failed or was invalid; the reasons are in the '// &
+                        'table')
+      end if
+   end subroutine run_study
+
+   ! --- reading -----------------------------------------------------------
+
+   !> The decks read and checked (the base deck builds a model as any
+   !! deck), the study read, the runs' values made.
+   subroutine read_case(req, sc, err)
+      type(study_request_t), intent(in) :: req
+      type(study_case_t), intent(inout) :: sc
+      type(error_t), intent(inout) :: err
+      type(model_t), allocatable :: m
+      type(study_variable_t), allocatable :: vars(:)
+      integer :: k
+      allocate (m)
+      call deck_init(sc%deck)
+      do k = 1, size(req%decks)
+         if (req%decks(k)%s == builtin_deck_name .and. len(req%decks(k)%s) == len(builtin_deck_name)) then
+            call deck_add_lines(sc%deck, builtin_deck_name, '', default_deck_lines(), err)
+         else
+            call deck_add_file(sc%deck, req%decks(k)%s, err)
+         end if
+      end do
+      if (err%code == exit_io) return
+      call deck_finish(sc%deck, err)
+      if (err%failed()) return
+      if (.not. has_study(sc%deck)) then
+         call error_set(err, exit_usage, 'the deck has no *STUDY card group: the study options (--results, '// &
+                        '--jobs, --shard, --collect, --study-size) need one (docs/modification.md)')
+         return
+      end if
+      call build_model(sc%deck, m, err)
+      call read_study(sc%deck, sc%st, err)
+      if (err%failed()) return
+      do k = 1, size(sc%st%crits)
+         if (sc%st%crits(k)%occupant > m%options%nbody .and. m%options%nbody > 0) then
+            call error_append(err, exit_usage, '*CRITERIA '//trim(sc%st%crits(k)%word)//': the deck has '// &
+                              itoa(m%options%nbody)//' occupant(s); there is no occupant '// &
+                              itoa(sc%st%crits(k)%occupant))
+         end if
+      end do
+      if (err%failed()) return
+      sc%deck_text = deck_text(sc%deck)
+      if (sc%st%method == method_optimize) then
+         sc%n_runs = sc%st%runs
+         allocate (sc%points(size(sc%st%vars), 0))
+         return
+      end if
+      allocate (vars(size(sc%st%vars)))
+      do k = 1, size(vars)
+         associate (v => sc%st%vars(k))
+            vars(k)%low = v%low
+            vars(k)%high = v%high
+            if (.not. v%has_range) then
+               vars(k)%low = v%base
+               vars(k)%high = v%base
+               if (size(v%values) > 0) then
+                  vars(k)%low = minval(v%values)
+                  vars(k)%high = maxval(v%values)
+               end if
+            end if
+            vars(k)%count = v%count
+            vars(k)%values = v%values
+            vars(k)%base = v%base
+            vars(k)%spread = v%spread
+            vars(k)%integer_valued = v%integer_valued
+         end associate
+      end do
+      call study_points(sc%st%method, vars, sc%st%runs, sc%st%seed, sc%points, err)
+      if (.not. err%failed()) sc%n_runs = size(sc%points, 2)
+   end subroutine read_case
+
+   !> What the command line asks must suit the study.
+   subroutine check_request(req, sc, err)
+      type(study_request_t), intent(in) :: req
+      type(study_case_t), intent(in) :: sc
+      type(error_t), intent(inout) :: err
+      if (len(req%results_dir) == 0 .and. (req%jobs > 1 .or. req%n_shards > 0 .or. req%collect)) then
+         call error_set(err, exit_usage, '--jobs, --shard and --collect need --results DIR, the directory that '// &
+                        'holds each run''s result')
+      else if (len(req%results_dir) == 0 .and. sc%st%keep > 1) then
+         call error_set(err, exit_usage, '*STUDY KEEP writes each run''s own listing or HDF5 file under the '// &
+                        'results directory: give --results DIR')
+      else if (sc%st%method == method_optimize .and. (req%jobs > 1 .or. req%n_shards > 0)) then
+         call error_set(err, exit_usage, 'METHOD OPTIMIZE makes one run after another (each depends on the '// &
+                        'last): --jobs and --shard apply to the other methods')
+      else if (req%n_shards > 0 .and. req%shard > sc%n_runs) then
+         continue   ! an empty slice: nothing to do, and not an error
+      end if
+   end subroutine check_request
+
+   ! --- the results directory -----------------------------------------------
+
+   !> DIR and DIR/runs made; DIR/study.deck holds the deck the rows belong
+   !! to: a directory of another study (or of the deck since changed) is
+   !! refused, never mixed.
+   subroutine prepare_directory(dir, text, err)
+      character(len=*), intent(in) :: dir, text
+      type(error_t), intent(inout) :: err
+      type(output_file_t) :: f
+      type(file_info_t) :: info
+      type(string_t), allocatable :: lines(:)
+      character(len=:), allocatable :: old
+      integer :: errno, k
+      errno = posix_make_dir(dir)
+      if (errno == 0) errno = posix_make_dir(dir//'/runs')
+      if (errno /= 0) then
+         call error_set(err, exit_io, 'cannot make the results directory '//dir//': '//posix_error_text(errno))
+         return
+      end if
+      if (posix_file_info(dir//'/study.deck', info) == 0 .and. info%kind == kind_regular) then
+         call read_text_file(dir//'/study.deck', lines, err)
+         if (err%failed()) return
+         old = ''
+         do k = 1, size(lines)
+            old = old//lines(k)%s//new_line('a')
+         end do
+         if (old /= text .or. len(old) /= len(text)) call error_set(err, exit_usage, dir//' holds the results of '// &
+            'another study (its study.deck is not this deck): give another --results directory, or remove '//dir)
+         return
+      end if
+      call f%create_text(dir//'/study.deck', 'study deck', err)
+      if (err%failed()) return
+      call put_text(f, text)
+      call f%commit(err)
+   end subroutine prepare_directory
+
+   !> The file of run r's row.
+   pure function row_path(dir, r) result(path)
+      character(len=*), intent(in) :: dir
+      integer, intent(in) :: r
+      character(len=:), allocatable :: path
+      character(len=:), allocatable :: digits
+      digits = itoa(r)
+      path = dir//'/runs/'//repeat('0', max(0, 6 - len(digits)))//digits
+   end function row_path
+
+   !> Run r's row from the results directory, when a whole one is there.
+   subroutine read_row(dir, sc, r, row, ok)
+      character(len=*), intent(in) :: dir
+      type(study_case_t), intent(in) :: sc
+      integer, intent(in) :: r
+      type(run_row_t), intent(out) :: row
+      logical, intent(out) :: ok
+      type(file_info_t) :: info
+      type(string_t), allocatable :: lines(:)
+      type(error_t) :: err
+      ok = .false.
+      if (posix_file_info(row_path(dir, r)//'.row', info) /= 0) return
+      if (info%kind /= kind_regular) return
+      call read_text_file(row_path(dir, r)//'.row', lines, err)
+      if (err%failed() .or. size(lines) /= 1) return
+      call row_from_csv(lines(1)%s, size(sc%st%vars), size(sc%st%crits), row, ok)
+      ok = ok .and. row%run == r
+   end subroutine read_row
+
+   !> Every row the directory holds.
+   subroutine read_rows(dir, sc, rows, have)
+      character(len=*), intent(in) :: dir
+      type(study_case_t), intent(in) :: sc
+      type(run_row_t), intent(inout) :: rows(:)
+      logical, intent(inout) :: have(:)
+      integer :: r
+      do r = 1, size(rows)
+         if (.not. have(r)) call read_row(dir, sc, r, rows(r), have(r))
+      end do
+   end subroutine read_rows
+
+   !> Run r at values x, or its row from the directory when it is there
+   !! (a resumed study); the row written at once, atomically.
+   subroutine one_run(req, sc, r, x, row, err)
+      type(study_request_t), intent(in) :: req
+      type(study_case_t), intent(in) :: sc
+      integer, intent(in) :: r
+      real(wp), intent(in) :: x(:)
+      type(run_row_t), intent(out) :: row
+      type(error_t), intent(inout) :: err
+      type(output_file_t) :: f
+      character(len=:), allocatable :: lst, h5
+      logical :: ok
+      if (len(req%results_dir) > 0) then
+         call read_row(req%results_dir, sc, r, row, ok)
+         if (ok) return
+      end if
+      lst = ''
+      h5 = ''
+      if (sc%st%keep == 2 .or. sc%st%keep == 4) lst = row_path(req%results_dir, r)//'.lst'
+      if (sc%st%keep == 3 .or. sc%st%keep == 4) h5 = row_path(req%results_dir, r)//'.h5'
+      call study_run(sc%deck, sc%st, r, x, lst, h5, row)
+      if (len(req%results_dir) == 0) return
+      call f%create_text(row_path(req%results_dir, r)//'.row', 'result of run '//itoa(r), err)
+      if (err%failed()) return
+      call f%put_line(row_csv(row, size(sc%st%crits)))
+      call f%commit(err)
+   end subroutine one_run
+
+   ! --- worker processes --------------------------------------------------
+
+   !> --jobs J: J copies of the program, copy j running --shard j/J; this
+   !! process waits for them (reporting the rows as they appear). Within
+   !! slice K of N (--shard K/N --jobs J, a job array's task on J cores),
+   !! copy j runs slice K + N (j - 1) of N J: the runs of slice K, dealt
+   !! out among the copies.
+   subroutine run_workers(req, sc, err, progress)
+      type(study_request_t), intent(in) :: req
+      type(study_case_t), intent(in) :: sc
+      type(error_t), intent(inout) :: err
+      procedure(progress_report), optional :: progress
+      integer(c_long) :: pid(req%jobs)
+      logical :: running(req%jobs), done
+      type(string_t), allocatable :: args(:)
+      integer :: k, j, errno, status, n_done, n_bad, r
+      integer(8) :: c0, c1, rate
+      type(run_row_t) :: row
+      logical :: ok
+      running = .false.
+      call system_clock(c0, rate)
+      do k = 1, req%jobs
+         allocate (args(0))
+         call append_string(args, req%program)
+         call append_string(args, '--shard')
+         if (req%n_shards > 0) then
+            call append_string(args, itoa(req%shard + req%n_shards*(k - 1))//'/'//itoa(req%n_shards*req%jobs))
+         else
+            call append_string(args, itoa(k)//'/'//itoa(req%jobs))
+         end if
+         call append_string(args, '--results')
+         call append_string(args, req%results_dir)
+         call append_string(args, '--')
+         do j = 1, size(req%decks)
+            call append_string(args, req%decks(j)%s)
+         end do
+         errno = posix_spawn_program(req%program, args, pid(k))
+         deallocate (args)
+         if (errno /= 0) then
+            call error_set(err, exit_io, 'cannot start worker '//itoa(k)//' ('//req%program//'): '// &
+                           posix_error_text(errno))
+            exit
+         end if
+         running(k) = .true.
+      end do
+      do while (any(running))
+         do k = 1, req%jobs
+            if (.not. running(k)) cycle
+            errno = posix_wait(pid(k), .true., done, status)
+            if (errno /= 0) then
+               running(k) = .false.
+            else if (done) then
+               running(k) = .false.
+               if (status /= 0 .and. .not. err%failed()) call error_set(err, exit_study, 'worker '//itoa(k)// &
+                  ' (--shard '//itoa(k)//'/'//itoa(req%jobs)//') ended with status '//itoa(status)// &
+                  '; the rows it wrote are kept: run the study again to finish it')
+            end if
+         end do
+         if (present(progress)) then
+            n_done = 0
+            n_bad = 0
+            do r = 1, sc%n_runs
+               call read_row(req%results_dir, sc, r, row, ok)
+               if (.not. ok) cycle
+               n_done = n_done + 1
+               if (row%status == status_failed .or. row%status == status_invalid) n_bad = n_bad + 1
+            end do
+            call system_clock(c1)
+            call progress(n_done, n_bad, sc%n_runs, real(c1 - c0, wp)/real(rate, wp))
+         end if
+         if (any(running)) call posix_sleep_ms(100)
+      end do
+   end subroutine run_workers
+
+   ! --- optimisation ------------------------------------------------------
+
+   !> OPTIMIZE: Nelder-Mead over the variables within LOW-HIGH, from the
+   !! base deck's values, minimising OBJECT plus a penalty for each limit
+   !! exceeded; a failed or invalid run counts as the worst value. Runs are
+   !! numbered in the order asked, so a resumed search replays the same
+   !! points from its rows.
+   subroutine optimize(req, sc, rows, have, n_made, err, progress)
+      type(study_request_t), intent(in) :: req
+      type(study_case_t), intent(in) :: sc
+      type(run_row_t), intent(inout) :: rows(:)
+      logical, intent(inout) :: have(:)
+      integer, intent(out) :: n_made
+      type(error_t), intent(inout) :: err
+      procedure(progress_report), optional :: progress
+      type(nm_t) :: nm
+      real(wp), allocatable :: x(:), lo(:), hi(:), x0(:)
+      logical :: done
+      integer :: r, n, k, ko
+      n = size(sc%st%vars)
+      allocate (lo(n), hi(n), x0(n), x(n))
+      do k = 1, n
+         lo(k) = sc%st%vars(k)%low
+         hi(k) = sc%st%vars(k)%high
+         x0(k) = min(max(sc%st%vars(k)%base, lo(k)), hi(k))
+      end do
+      ko = objective_column(sc%st)
+      call nm%init(x0, lo, hi, sc%st%tol, sc%n_runs)
+      n_made = 0
+      do r = 1, sc%n_runs
+         call nm%ask(x, done)
+         if (done) exit
+         n_made = r
+         call one_run(req, sc, r, x, rows(r), err)
+         if (err%failed()) return
+         have(r) = .true.
+         call nm%tell(penalised(sc%st, rows(r), ko))
+         if (present(progress)) call progress(count(have), bad_runs(rows, have), sc%n_runs, cpu_now())
+      end do
+   end subroutine optimize
+
+   !> The column of the criteria that holds the objective (read_study adds
+   !! it to the criteria when *CRITERIA does not name it).
+   pure integer function objective_column(st) result(k)
+      type(study_t), intent(in) :: st
+      do k = 1, size(st%crits)
+         if (st%crits(k)%word == st%objective .and. st%crits(k)%occupant == st%objective_occupant) return
+      end do
+      k = 0
+   end function objective_column
+
+   !> The value the search minimises: the objective, plus for each limit
+   !! exceeded 1000 (1 + |objective|) times its relative excess; huge for a
+   !! run without criteria (failed, invalid).
+   pure real(wp) function penalised(st, row, ko) result(f)
+      type(study_t), intent(in) :: st
+      type(run_row_t), intent(in) :: row
+      integer, intent(in) :: ko
+      integer :: k
+      f = huge(1.0_wp)
+      if (.not. allocated(row%crit) .or. ko == 0) return
+      f = row%crit(ko)
+      do k = 1, size(st%crits)
+         if (.not. st%crits(k)%has_limit) cycle
+         if (row%crit(k) > st%crits(k)%limit) f = f + 1000.0_wp*(1.0_wp + abs(row%crit(ko)))* &
+            (row%crit(k) - st%crits(k)%limit)/max(abs(st%crits(k)%limit), 1.0e-12_wp)
+      end do
+   end function penalised
+
+   ! --- the outputs -------------------------------------------------------
+
+   !> results.csv (with a results directory) and the study's listing.
+   subroutine write_results(req, sc, rows, have, err)
+      type(study_request_t), intent(in) :: req
+      type(study_case_t), intent(in) :: sc
+      type(run_row_t), intent(in) :: rows(:)
+      logical, intent(in) :: have(:)
+      type(error_t), intent(inout) :: err
+      type(output_file_t) :: csv, lst
+      type(string_t), allocatable :: lines(:)
+      integer :: r, k
+      if (len(req%results_dir) > 0) then
+         call csv%create_text(req%results_dir//'/results.csv', 'results table', err)
+         if (err%failed()) return
+         call csv%put_line(table_header(var_columns(sc%st), crit_columns(sc%st)))
+         do r = 1, size(rows)
+            if (have(r)) call csv%put_line(row_csv(rows(r), size(sc%st%crits)))
+         end do
+         call csv%commit(err)
+         if (err%failed()) return
+      end if
+      lines = listing_lines(sc, rows, have)
+      call lst%create_text(req%listing_file, 'listing', err)
+      if (err%failed()) return
+      do k = 1, size(lines)
+         call lst%put_line(lines(k)%s)
+      end do
+      call lst%commit(err)
+   end subroutine write_results
+
+   function var_columns(st) result(c)
+      type(study_t), intent(in) :: st
+      type(string_t), allocatable :: c(:)
+      integer :: k
+      allocate (c(0))
+      do k = 1, size(st%vars)
+         call append_string(c, st%vars(k)%column)
+      end do
+   end function var_columns
+
+   function crit_columns(st) result(c)
+      type(study_t), intent(in) :: st
+      type(string_t), allocatable :: c(:)
+      integer :: k
+      allocate (c(0))
+      do k = 1, size(st%crits)
+         if (st%crits(k)%occupant > 1) then
+            call append_string(c, trim(criterion_column(criterion_index(st%crits(k)%word)))//'_occ'// &
+                               itoa(st%crits(k)%occupant))
+         else
+            call append_string(c, trim(criterion_column(criterion_index(st%crits(k)%word))))
+         end if
+      end do
+   end function crit_columns
+
+   !> The study's listing: what was varied and how each run was judged,
+   !! the table of runs, the counts, the best run.
+   function listing_lines(sc, rows, have) result(lines)
+      type(study_case_t), intent(in) :: sc
+      type(run_row_t), intent(in) :: rows(:)
+      logical, intent(in) :: have(:)
+      type(string_t), allocatable :: lines(:)
+      character(len=:), allocatable :: line, methods
+      integer :: k, r, best, ko
+      type(string_t), allocatable :: vc(:), cc(:)
+      allocate (lines(0))
+      methods = 'OAT|GRID|RANDOM|LHS|ENSEMBLE|OPTIMIZE'
+      call append_string(lines, ' hsri2d '//hsri2d_version//'   STUDY (report C.8: the program varies its own inputs)')
+      call append_string(lines, ' TITLE   '//trim(title_of(sc%deck)))
+      call append_string(lines, ' METHOD  '//word_n(methods, sc%st%method)//';  runs '//itoa(sc%n_runs))
+      call append_string(lines, '')
+      call append_string(lines, ' VARIED FIELDS (deck units; the deck''s own value)')
+      do k = 1, size(sc%st%vars)
+         call append_string(lines, '   '//itoa(k)//'  '//sc%st%vars(k)%label//'  ('//sc%st%vars(k)%column//'),  '// &
+                            'deck value '//num(sc%st%vars(k)%base))
+      end do
+      call append_string(lines, '')
+      call append_string(lines, ' CRITERIA (a run meets the study''s limits when each is at most its limit)')
+      do k = 1, size(sc%st%crits)
+         line = '   '//pad(trim(sc%st%crits(k)%word), 9)//' occupant '//itoa(sc%st%crits(k)%occupant)//'  '// &
+                trim(criterion_unit(criterion_index(sc%st%crits(k)%word)))
+         if (sc%st%crits(k)%has_limit) line = line//'   limit '//num(sc%st%crits(k)%limit)
+         call append_string(lines, line)
+      end do
+      call append_string(lines, '')
+      call append_string(lines, ' RUNS')
+      vc = var_columns(sc%st)
+      cc = crit_columns(sc%st)
+      line = '    run  status    '
+      do k = 1, size(vc)
+         line = line//' '//rpad(vc(k)%s, 13)
+      end do
+      do k = 1, size(cc)
+         line = line//' '//rpad(cc(k)%s, 13)
+      end do
+      call append_string(lines, line//'  limits')
+      do r = 1, size(rows)
+         if (.not. have(r)) then
+            call append_string(lines, ' '//rpad(itoa(r), 6)//'  (no result)')
+            cycle
+         end if
+         line = ' '//rpad(itoa(r), 6)//'  '//pad(status_word(rows(r)%status), 9)
+         do k = 1, size(rows(r)%x)
+            line = line//' '//rpad(num(rows(r)%x(k), 6), 13)
+         end do
+         do k = 1, size(cc)
+            if (allocated(rows(r)%crit)) then
+               line = line//' '//rpad(num(rows(r)%crit(k), 6), 13)
+            else
+               line = line//' '//rpad('-', 13)
+            end if
+         end do
+         line = line//'  '//trim(merge('meets', 'no   ', rows(r)%meets))
+         call append_string(lines, line)
+         if (len(rows(r)%reason) > 0) call append_string(lines, '          '//rows(r)%reason)
+      end do
+      call append_string(lines, '')
+      call append_string(lines, ' SUMMARY  '//itoa(count(have))//' of '//itoa(size(rows))//' runs have a result: '// &
+                         itoa(count_status(status_completed))//' completed, '//itoa(count_status(status_ended))// &
+                         ' ended by an end test, '//itoa(count_status(status_failed))//' failed, '// &
+                         itoa(count_status(status_invalid))//' invalid; '//itoa(count(rows(:)%meets .and. have))// &
+                         ' meet the limits')
+      ko = objective_column(sc%st)
+      if (ko > 0) then
+         best = 0
+         do r = 1, size(rows)
+            if (.not. have(r) .or. .not. rows(r)%meets) cycle
+            if (.not. allocated(rows(r)%crit)) cycle
+            if (best == 0) then
+               best = r
+            else if (rows(r)%crit(ko) < rows(best)%crit(ko)) then
+               best = r
+            end if
+         end do
+         if (best > 0) then
+            line = ' BEST     run '//itoa(best)//': '//trim(sc%st%objective)//' = '//num(rows(best)%crit(ko), 6)// &
+                   ' within the limits, at'
+            do k = 1, size(vc)
+               line = line//' '//vc(k)%s//' = '//num(rows(best)%x(k), 6)
+            end do
+            call append_string(lines, line)
+         else
+            call append_string(lines, ' BEST     no run meets the limits')
+         end if
+      end if
+      call append_string(lines, ' TABLE    one row per run, every digit: results.csv in the results directory '// &
+                         '(docs/modification.md)')
+   contains
+      integer function count_status(s)
+         integer, intent(in) :: s
+         integer :: i
+         count_status = 0
+         do i = 1, size(rows)
+            if (have(i)) then
+               if (rows(i)%status == s) count_status = count_status + 1
+            end if
+         end do
+      end function count_status
+   end function listing_lines
+
+   ! --- small helpers -----------------------------------------------------
+
+   integer function bad_runs(rows, have) result(n)
+      type(run_row_t), intent(in) :: rows(:)
+      logical, intent(in) :: have(:)
+      integer :: r
+      n = 0
+      do r = 1, size(rows)
+         if (.not. have(r)) cycle
+         if (rows(r)%status == status_failed .or. rows(r)%status == status_invalid) n = n + 1
+      end do
+   end function bad_runs
+
+   function missing_list(have) result(s)
+      logical, intent(in) :: have(:)
+      character(len=:), allocatable :: s
+      integer :: r, n
+      s = ''
+      n = 0
+      do r = 1, size(have)
+         if (have(r)) cycle
+         n = n + 1
+         if (n > 20) then
+            s = s//', ...'
+            return
+         end if
+         if (n > 1) s = s//', '
+         s = s//'run '//itoa(r)
+      end do
+   end function missing_list
+
+   real(wp) function cpu_now()
+      call cpu_time(cpu_now)
+   end function cpu_now
+
+   !> The deck's card images, one line each (the identity of a study).
+   function deck_text(d) result(text)
+      type(deck_t), intent(in) :: d
+      character(len=:), allocatable :: text
+      integer :: k
+      text = ''
+      do k = 1, d%n_echo
+         text = text//d%echo(k)%text//new_line('a')
+      end do
+   end function deck_text
+
+   subroutine put_text(f, text)
+      type(output_file_t), intent(inout) :: f
+      character(len=*), intent(in) :: text
+      integer :: a, b
+      a = 1
+      do while (a <= len(text))
+         b = index(text(a:), new_line('a'))
+         if (b == 0) then
+            call f%put_line(text(a:))
+            return
+         end if
+         call f%put_line(text(a:a + b - 2))
+         a = a + b
+      end do
+   end subroutine put_text
+
+   function title_of(d) result(t)
+      type(deck_t), intent(in) :: d
+      character(len=:), allocatable :: t
+      t = ''
+      if (d%group(1)%n > 0) then
+         if (allocated(d%group(1)%card(1)%text)) t = d%group(1)%card(1)%text
+      end if
+   end function title_of
+
+   pure function word_n(list, n) result(w)
+      character(len=*), intent(in) :: list
+      integer, intent(in) :: n
+      character(len=:), allocatable :: w
+      integer :: i, start, found
+      start = 1
+      found = 0
+      w = ''
+      do i = 1, len(list) + 1
+         if (i > len(list)) then
+            found = found + 1
+         else if (list(i:i) == '|') then
+            found = found + 1
+         else
+            cycle
+         end if
+         if (found == n) then
+            w = list(start:i - 1)
+            return
+         end if
+         start = i + 1
+      end do
+   end function word_n
+
+   pure function pad(s, w) result(t)
+      character(len=*), intent(in) :: s
+      integer, intent(in) :: w
+      character(len=:), allocatable :: t
+      t = s//repeat(' ', max(0, w - len(s)))
+   end function pad
+
+   pure function rpad(s, w) result(t)
+      character(len=*), intent(in) :: s
+      integer, intent(in) :: w
+      character(len=:), allocatable :: t
+      t = repeat(' ', max(0, w - len(s)))//s
+   end function rpad
+end module study_driver

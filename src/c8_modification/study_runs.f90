@@ -1,0 +1,126 @@
+!> One run of a study (report C.8: "change certain input parameters or
+!! data, and then initiate a new run"): the base deck with the varied
+!! fields set (deck_set_field: the deck as a user could have written it,
+!! checked as every card is), its model built and checked as every deck's,
+!! run to its end (run_loop's run_t, through run_simulation, or write_case
+!! when the run's own listing or HDF5 file is kept), and judged: its status
+!! and criteria, and whether every criterion with a limit is within it.
+!! One run's failure is that run's row, never the study's end.
+module study_runs
+   use kinds, only: wp
+   use error_handling, only: error_t
+   use strings, only: num
+   use text_io, only: string_t
+   use deck_reader, only: deck_t, deck_set_field
+   use model, only: model_t
+   use model_builder, only: build_model
+   use simulation, only: run_simulation, initial_warnings
+   use run_case_mod, only: write_case
+   use run_summary, only: run_summary_t
+   use end_tests, only: end_time, end_failure, end_energy, end_injury, end_rest, end_contact
+   use study_input, only: study_t
+   use study_criteria, only: criterion_index, criterion_value
+   use study_table, only: run_row_t, status_completed, status_ended, status_failed, status_invalid
+   implicit none
+   private
+
+   public :: study_run, study_deck
+
+contains
+
+   !> The deck of a run: base with variable v's field set to x(v). err:
+   !! a value its field refuses (located at the card, "(varied)").
+   !! written: the values the cards hold (deck units: x rounded to what the
+   !! fields' columns hold).
+   subroutine study_deck(base, st, x, deck, err, written)
+      type(deck_t), intent(in) :: base
+      type(study_t), intent(in) :: st
+      real(wp), intent(in) :: x(:)
+      type(deck_t), intent(out) :: deck
+      type(error_t), intent(inout) :: err
+      real(wp), intent(out) :: written(:)
+      integer :: v
+      deck = base
+      do v = 1, size(st%vars)
+         call deck_set_field(deck, st%vars(v)%gid, st%vars(v)%ic, st%vars(v)%k, x(v), err, written(v))
+      end do
+   end subroutine study_deck
+
+   !> Run number `run` of the study st of deck base at the values x (deck
+   !! units); listing_file, h5_file: the run's own outputs ('' = none).
+   subroutine study_run(base, st, run, x, listing_file, h5_file, row)
+      type(deck_t), intent(in) :: base
+      type(study_t), intent(in) :: st
+      integer, intent(in) :: run
+      real(wp), intent(in) :: x(:)
+      character(len=*), intent(in) :: listing_file, h5_file
+      type(run_row_t), intent(out) :: row
+      type(deck_t), allocatable :: deck     ! (large: on the heap)
+      type(model_t), allocatable :: m
+      type(run_summary_t) :: res
+      type(error_t) :: err
+      type(string_t), allocatable :: notes(:)
+      integer :: k
+      allocate (deck, m)
+      row%run = run
+      row%x = x
+      row%reason = ''
+      ! the values as run: what the cards now hold
+      call study_deck(base, st, x, deck, err, row%x)
+      if (.not. err%failed()) call build_model(deck, m, err)
+      if (err%failed()) then
+         row%status = status_invalid
+         row%reason = err%message
+         return
+      end if
+      m%warnings = [m%warnings, initial_warnings(m)]
+      if (len(listing_file) > 0 .or. len(h5_file) > 0) then
+         call write_case(deck, m, listing_file, h5_file, err, res, notes)
+      else
+         call run_simulation(m, res, err)
+      end if
+      row%t_end = res%t_end
+      select case (res%end_reason)
+      case (end_time)
+         row%status = status_completed
+      case (end_injury, end_rest, end_contact)
+         row%status = status_ended
+         row%reason = 'ended by the '//end_words(res%end_reason)//' end test (C.7) at t = '//num(res%t_end)//' s'
+      case (end_failure, end_energy)
+         row%status = status_failed
+         row%reason = err%message
+         return
+      case default
+         row%status = status_failed
+         row%reason = err%message
+         return
+      end select
+      if (err%failed()) then
+         ! the run's own outputs could not be written: the run is not a result
+         row%status = status_failed
+         row%reason = err%message
+         return
+      end if
+      allocate (row%crit(size(st%crits)))
+      row%meets = .true.
+      do k = 1, size(st%crits)
+         row%crit(k) = criterion_value(res, criterion_index(st%crits(k)%word), st%crits(k)%occupant)
+         if (st%crits(k)%has_limit) row%meets = row%meets .and. row%crit(k) <= st%crits(k)%limit
+      end do
+   end subroutine study_run
+
+   pure function end_words(reason) result(w)
+      integer, intent(in) :: reason
+      character(len=:), allocatable :: w
+      select case (reason)
+      case (end_injury)
+         w = 'injury'
+      case (end_rest)
+         w = 'rest'
+      case (end_contact)
+         w = 'undesired-contact'
+      case default
+         w = 'end'
+      end select
+   end function end_words
+end module study_runs
