@@ -45,6 +45,7 @@ module belt_forces
    use model, only: model_t, n_dof, n_seg, belt_card_lap2, coupling_torso
    use effect_base, only: effect_t, body_state_t, kept_inputs_t, kept_set, kept_matches
    use effect_events, only: accept_result_t
+   use effect_peaks, only: effect_peak_t
    use effect_energies, only: energy_stored, energy_dissipated, energy_supplied, n_energy_kinds
    use point_forces, only: point_force_list_t, point_force_add
    use output_series, only: output_series_t, series_new, column
@@ -91,6 +92,9 @@ module belt_forces
       real(wp) :: kept_s(max_belt_sections) = 0.0_wp, kept_s_dot(max_belt_sections) = 0.0_wp
       type(chain_split_t) :: kept_split(max_belt_sections)
       type(kept_inputs_t) :: kept
+      !> each chain's largest tension over the accepted steps (lb) and when:
+      !! a study's criteria (study_peaks), kept in accept
+      real(wp) :: tension_max(max_belt_sections) = 0.0_wp, t_tension_max(max_belt_sections) = 0.0_wp
    contains
       procedure :: add_forces => belt_add_forces
       procedure :: add_forces_kept => belt_add_forces_kept
@@ -103,6 +107,7 @@ module belt_forces
       procedure :: describe => belt_describe
       procedure :: failure_text => belt_failure_text
       procedure :: point_forces => belt_point_forces
+      procedure :: study_peaks => belt_study_peaks
    end type belt_effect_t
 
    !> Everything about the effect's sections at one state (for accept and outputs).
@@ -465,11 +470,36 @@ contains
                if (update) update = chain_relaxing(ch%chain, aux(ch%aux_offset + 1:ch%aux_offset &
                                                                  + chain_n_aux(ch%chain)))
             end if
+            ! the chain's tension at the accepted state, before its memory
+            ! changes (as a print time's frame shows it): its peak
+            if (sp%force > this%tension_max(c)) then
+               this%tension_max(c) = sp%force
+               this%t_tension_max(c) = st%t
+            end if
             call belt_chain_accept(ch, s, s_dot, aux, sp, update, changed)
             result%restart = result%restart .or. changed
          end associate
       end do
    end subroutine belt_accept
+
+   !> The largest tension of each section over the accepted steps (its
+   !! chain's: the sections of a chain carry one tension), for a study's
+   !! criteria (C.8: "large forces in the belts themselves"): named
+   !! <label>_tension ('lap', 'lap_a', 'lap_b': the lap belt; 'torso2',
+   !! 'torso3': the torso belt's sections), in lb; 0 for a belt that never
+   !! pulled. Not in the listing nor HDF5 (effect_t%study_peaks).
+   function belt_study_peaks(this) result(p)
+      class(belt_effect_t), intent(in) :: this
+      type(effect_peak_t), allocatable :: p(:)
+      integer :: k, c
+      allocate (p(this%n_sections))
+      do k = 1, this%n_sections
+         c = this%chain_of(k)
+         p(k) = effect_peak_t(name=trim(this%label(k))//'_tension', title=this%title, &
+                              label='largest tension F_'//itoa(this%card(k)), unit='lb', &
+                              value=this%tension_max(c), t=this%t_tension_max(c))
+      end do
+   end function belt_study_peaks
 
    !> Issue 15: the switching functions of every chain, in order
    !! (series_chain's chain_switches: slack, clip, turning points, kinks of

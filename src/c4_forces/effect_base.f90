@@ -110,6 +110,7 @@ module effect_base
       procedure :: failure_text => effect_failure_text
       procedure :: point_forces => effect_point_forces
       procedure :: peaks => effect_peaks
+      procedure :: study_peaks => effect_study_peaks
       procedure :: switches => effect_switches
       procedure :: slides => effect_slides
       procedure :: release => effect_release
@@ -295,6 +296,18 @@ contains
       end associate
       allocate (p(0))
    end function effect_peaks
+
+   !> The largest values the effect kept over the accepted steps for a
+   !! study's criteria alone (C.8; c8_modification/study_criteria): like
+   !! peaks, but neither the listing nor HDF5 shows them (their output
+   !! stays as it was). None by default; the belts' tensions.
+   function effect_study_peaks(this) result(p)
+      class(effect_t), intent(in) :: this
+      type(effect_peak_t), allocatable :: p(:)
+      associate (unused => this%name)
+      end associate
+      allocate (p(0))
+   end function effect_study_peaks
 
    !> The effect's energies (in*lb): stored, dissipated, supplied. Zero by default.
    pure subroutine effect_energy(this, st, extra, aux, e)

@@ -15,7 +15,7 @@ module output_calc
    private
 
    public :: body_outputs_t, body_outputs_compute, head_chest_acceleration, head_chest_motion, body_series, body_series_values
-   public :: body_kinetic_energy
+   public :: body_kinetic_energy, head_interior_x
 
    !> Segments whose centre-of-gravity accelerations C.6 prints.
    integer, parameter :: chest = 3, head = 4
@@ -85,6 +85,28 @@ contains
          a(2) = len*(zdd(j)*c(j) - zdot(j)**2*s(j))
       end function link_acc
    end subroutine head_chest_motion
+
+   !> The head centre of gravity's x relative to the vehicle interior (in;
+   !! x forward, the frame of C.4: x = R(Phi)(X - x_c), its first row), from
+   !! the segment angles' cosines c and sines s at hand and the vehicle's
+   !! position vpos (x_c, y_c, Phi): the chain hip - L1 - L2 - upper torso
+   !! (L3) - head (rho_4) of head_chest_motion. For the head's excursion
+   !! (run_summary), on every accepted step: a few products, and a cosine
+   !! and sine only when the vehicle pitches.
+   pure real(wp) function head_interior_x(body, z, c, s, vpos) result(x)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), c(n_seg), s(n_seg), vpos(3)
+      real(wp) :: dx, dy
+      dx = z(hip_x) + body%length(1)*c(1) + body%length(2)*c(2) + body%length(3)*c(chest) &
+           + body%rho(head)*c(head) - vpos(1)
+      if (abs(vpos(3)) > 0.0_wp) then
+         dy = z(hip_y) + body%length(1)*s(1) + body%length(2)*s(2) + body%length(3)*s(chest) &
+              + body%rho(head)*s(head) - vpos(2)
+         x = dx*cos(vpos(3)) - dy*sin(vpos(3))
+      else
+         x = dx
+      end if
+   end function head_interior_x
 
    !> Kinetic energy of each segment (C.6, erratum E-65).
    pure function body_kinetic_energy(body, z, zdot) result(ke)

@@ -5,7 +5,7 @@
 module run_summary
    use kinds, only: wp, i8
    use error_handling, only: error_t
-   use model, only: n_joint, n_injury
+   use model, only: n_joint, n_injury, injury_section_t
    use ode_system, only: step_stats_t
    use effect_events, only: event_t
    use effect_peaks, only: effect_peak_t
@@ -25,6 +25,13 @@ module run_summary
    !> One occupant's maxima (accepted steps) and energy balance (print times).
    type :: occupant_summary_t
       type(extreme_t) :: head_max, chest_max
+      !> the head's largest forward excursion (in): the largest x
+      !! displacement of its centre of gravity relative to the interior (x
+      !! forward, where a frontal pulse throws the occupant) from its place
+      !! at t = 0, head_x0, over the accepted steps; 0 when it never moved
+      !! forward. Not in the listing nor HDF5 (study_criteria's HEADX)
+      type(extreme_t) :: head_excursion
+      real(wp) :: head_x0 = 0.0_wp
       !> HIC, GSI, 3 ms clip of the head and chest accelerations (g), accepted steps
       type(acceleration_criteria_t) :: head_criteria, chest_criteria
       !> Table 5's force criteria when the deck gives limits (force_injuries):
@@ -32,6 +39,8 @@ module run_summary
       logical :: force_checked = .false.
       type(extreme_t) :: ft_max(n_joint), fc_max(n_injury), fs_max(n_injury)
       logical :: force_reported(3, n_injury) = .false.
+      !> the occupant's Table 5 limits they were checked against (its *INJURY)
+      type(injury_section_t) :: force_limits
       type(extreme_t) :: joint_min(n_joint), joint_max(n_joint)
       real(wp) :: e_total0 = 0.0_wp             !< energy total at t = 0
       real(wp) :: e_error_final = 0.0_wp
@@ -45,6 +54,10 @@ module run_summary
       !> the largest values its effects kept over the accepted steps (the
       !! contact pairs' forces), at the end of the run
       type(effect_peak_t), allocatable :: peaks(:)
+      !> the largest values its effects kept for a study's criteria alone
+      !! (effect_t%study_peaks: the belts' tensions), which the listing and
+      !! HDF5 do not show, at the end of the run
+      type(effect_peak_t), allocatable :: study_peaks(:)
       !> how accurate the run was: the fixed-step integrators' local error
       !! estimates accumulated (docs/accuracy.md)
       type(accuracy_t) :: accuracy

@@ -244,11 +244,12 @@ contains
             s%effect_names = ' '
             s%effect_titles = ' '
             do o = 1, n_occ
-               allocate (s%occ(o)%peaks(0))
+               allocate (s%occ(o)%peaks(0), s%occ(o)%study_peaks(0))
                do i = 1, size(sys%occupants(o)%effects)
                   s%effect_names(i, o) = sys%occupants(o)%effects(i)%e%name
                   s%effect_titles(i, o) = sys%occupants(o)%effects(i)%e%title
                   s%occ(o)%peaks = [s%occ(o)%peaks, sys%occupants(o)%effects(i)%e%peaks()]
+                  s%occ(o)%study_peaks = [s%occ(o)%study_peaks, sys%occupants(o)%effects(i)%e%study_peaks()]
                end do
             end do
             s%evaluations = sys%evaluations

@@ -21,7 +21,7 @@ module step_bookkeeping
    use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined, force_injury_event, event_tension, &
       event_compression, event_shear
    use joint_coupling, only: relative_angle
-   use output_calc, only: head_chest_acceleration, head_chest_motion
+   use output_calc, only: head_chest_acceleration, head_chest_motion, head_interior_x
    use output_producers, only: frame_energy, energy_balance_t
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t, raise, summary_add_event
    use accuracy_estimate, only: accuracy_t
@@ -109,7 +109,12 @@ contains
          associate (lim => sys%occupants(o)%injury)
             summary%occ(o)%force_checked = any(lim%f_tension > 0.0_wp) .or. any(lim%f_compression > 0.0_wp) &
                                            .or. any(lim%f_shear > 0.0_wp)
+            summary%occ(o)%force_limits = lim
          end associate
+         ! where the head's excursion is measured from
+         summary%occ(o)%head_x0 = head_interior_x(sys%occupants(o)%body, this%st%z, this%st%c, this%st%s, &
+                                                  this%st%vehicle%pos)
+         summary%occ(o)%head_excursion = extreme_t(0.0_wp, t)
          do i = 1, n_joint
             summary%occ(o)%joint_min(i) = extreme_t(relative_angle(this%st%z, i), 0.0_wp)
             summary%occ(o)%joint_max(i) = summary%occ(o)%joint_min(i)
@@ -181,9 +186,12 @@ contains
       do o = 1, size(sys%occupants)
          undesired = .false.
          associate (occ => sys%occupants(o), os => summary%occ(o), st => this%st)
-            ! the vehicle's state only when something reads it
+            ! the vehicle's state (for the head's excursion; and the
+            ! interior frame's data only when something reads them)
             call occupant_state(occ, t, y, st)
-            if (sys%needs_vehicle .or. occ%nend == nend_rest) call occupant_vehicle(occ, sys%vm, t, st)
+            call occupant_vehicle(occ, sys%vm, t, st)
+            ! the head's forward excursion relative to the interior (C.8's criteria)
+            call raise(os%head_excursion, head_interior_x(occ%body, st%z, st%c, st%s, st%vehicle%pos) - os%head_x0, t)
             ! Table 5's force criteria, with the memory the step was taken with
             if (os%force_checked) &
                call force_criteria(this, occ, o, t, y, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
