@@ -33,6 +33,7 @@ program hsri2d
    type(string_t), allocatable :: builtin(:), warnings(:)
    type(study_request_t) :: study
    integer :: ignore, i, ios, n_runs
+   logical :: is_study
 
    ! A file-size limit (ulimit -f) or a pipe closed by its reader (hsri2d |
    ! head) then makes writes fail with an error that is reported (exit
@@ -79,8 +80,9 @@ program hsri2d
       call finish(exit_ok)
    end if
    ! C.8: a deck with *STUDY (or a study's option) runs a study
+   is_study = deck_has_study(opts%decks)
    if (opts%collect .or. opts%study_size .or. opts%n_shards > 0 .or. len(opts%results_dir) > 0 .or. &
-       opts%jobs > 1 .or. deck_has_study(opts%decks)) then
+       opts%jobs > 1 .or. is_study) then
       study%decks = opts%decks
       study%listing_file = opts%listing_file
       study%results_dir = opts%results_dir

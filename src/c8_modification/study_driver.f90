@@ -21,7 +21,7 @@ module study_driver
    use model_builder, only: build_model
    use output_files, only: output_file_t
    use version_info, only: hsri2d_version
-   use study_input, only: study_t, read_study, has_study, method_optimize
+   use study_input, only: study_t, read_study, has_study, method_optimize, method_word
    use study_criteria, only: criterion_column, criterion_unit, criterion_index
    use study_runs, only: study_run
    use study_table, only: run_row_t, row_csv, row_from_csv, table_header, status_word, &
@@ -326,7 +326,6 @@ contains
       real(wp), intent(in) :: x(:)
       type(run_row_t), intent(out) :: row
       type(error_t), intent(inout) :: err
-      type(output_file_t) :: f
       character(len=:), allocatable :: lst, h5
       logical :: ok
       if (len(req%results_dir) > 0) then
@@ -338,12 +337,23 @@ contains
       if (sc%st%keep == 2 .or. sc%st%keep == 4) lst = row_path(req%results_dir, r)//'.lst'
       if (sc%st%keep == 3 .or. sc%st%keep == 4) h5 = row_path(req%results_dir, r)//'.h5'
       call study_run(sc%deck, sc%st, r, x, lst, h5, row)
+      call store_row(req, sc, row, err)
+   end subroutine one_run
+
+   !> A row to its file under the results directory (none without one),
+   !! atomically: a temporary file renamed.
+   subroutine store_row(req, sc, row, err)
+      type(study_request_t), intent(in) :: req
+      type(study_case_t), intent(in) :: sc
+      type(run_row_t), intent(in) :: row
+      type(error_t), intent(inout) :: err
+      type(output_file_t) :: f
       if (len(req%results_dir) == 0) return
-      call f%create_text(row_path(req%results_dir, r)//'.row', 'result of run '//itoa(r), err)
+      call f%create_text(row_path(req%results_dir, row%run)//'.row', 'result of run '//itoa(row%run), err)
       if (err%failed()) return
       call f%put_line(row_csv(row, size(sc%st%crits)))
       call f%commit(err)
-   end subroutine one_run
+   end subroutine store_row
 
    ! --- worker processes --------------------------------------------------
 
@@ -435,9 +445,9 @@ contains
       type(error_t), intent(inout) :: err
       procedure(progress_report), optional :: progress
       type(nm_t) :: nm
-      real(wp), allocatable :: x(:), lo(:), hi(:), x0(:)
+      real(wp), allocatable :: x(:), lo(:), hi(:), x0(:), asked(:, :)
       logical :: done
-      integer :: r, n, k, ko
+      integer :: r, n, k, ko, j
       n = size(sc%st%vars)
       allocate (lo(n), hi(n), x0(n), x(n))
       do k = 1, n
@@ -446,13 +456,28 @@ contains
          x0(k) = min(max(sc%st%vars(k)%base, lo(k)), hi(k))
       end do
       ko = objective_column(sc%st)
-      call nm%init(x0, lo, hi, sc%st%tol, sc%n_runs)
+      call nm%init(x0, lo, hi, sc%st%tol, sc%n_runs, err)
+      if (err%failed()) return
       n_made = 0
+      allocate (asked(n, sc%n_runs))
       do r = 1, sc%n_runs
          call nm%ask(x, done)
          if (done) exit
          n_made = r
-         call one_run(req, sc, r, x, rows(r), err)
+         asked(:, r) = x
+         ! a point asked again (projected onto the same bound) is not run again
+         j = 0
+         do k = 1, r - 1
+            if (.not. any(abs(asked(:, k) - x) > 0.0_wp)) j = k
+         end do
+         if (j > 0) then
+            rows(r) = rows(j)
+            rows(r)%run = r
+            rows(r)%reason = 'the values of run '//itoa(j)//': not run again'
+            call store_row(req, sc, rows(r), err)
+         else
+            call one_run(req, sc, r, x, rows(r), err)
+         end if
          if (err%failed()) return
          have(r) = .true.
          call nm%tell(penalised(sc%st, rows(r), ko))
@@ -551,14 +576,13 @@ contains
       type(run_row_t), intent(in) :: rows(:)
       logical, intent(in) :: have(:)
       type(string_t), allocatable :: lines(:)
-      character(len=:), allocatable :: line, methods
+      character(len=:), allocatable :: line
       integer :: k, r, best, ko
       type(string_t), allocatable :: vc(:), cc(:)
       allocate (lines(0))
-      methods = 'OAT|GRID|RANDOM|LHS|ENSEMBLE|OPTIMIZE'
       call append_string(lines, ' hsri2d '//hsri2d_version//'   STUDY (report C.8: the program varies its own inputs)')
       call append_string(lines, ' TITLE   '//trim(title_of(sc%deck)))
-      call append_string(lines, ' METHOD  '//word_n(methods, sc%st%method)//';  runs '//itoa(sc%n_runs))
+      call append_string(lines, ' METHOD  '//method_word(sc%st%method)//';  runs '//itoa(sc%n_runs))
       call append_string(lines, '')
       call append_string(lines, ' VARIED FIELDS (deck units; the deck''s own value)')
       do k = 1, size(sc%st%vars)
@@ -719,30 +743,6 @@ contains
          if (allocated(d%group(1)%card(1)%text)) t = d%group(1)%card(1)%text
       end if
    end function title_of
-
-   pure function word_n(list, n) result(w)
-      character(len=*), intent(in) :: list
-      integer, intent(in) :: n
-      character(len=:), allocatable :: w
-      integer :: i, start, found
-      start = 1
-      found = 0
-      w = ''
-      do i = 1, len(list) + 1
-         if (i > len(list)) then
-            found = found + 1
-         else if (list(i:i) == '|') then
-            found = found + 1
-         else
-            cycle
-         end if
-         if (found == n) then
-            w = list(start:i - 1)
-            return
-         end if
-         start = i + 1
-      end do
-   end function word_n
 
    pure function pad(s, w) result(t)
       character(len=*), intent(in) :: s

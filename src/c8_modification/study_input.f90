@@ -16,7 +16,7 @@ module study_input
    implicit none
    private
 
-   public :: study_t, study_var_t, study_crit_t, read_study, has_study
+   public :: study_t, study_var_t, study_crit_t, read_study, has_study, method_word
    public :: method_oat, method_grid, method_random, method_lhs, method_ensemble, method_optimize
    public :: keep_none, keep_listing, keep_h5, keep_both
 
