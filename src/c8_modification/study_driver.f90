@@ -70,11 +70,15 @@ contains
       type(string_t), intent(in) :: decks(:)
       type(deck_t) :: deck
       type(error_t) :: ignored
+      type(file_info_t) :: info
       integer :: k
       call deck_init(deck)
       do k = 1, size(decks)
-         ! (standard input is read once, by the run: run_case refuses a study there)
+         ! only regular files: standard input, a pipe or a FIFO is read once,
+         ! by the run (run_case refuses a study there)
          if (decks(k)%s == standard_input_path .or. decks(k)%s == builtin_deck_name) cycle
+         if (posix_file_info(decks(k)%s, info) /= 0) cycle
+         if (info%kind /= kind_regular) cycle
          call deck_add_file(deck, decks(k)%s, ignored)
       end do
       deck_has_study = has_study(deck)
@@ -577,8 +581,10 @@ contains
       logical, intent(in) :: have(:)
       type(string_t), allocatable :: lines(:)
       character(len=:), allocatable :: line
-      integer :: k, r, best, ko
+      integer :: k, r, best, ko, n_cols, first, last, width
       type(string_t), allocatable :: vc(:), cc(:)
+      !> the line printer's width; a column's least width
+      integer, parameter :: line_width = 132, column_width = 13
       allocate (lines(0))
       call append_string(lines, ' hsri2d '//hsri2d_version//'   STUDY (report C.8: the program varies its own inputs)')
       call append_string(lines, ' TITLE   '//trim(title_of(sc%deck)))
@@ -601,33 +607,41 @@ contains
       call append_string(lines, ' RUNS')
       vc = var_columns(sc%st)
       cc = crit_columns(sc%st)
-      line = '    run  status    '
-      do k = 1, size(vc)
-         line = line//' '//rpad(vc(k)%s, 13)
-      end do
-      do k = 1, size(cc)
-         line = line//' '//rpad(cc(k)%s, 13)
-      end do
-      call append_string(lines, line//'  limits')
-      do r = 1, size(rows)
-         if (.not. have(r)) then
-            call append_string(lines, ' '//rpad(itoa(r), 6)//'  (no result)')
-            cycle
-         end if
-         line = ' '//rpad(itoa(r), 6)//'  '//pad(status_word(rows(r)%status), 9)
-         do k = 1, size(rows(r)%x)
-            line = line//' '//rpad(num(rows(r)%x(k), 6), 13)
+      ! the varied fields, then the criteria, as many columns a panel as fit
+      ! the line printer's 132 (a reason under its run, in the first panel)
+      n_cols = size(vc) + size(cc)
+      first = 1
+      do while (first <= max(n_cols, 1))
+         ! as many columns as fit, each as wide as its name or 13
+         last = first
+         width = 19 + 1 + col_width(first)
+         do while (last < n_cols)
+            if (width + 1 + col_width(last + 1) > line_width - 8) exit
+            last = last + 1
+            width = width + 1 + col_width(last)
          end do
-         do k = 1, size(cc)
-            if (allocated(rows(r)%crit)) then
-               line = line//' '//rpad(num(rows(r)%crit(k), 6), 13)
-            else
-               line = line//' '//rpad('-', 13)
-            end if
+         last = min(last, n_cols)
+         line = '    run  status    '
+         do k = first, last
+            line = line//' '//rpad(column_name(k), col_width(k))
          end do
-         line = line//'  '//trim(merge('meets', 'no   ', rows(r)%meets))
+         if (last == n_cols) line = line//'  limits'
          call append_string(lines, line)
-         if (len(rows(r)%reason) > 0) call append_string(lines, '          '//rows(r)%reason)
+         do r = 1, size(rows)
+            if (.not. have(r)) then
+               call append_string(lines, ' '//rpad(itoa(r), 6)//'  (no result)')
+               cycle
+            end if
+            line = ' '//rpad(itoa(r), 6)//'  '//pad(status_word(rows(r)%status), 9)
+            do k = first, last
+               line = line//' '//rpad(cell(rows(r), k), col_width(k))
+            end do
+            if (last == n_cols) line = line//'  '//trim(merge('meets', 'no   ', rows(r)%meets))
+            call append_string(lines, line)
+            if (first == 1 .and. len(rows(r)%reason) > 0) call append_string(lines, '          '//rows(r)%reason)
+         end do
+         first = last + 1
+         if (first <= n_cols) call append_string(lines, '')
       end do
       call append_string(lines, '')
       call append_string(lines, ' SUMMARY  '//itoa(count(have))//' of '//itoa(size(rows))//' runs have a result: '// &
@@ -661,6 +675,34 @@ contains
       call append_string(lines, ' TABLE    one row per run, every digit: results.csv in the results directory '// &
                          '(docs/modification.md)')
    contains
+      pure integer function col_width(k)
+         integer, intent(in) :: k
+         col_width = max(column_width, len(column_name(k)) + 1)
+      end function col_width
+
+      !> Column k of the table: a varied field, then a criterion.
+      pure function column_name(k) result(name)
+         integer, intent(in) :: k
+         character(len=:), allocatable :: name
+         if (k <= size(vc)) then
+            name = vc(k)%s
+         else
+            name = cc(k - size(vc))%s
+         end if
+      end function column_name
+
+      function cell(row, k) result(text)
+         type(run_row_t), intent(in) :: row
+         integer, intent(in) :: k
+         character(len=:), allocatable :: text
+         text = '-'
+         if (k <= size(vc)) then
+            text = num(row%x(k), 6)
+         else if (allocated(row%crit)) then
+            text = num(row%crit(k - size(vc)), 6)
+         end if
+      end function cell
+
       integer function count_status(s)
          integer, intent(in) :: s
          integer :: i

@@ -62,6 +62,9 @@ module study_input
       type(study_crit_t), allocatable :: crits(:)
    end type study_t
 
+   !> *VALUES' fields, for the messages.
+   character(len=2), parameter :: value_fields(7) = ['V1', 'V2', 'V3', 'V4', 'V5', 'V6', 'V7']
+
    !> The criteria reported when the deck gives no *CRITERIA.
    character(len=8), parameter :: default_criteria(5) = &
       [character(len=8) :: 'HIC15', 'CLIP3MS', 'BELTF', 'UNWANTED', 'INJURY']
@@ -228,7 +231,7 @@ contains
                if (.not. in_field_range(deck, st%vars(v), x)) then
                   call problem(o, err, g%card(i), 'value '//num(x)//' is outside the range of '// &
                                st%vars(v)%label//': expected '//field_expectation(deck%spec(st%vars(v)%gid)% &
-                               field(st%vars(v)%k)), 'V'//itoa(j))
+                               field(st%vars(v)%k)), value_fields(j))
                else
                   st%vars(v)%values = [st%vars(v)%values, x]
                end if

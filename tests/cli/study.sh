@@ -95,7 +95,7 @@ no_crash err
 expect_status 2 $? "a study on standard input alone"
 cat "$base" "$studies/oat.deck" | "$exe" - >/dev/null 2>err
 expect_status 1 $? "a study on standard input"
-expect_text err 'a study deck \(\*STUDY, report C.8\) is run from its files' "a study on standard input"
+expect_text err 'a study deck \(\*STUDY, report C.8\) is run from regular files' "a study on standard input"
 
 # a kept run's listing marks the cards the study set
 sed "s/^       OAT\$/       OAT$(printf '%55s' '')LISTING/" "$studies/oat.deck" >keep.deck
