@@ -197,12 +197,11 @@ contains
          call error_set(err, exit_usage, mode//' reads no deck; "'//opts%decks(1)%s//'" would be ignored')
       else if (h5_named .and. (opts%deck_format .or. opts%print_default_deck .or. opts%outputs .or. opts%refine)) then
          call error_set(err, exit_usage, mode//' writes no HDF5 file; --h5 would be ignored')
-      else if (opts%jobs > 1 .and. len(mode) > 0) then
+      else if (opts%jobs > 1 .and. len(mode) > 0 .and. mode /= '--shard') then
          call error_set(err, exit_usage, mode//' runs no study''s runs; --jobs would be ignored')
-      else if (h5_named .and. (opts%collect .or. opts%study_size .or. opts%n_shards > 0 .or. &
-                               len(opts%results_dir) > 0 .or. opts%jobs > 1)) then
-         call error_set(err, exit_usage, 'a study writes no HDF5 file of its own (*STUDY KEEP writes each run''s); '// &
-                        '--h5 would be ignored')
+      else if (h5_named .and. (opts%study_size .or. opts%n_shards > 0)) then
+         call error_set(err, exit_usage, mode//' writes no HDF5 file (the study''s is written by the run of the '// &
+                        'whole study or --collect); --h5 would be ignored')
       end if
    contains
       subroutine take(given, name)
@@ -253,6 +252,7 @@ contains
           '  --jobs N            run the study''s runs on N worker processes (needs --results)'//nl// &
           '  --shard K/N         run slice K of N of the runs (a job array; needs --results)'//nl// &
           '  --collect           merge the rows in DIR into the table and the listing; run nothing'//nl// &
+          '  --h5 FILE           (a study) the table in FILE''s /study'//nl// &
           '  --study-size        print the number of runs of the study and exit'//nl//nl// &
           '  --default-deck      print the built-in default deck and exit'//nl// &
           '  -V, --version       print the version and exit'//nl// &

@@ -13,9 +13,9 @@ program hsri2d
    use output_files, only: output_file_t
    use posix_files, only: posix_ignore_output_signals
    use version_info, only: hsri2d_version
-   use kinds, only: wp
    use strings, only: itoa
    use posix_processes, only: posix_is_terminal
+   use study_progress, only: show_progress
    use study_driver, only: study_request_t, run_study, study_size, deck_has_study
    implicit none
 
@@ -86,6 +86,7 @@ program hsri2d
       study%decks = opts%decks
       study%listing_file = opts%listing_file
       study%results_dir = opts%results_dir
+      study%h5_file = opts%h5_file
       study%jobs = opts%jobs
       study%shard = opts%shard
       study%n_shards = opts%n_shards
@@ -154,19 +155,6 @@ contains
       if (code == exit_numerical) write (error_unit, '(a)', iostat=ios) 'hsri2d: the listing holds the run up to the failure'
       call finish(code)
    end subroutine quit
-
-   !> A study's progress on standard error (a terminal only): one line,
-   !! rewritten after each run.
-   subroutine show_progress(done, bad, total, seconds)
-      integer, intent(in) :: done, bad, total
-      real(wp), intent(in) :: seconds
-      integer :: ios2
-      character(len=:), allocatable :: eta
-      eta = ''
-      if (done > 0 .and. done < total) eta = ', about '//itoa(nint(seconds/done*(total - done)))//' s to go'
-      write (error_unit, '(a)', advance='no', iostat=ios2) achar(13)//'hsri2d: study: '//itoa(done)//' of '// &
-         itoa(total)//' runs done, '//itoa(bad)//' failed, '//itoa(total - done)//' remaining'//eta//'   '
-   end subroutine show_progress
 
    subroutine finish(code)
       integer, intent(in) :: code

@@ -10,7 +10,7 @@ module study_driver
    use, intrinsic :: iso_c_binding, only: c_long
    use kinds, only: wp
    use error_handling, only: error_t, error_set, error_append, exit_usage, exit_io, exit_study
-   use strings, only: itoa, num
+   use strings, only: itoa, num, upper
    use text_io, only: string_t, append_string, read_text_file, standard_input_path
    use posix_files, only: file_info_t, posix_file_info, posix_make_dir, posix_error_text, kind_regular
    use posix_processes, only: posix_spawn_program, posix_wait, posix_sleep_ms
@@ -19,7 +19,9 @@ module study_driver
    use run_case_mod, only: builtin_deck_name
    use model, only: model_t
    use model_builder, only: build_model
-   use output_files, only: output_file_t
+   use output_files, only: output_file_t, check_output_paths
+   use deck_cards, only: g_pulsefile
+   use study_h5, only: write_study_h5
    use version_info, only: hsri2d_version
    use study_input, only: study_t, read_study, has_study, method_optimize, method_word
    use study_criteria, only: criterion_column, criterion_unit, criterion_index
@@ -38,6 +40,7 @@ module study_driver
       type(string_t), allocatable :: decks(:)
       character(len=:), allocatable :: listing_file   !< '' = standard output
       character(len=:), allocatable :: results_dir    !< '' = rows kept in memory only
+      character(len=:), allocatable :: h5_file        !< '' = no HDF5 file (study_h5)
       integer :: jobs = 1                             !< worker processes
       integer :: shard = 0, n_shards = 0              !< --shard K/N (0: the whole study)
       logical :: collect = .false.                    !< merge the rows, run nothing
@@ -61,27 +64,40 @@ module study_driver
       real(wp), allocatable :: points(:, :)   !< (variable, run); OPTIMIZE: none
       integer :: n_runs = 0
       character(len=:), allocatable :: deck_text
+      character(len=:), allocatable :: pulse_file   !< the base deck's *PULSEFILE ('' none)
    end type study_case_t
 
 contains
 
-   !> The deck files hold a *STUDY group (read without checking the rest).
+   !> The deck files hold a *STUDY group: a header card "*STUDY" (the cards
+   !! scanned, not parsed: a plain run pays one read of its files' text).
+   !! Only regular files: standard input, a pipe or a FIFO is read once, by
+   !! the run (run_case refuses a study there).
    logical function deck_has_study(decks)
       type(string_t), intent(in) :: decks(:)
-      type(deck_t) :: deck
+      type(string_t), allocatable :: lines(:)
       type(error_t) :: ignored
       type(file_info_t) :: info
-      integer :: k
-      call deck_init(deck)
+      character(len=:), allocatable :: word
+      integer :: k, i, e
+      deck_has_study = .false.
       do k = 1, size(decks)
-         ! only regular files: standard input, a pipe or a FIFO is read once,
-         ! by the run (run_case refuses a study there)
          if (decks(k)%s == standard_input_path .or. decks(k)%s == builtin_deck_name) cycle
          if (posix_file_info(decks(k)%s, info) /= 0) cycle
          if (info%kind /= kind_regular) cycle
-         call deck_add_file(deck, decks(k)%s, ignored)
+         call read_text_file(decks(k)%s, lines, ignored)
+         if (ignored%failed()) cycle
+         do i = 1, size(lines)
+            if (len(lines(i)%s) < 6) cycle
+            if (lines(i)%s(1:1) /= '*') cycle
+            e = scan(lines(i)%s(2:)//' ', ' ')
+            word = upper(lines(i)%s(2:e))
+            if (word == 'STUDY') then
+               deck_has_study = .true.
+               return
+            end if
+         end do
       end do
-      deck_has_study = has_study(deck)
    end function deck_has_study
 
    !> The number of runs of the study (OPTIMIZE: its budget).
@@ -196,6 +212,9 @@ contains
       end do
       if (err%failed()) return
       sc%deck_text = deck_text(sc%deck)
+      sc%pulse_file = ''
+      if (sc%deck%group(g_pulsefile)%present .and. sc%deck%group(g_pulsefile)%n > 0) &
+         sc%pulse_file = m%vehicle%pulse_source
       if (sc%st%method == method_optimize) then
          sc%n_runs = sc%st%runs
          allocate (sc%points(size(sc%st%vars), 0))
@@ -230,6 +249,15 @@ contains
       type(study_request_t), intent(in) :: req
       type(study_case_t), intent(in) :: sc
       type(error_t), intent(inout) :: err
+      type(string_t), allocatable :: files(:)
+      integer :: k
+      ! the listing and the HDF5 file never overwrite an input (output_files)
+      allocate (files(0))
+      do k = 1, size(req%decks)
+         if (req%decks(k)%s /= builtin_deck_name) call append_string(files, req%decks(k)%s)
+      end do
+      call check_output_paths(files, sc%pulse_file, req%listing_file, req%h5_file, err)
+      if (err%failed()) return
       if (len(req%results_dir) == 0 .and. (req%jobs > 1 .or. req%n_shards > 0 .or. req%collect)) then
          call error_set(err, exit_usage, '--jobs, --shard and --collect need --results DIR, the directory that '// &
                         'holds each run''s result')
@@ -539,6 +567,11 @@ contains
          call csv%commit(err)
          if (err%failed()) return
       end if
+      if (len(req%h5_file) > 0) then
+         call write_study_h5(req%h5_file, title_of(sc%deck), deck_cards_text(sc%deck), var_columns(sc%st), &
+                             var_units(sc), crit_columns(sc%st), crit_units(sc%st), rows, have, err)
+         if (err%failed()) return
+      end if
       lines = listing_lines(sc, rows, have)
       call lst%create_text(req%listing_file, 'listing', err)
       if (err%failed()) return
@@ -557,6 +590,39 @@ contains
          call append_string(c, st%vars(k)%column)
       end do
    end function var_columns
+
+   function var_units(sc) result(u)
+      type(study_case_t), intent(in) :: sc
+      type(string_t), allocatable :: u(:)
+      integer :: k
+      allocate (u(0))
+      do k = 1, size(sc%st%vars)
+         associate (v => sc%st%vars(k))
+            call append_string(u, trim(sc%deck%spec(v%gid)%field(v%k)%unit))
+         end associate
+      end do
+   end function var_units
+
+   function crit_units(st) result(u)
+      type(study_t), intent(in) :: st
+      type(string_t), allocatable :: u(:)
+      integer :: k
+      allocate (u(0))
+      do k = 1, size(st%crits)
+         call append_string(u, criterion_unit(criterion_index(st%crits(k)%word)))
+      end do
+   end function crit_units
+
+   !> The deck's card images (/input/deck).
+   function deck_cards_text(d) result(lines)
+      type(deck_t), intent(in) :: d
+      character(len=80), allocatable :: lines(:)
+      integer :: k
+      allocate (lines(d%n_echo))
+      do k = 1, d%n_echo
+         lines(k) = d%echo(k)%text
+      end do
+   end function deck_cards_text
 
    function crit_columns(st) result(c)
       type(study_t), intent(in) :: st

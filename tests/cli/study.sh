@@ -104,4 +104,32 @@ sed "s/^       OAT\$/       OAT$(printf '%55s' '')LISTING/" "$studies/oat.deck" 
 expect_text keep/runs/000002.lst '^ +[0-9]+  V  .*sled_belted.deck:131 +1 +1\. +1500$' "run 2's listing marks the varied card"
 expect_text keep/runs/000002.lst 'V = card with a field the study set for this run' "the mark is explained"
 no_part_files keep/runs
+
+# the table in HDF5 (/study), the same numbers as results.csv
+"$exe" --collect --results one --h5 one.h5 "$base" "$studies/oat.deck" >/dev/null 2>err || fail "--collect --h5 failed: $(cat err)"
+if python3 -c 'import h5py' 2>/dev/null; then
+    python3 - one.h5 one/results.csv <<'EOF' || fail "/study differs from results.csv"
+import csv, math, sys
+import h5py
+f = h5py.File(sys.argv[1], "r")
+rows = list(csv.DictReader(open(sys.argv[2])))
+st = f["study"]
+assert list(st["run"][:]) == [float(r["run"]) for r in rows]
+assert list(st["status"][:]) == [1, 1, 1, 1, 1, 1, 4]
+cols = [c.decode() if isinstance(c, bytes) else c for c in st["criteria"].attrs["columns"]]
+for i, r in enumerate(rows):
+    for j, c in enumerate(cols):
+        v = st["criteria"][i, j]
+        assert (math.isnan(v) and r[c] == "") or v == float(r[c]), (i, c, v, r[c])
+    assert list(st["values"][i]) == [float(r["loadtable_2_force"]), float(r["belts_1_phiprime"]), float(r["joints_1_omega"])]
+assert len(f["input/deck"]) > 100
+EOF
+fi
+
+# an output never overwrites an input
+cp "$base" base_copy.deck
+"$exe" --results over -o base_copy.deck base_copy.deck "$studies/oat.deck" >/dev/null 2>err
+expect_status 1 $? "a listing over the deck"
+expect_text err 'refusing to overwrite it' "a listing over the deck"
+same_content "$base" base_copy.deck "a listing over the deck"
 pass
