@@ -97,12 +97,32 @@ cat "$base" "$studies/oat.deck" | "$exe" - >/dev/null 2>err
 expect_status 1 $? "a study on standard input"
 expect_text err 'a study deck \(\*STUDY, report C.8\) is run from regular files' "a study on standard input"
 
-# a kept run's listing marks the cards the study set
-sed "s/^       OAT\$/       OAT$(printf '%55s' '')LISTING/" "$studies/oat.deck" >keep.deck
+# a kept run's listing marks the cards the study set; its HDF5 file holds the
+# same numbers, bit for bit, as the variation's deck run by a process of its own
+sed "s/^       OAT\$/       OAT$(printf '%58s' '')BOTH/" "$studies/oat.deck" >keep.deck
 "$exe" --results keep "$base" keep.deck >/dev/null 2>err || fail "the study keeping listings failed: $(cat err)"
-[ -s keep/runs/000002.lst ] || fail "KEEP LISTING wrote no listing of run 2"
+[ -s keep/runs/000002.lst ] || fail "KEEP BOTH wrote no listing of run 2"
+[ -s keep/runs/000002.h5 ] || fail "KEEP BOTH wrote no HDF5 file of run 2"
 expect_text keep/runs/000002.lst '^ +[0-9]+  V  .*sled_belted.deck:131 +1 +1\. +1500$' "run 2's listing marks the varied card"
 expect_text keep/runs/000002.lst 'V = card with a field the study set for this run' "the mark is explained"
+sed '131s/^ 1        1\.     2500\.$/ 1        1.      1500/' "$base" >variation.deck
+cmp -s "$base" variation.deck && fail "the variation deck was not made"
+"$exe" variation.deck --h5 variation.h5 -o variation.lst 2>err || fail "the variation's own run failed: $(cat err)"
+if python3 -c 'import h5py' 2>/dev/null; then
+    python3 - keep/runs/000002.h5 variation.h5 <<'EOF' || fail "a study's run and the same deck's own process differ"
+import sys
+import h5py
+a, b = h5py.File(sys.argv[1], "r"), h5py.File(sys.argv[2], "r")
+names = []
+a.visititems(lambda n, o: names.append(n) if isinstance(o, h5py.Dataset) else None)
+assert len(names) > 20
+for n in names:
+    if n == "input/deck":
+        continue
+    x, y = a[n][()], b[n][()]
+    assert x.shape == y.shape and (x.tobytes() == y.tobytes()), n
+EOF
+fi
 no_part_files keep/runs
 
 # the table in HDF5 (/study), the same numbers as results.csv
