@@ -435,7 +435,8 @@ contains
       do while (any(running))
          do k = 1, req%jobs
             if (.not. running(k)) cycle
-            errno = posix_wait(pid(k), .true., done, status)
+            ! without progress to show, wait for each worker in turn (no polling)
+            errno = posix_wait(pid(k), present(progress), done, status)
             if (errno /= 0) then
                running(k) = .false.
             else if (done) then
@@ -457,7 +458,7 @@ contains
             call system_clock(c1)
             call progress(n_done, n_bad, sc%n_runs, real(c1 - c0, wp)/real(rate, wp))
          end if
-         if (any(running)) call posix_sleep_ms(100)
+         if (any(running) .and. present(progress)) call posix_sleep_ms(100)
       end do
    end subroutine run_workers
 
