@@ -23,7 +23,7 @@ module study_driver
    use deck_cards, only: g_pulsefile
    use study_h5, only: write_study_h5
    use version_info, only: hsri2d_version
-   use study_input, only: study_t, read_study, has_study, method_optimize, method_word
+   use study_input, only: study_t, read_study, has_study, method_optimize, method_ensemble, method_word
    use study_criteria, only: criterion_column, criterion_unit, criterion_index
    use study_runs, only: study_run
    use study_table, only: run_row_t, row_csv, row_from_csv, table_header, status_word, &
@@ -225,7 +225,11 @@ contains
          associate (v => sc%st%vars(k))
             vars(k)%low = v%low
             vars(k)%high = v%high
-            if (.not. v%has_range) then
+            if (.not. v%has_range .and. sc%st%method == method_ensemble) then
+               ! perturbations kept within what the field itself accepts
+               vars(k)%low = max(sc%deck%spec(v%gid)%field(v%k)%low, -1.0e300_wp)
+               vars(k)%high = min(sc%deck%spec(v%gid)%field(v%k)%high, 1.0e300_wp)
+            else if (.not. v%has_range) then
                vars(k)%low = v%base
                vars(k)%high = v%base
                if (size(v%values) > 0) then
@@ -716,6 +720,7 @@ contains
                          ' ended by an end test, '//itoa(count_status(status_failed))//' failed, '// &
                          itoa(count_status(status_invalid))//' invalid; '//itoa(count(rows(:)%meets .and. have))// &
                          ' meet the limits')
+      call statistics_lines(lines, rows, have, cc)
       ko = objective_column(sc%st)
       if (ko > 0) then
          best = 0
@@ -781,6 +786,50 @@ contains
          end do
       end function count_status
    end function listing_lines
+
+   !> Each criterion's count, mean, standard deviation and range over the
+   !! runs that have criteria (completed, or ended by an end test): with
+   !! ENSEMBLE, how robust each output is to the inputs' small changes.
+   subroutine statistics_lines(lines, rows, have, cc)
+      type(string_t), allocatable, intent(inout) :: lines(:)
+      type(run_row_t), intent(in) :: rows(:)
+      logical, intent(in) :: have(:)
+      type(string_t), intent(in) :: cc(:)
+      real(wp) :: total, mean, sq, lo, hi
+      integer :: k, r, n
+      if (size(cc) == 0) return
+      call append_string(lines, ' STATISTICS over the runs with criteria (completed or ended; standard deviation '// &
+                         'with n - 1)')
+      call append_string(lines, '   criterion          runs          mean     std. dev.       least     largest')
+      do k = 1, size(cc)
+         n = 0
+         total = 0.0_wp
+         lo = huge(1.0_wp)
+         hi = -huge(1.0_wp)
+         do r = 1, size(rows)
+            if (.not. have(r)) cycle
+            if (.not. allocated(rows(r)%crit)) cycle
+            n = n + 1
+            total = total + rows(r)%crit(k)
+            lo = min(lo, rows(r)%crit(k))
+            hi = max(hi, rows(r)%crit(k))
+         end do
+         if (n == 0) then
+            call append_string(lines, '   '//pad(cc(k)%s, 13)//rpad('0', 9))
+            cycle
+         end if
+         mean = total/n
+         sq = 0.0_wp
+         do r = 1, size(rows)
+            if (.not. have(r)) cycle
+            if (.not. allocated(rows(r)%crit)) cycle
+            sq = sq + (rows(r)%crit(k) - mean)**2
+         end do
+         sq = sqrt(sq/max(n - 1, 1))
+         call append_string(lines, '   '//pad(cc(k)%s, 13)//rpad(itoa(n), 9)//' '//rpad(num(mean, 6), 13)//' '// &
+                            rpad(num(sq, 6), 13)//' '//rpad(num(lo, 6), 11)//' '//rpad(num(hi, 6), 11))
+      end do
+   end subroutine statistics_lines
 
    ! --- small helpers -----------------------------------------------------
 

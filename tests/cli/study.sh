@@ -97,6 +97,26 @@ cat "$base" "$studies/oat.deck" | "$exe" - >/dev/null 2>err
 expect_status 1 $? "a study on standard input"
 expect_text err 'a study deck \(\*STUDY, report C.8\) is run from regular files' "a study on standard input"
 
+# ENSEMBLE: the deck, then seeded perturbations within the field's range;
+# the listing's statistics of each criterion; the same seed, the same runs
+"$exe" --results ens "$base" "$studies/ensemble.deck" >ens.lst 2>err || fail "the ensemble failed: $(cat err)"
+[ "$(wc -l <ens/results.csv)" -eq 6 ] || fail "ENSEMBLE RUNS 5: 5 rows expected"
+expect_text ens/results.csv '^1,completed,2500,55,' "the ensemble's run 1 is the deck"
+[ "$(cut -d, -f4 ens/results.csv | sort -u | wc -l)" -eq 6 ] || fail "the anchor angle (no LOW, HIGH) was not perturbed:
+$(cat ens/results.csv)"
+expect_text ens.lst '^   hic15 +5 +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+$' "the ensemble's statistics"
+"$exe" --results ens2 "$base" "$studies/ensemble.deck" >/dev/null 2>err || fail "the ensemble again failed"
+cmp -s ens/results.csv ens2/results.csv || fail "the same seed gave other runs"
+"$exe" --results lhs "$base" "$studies/lhs.deck" >/dev/null 2>err || fail "the hypercube failed: $(cat err)"
+python3 - lhs/results.csv <<'EOF' || fail "LHS: not one run per stratum"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 4
+for col, lo, hi in (("loadtable_2_force", 1500, 3500), ("belts_1_phiprime", 40, 70)):
+    strata = sorted(int((float(r[col]) - lo) / (hi - lo) * 4) for r in rows)
+    assert strata == [0, 1, 2, 3], (col, strata)
+EOF
+
 # a kept run's listing marks the cards the study set; its HDF5 file holds the
 # same numbers, bit for bit, as the variation's deck run by a process of its own
 sed "s/^       OAT\$/       OAT$(printf '%58s' '')BOTH/" "$studies/oat.deck" >keep.deck
