@@ -16,11 +16,10 @@ module study_driver
    use posix_processes, only: posix_spawn_program, posix_wait, posix_sleep_ms
    use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
    use default_deck, only: default_deck_lines
-   use run_case_mod, only: builtin_deck_name
+   use run_case_mod, only: builtin_deck_name, deck_text, pulse_file
    use model, only: model_t
    use model_builder, only: build_model
    use output_files, only: output_file_t, check_output_paths
-   use deck_cards, only: g_pulsefile
    use study_h5, only: write_study_h5
    use version_info, only: hsri2d_version
    use study_input, only: study_t, read_study, has_study, method_optimize, method_ensemble, method_word
@@ -63,7 +62,7 @@ module study_driver
       type(study_t) :: st
       real(wp), allocatable :: points(:, :)   !< (variable, run); OPTIMIZE: none
       integer :: n_runs = 0
-      character(len=:), allocatable :: deck_text
+      character(len=:), allocatable :: identity   !< the deck's text (DIR/study.deck)
       character(len=:), allocatable :: pulse_file   !< the base deck's *PULSEFILE ('' none)
    end type study_case_t
 
@@ -130,7 +129,7 @@ contains
       call check_request(req, sc, err)
       if (err%failed()) return
       if (len(req%results_dir) > 0) then
-         call prepare_directory(req%results_dir, sc%deck_text, err)
+         call prepare_directory(req%results_dir, sc%identity, err)
          if (err%failed()) return
       end if
       allocate (rows(sc%n_runs), have(sc%n_runs))
@@ -211,10 +210,8 @@ contains
          end if
       end do
       if (err%failed()) return
-      sc%deck_text = deck_text(sc%deck)
-      sc%pulse_file = ''
-      if (sc%deck%group(g_pulsefile)%present .and. sc%deck%group(g_pulsefile)%n > 0) &
-         sc%pulse_file = m%vehicle%pulse_source
+      sc%identity = study_text(sc%deck)
+      sc%pulse_file = pulse_file(sc%deck, m)
       if (sc%st%method == method_optimize) then
          sc%n_runs = sc%st%runs
          allocate (sc%points(size(sc%st%vars), 0))
@@ -573,7 +570,7 @@ contains
          if (err%failed()) return
       end if
       if (len(req%h5_file) > 0) then
-         call write_study_h5(req%h5_file, title_of(sc%deck), deck_cards_text(sc%deck), var_columns(sc%st), &
+         call write_study_h5(req%h5_file, title_of(sc%deck), deck_text(sc%deck), var_columns(sc%st), &
                              var_units(sc), crit_columns(sc%st), crit_units(sc%st), rows, have, err)
          if (err%failed()) return
       end if
@@ -617,17 +614,6 @@ contains
          call append_string(u, criterion_unit(criterion_index(st%crits(k)%word)))
       end do
    end function crit_units
-
-   !> The deck's card images (/input/deck).
-   function deck_cards_text(d) result(lines)
-      type(deck_t), intent(in) :: d
-      character(len=80), allocatable :: lines(:)
-      integer :: k
-      allocate (lines(d%n_echo))
-      do k = 1, d%n_echo
-         lines(k) = d%echo(k)%text
-      end do
-   end function deck_cards_text
 
    function crit_columns(st) result(c)
       type(study_t), intent(in) :: st
@@ -867,7 +853,7 @@ contains
    end function cpu_now
 
    !> The deck's card images, one line each (the identity of a study).
-   function deck_text(d) result(text)
+   function study_text(d) result(text)
       type(deck_t), intent(in) :: d
       character(len=:), allocatable :: text
       integer :: k
@@ -875,7 +861,7 @@ contains
       do k = 1, d%n_echo
          text = text//d%echo(k)%text//new_line('a')
       end do
-   end function deck_text
+   end function study_text
 
    subroutine put_text(f, text)
       type(output_file_t), intent(inout) :: f

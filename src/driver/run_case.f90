@@ -33,6 +33,7 @@ module run_case_mod
    private
 
    public :: run_request_t, run_case, write_case, read_case_deck, builtin_deck_name, describe_outputs, refine_case
+   public :: deck_text, pulse_file
 
    !> The outputs of a case: the listing, and the HDF5 file when asked for.
    type, extends(output_sink_t) :: case_sink_t
