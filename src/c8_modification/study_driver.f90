@@ -20,7 +20,7 @@ module study_driver
    use model, only: model_t
    use model_builder, only: build_model
    use output_files, only: output_file_t, check_output_paths
-   use study_h5, only: write_study_h5
+   use study_h5, only: study_h5_t
    use version_info, only: hsri2d_version
    use study_input, only: study_t, read_study, has_study, method_optimize, method_ensemble, method_word
    use study_criteria, only: criterion_column, criterion_unit, criterion_index
@@ -65,6 +65,17 @@ module study_driver
       character(len=:), allocatable :: identity   !< the deck's text (DIR/study.deck)
       character(len=:), allocatable :: pulse_file   !< the base deck's *PULSEFILE ('' none)
    end type study_case_t
+
+   !> The rows of a study's runs: with a results directory, in its files,
+   !! read when needed (memory does not grow with the rows); without one,
+   !! in memory. have(r): run r has a row; n: the runs of the table.
+   type :: row_store_t
+      character(len=:), allocatable :: dir
+      type(run_row_t), allocatable :: rows(:)   !< without a directory only
+      logical, allocatable :: have(:)
+      integer :: n = 0
+      integer :: n_bad = 0                      !< rows of failed or invalid runs
+   end type row_store_t
 
 contains
 
@@ -119,8 +130,8 @@ contains
       type(error_t), intent(inout) :: err
       procedure(progress_report), optional :: progress
       type(study_case_t), allocatable :: sc
-      type(run_row_t), allocatable :: rows(:)
-      logical, allocatable :: have(:)
+      type(row_store_t) :: store
+      type(run_row_t) :: row
       integer :: r, n_made
 
       allocate (sc)
@@ -132,40 +143,39 @@ contains
          call prepare_directory(req%results_dir, sc%identity, err)
          if (err%failed()) return
       end if
-      allocate (rows(sc%n_runs), have(sc%n_runs))
-      have = .false.
+      call store_init(store, req%results_dir, sc%n_runs)
 
       if (req%collect) then
-         call read_rows(req%results_dir, sc, rows, have)
+         call store_scan(store, sc)
       else if (sc%st%method == method_optimize) then
-         call optimize(req, sc, rows, have, n_made, err, progress)
+         call optimize(req, sc, store, n_made, err, progress)
          if (err%failed()) return
          ! a search that converged before its budget: the runs it made
-         rows = rows(1:n_made)
-         have = have(1:n_made)
+         store%n = n_made
       else if (req%jobs > 1) then
          call run_workers(req, sc, err, progress)
          if (err%failed()) return
          if (req%n_shards > 0) return   ! a slice writes its rows only
-         call read_rows(req%results_dir, sc, rows, have)
+         call store_scan(store, sc)
       else
          do r = 1, sc%n_runs
             if (req%n_shards > 0) then
                if (mod(r - 1, req%n_shards) /= req%shard - 1) cycle
             end if
-            call one_run(req, sc, r, sc%points(:, r), rows(r), err)
+            call one_run(req, sc, r, sc%points(:, r), row, err)
             if (err%failed()) return
-            have(r) = .true.
-            if (present(progress)) call progress(count(have), bad_runs(rows, have), sc%n_runs, cpu_now())
+            call store_keep(store, row)
+            if (present(progress)) call progress(count(store%have), store%n_bad, sc%n_runs, cpu_now())
          end do
       end if
       if (req%n_shards > 0) return   ! a slice writes its rows only
-      call write_results(req, sc, rows, have, err)
+      call write_results(req, sc, store, err)
       if (err%failed()) return
-      if (.not. all(have)) then
-         call error_set(err, exit_study, 'the study has '//itoa(count(.not. have))//' run(s) without a result in ' &
-                        //req%results_dir//': '//missing_list(have)//' (run their shards, then --collect again)')
-      else if (bad_runs(rows, have) == sc%n_runs) then
+      if (.not. all(store%have(1:store%n))) then
+         call error_set(err, exit_study, 'the study has '//itoa(count(.not. store%have(1:store%n)))// &
+                        ' run(s) without a result in '//req%results_dir//': '//missing_list(store%have(1:store%n)) &
+                        //' (run their shards, then --collect again)')
+      else if (store%n_bad == store%n) then
          call error_set(err, exit_study, 'every run of the study failed or was invalid; the reasons are in the '// &
                         'table')
       end if
@@ -338,17 +348,57 @@ contains
       ok = ok .and. row%run == r
    end subroutine read_row
 
-   !> Every row the directory holds.
-   subroutine read_rows(dir, sc, rows, have)
+   !> An empty store of n runs' rows, in directory dir ('' = in memory).
+   subroutine store_init(store, dir, n)
+      type(row_store_t), intent(out) :: store
       character(len=*), intent(in) :: dir
+      integer, intent(in) :: n
+      store%dir = dir
+      store%n = n
+      allocate (store%have(n))
+      store%have = .false.
+      if (len(dir) == 0) allocate (store%rows(n))
+   end subroutine store_init
+
+   !> A run's row made: counted (and kept, without a directory, where the
+   !! row's file is already written).
+   subroutine store_keep(store, row)
+      type(row_store_t), intent(inout) :: store
+      type(run_row_t), intent(in) :: row
+      store%have(row%run) = .true.
+      if (row%status == status_failed .or. row%status == status_invalid) store%n_bad = store%n_bad + 1
+      if (len(store%dir) == 0) store%rows(row%run) = row
+   end subroutine store_keep
+
+   !> Every row the directory holds, counted.
+   subroutine store_scan(store, sc)
+      type(row_store_t), intent(inout) :: store
       type(study_case_t), intent(in) :: sc
-      type(run_row_t), intent(inout) :: rows(:)
-      logical, intent(inout) :: have(:)
+      type(run_row_t) :: row
       integer :: r
-      do r = 1, size(rows)
-         if (.not. have(r)) call read_row(dir, sc, r, rows(r), have(r))
+      logical :: ok
+      do r = 1, store%n
+         if (store%have(r)) cycle
+         call read_row(store%dir, sc, r, row, ok)
+         if (ok) call store_keep(store, row)
       end do
-   end subroutine read_rows
+   end subroutine store_scan
+
+   !> Run r's row, when it has one.
+   subroutine store_get(store, sc, r, row, ok)
+      type(row_store_t), intent(in) :: store
+      type(study_case_t), intent(in) :: sc
+      integer, intent(in) :: r
+      type(run_row_t), intent(out) :: row
+      logical, intent(out) :: ok
+      ok = store%have(r)
+      if (.not. ok) return
+      if (len(store%dir) == 0) then
+         row = store%rows(r)
+      else
+         call read_row(store%dir, sc, r, row, ok)
+      end if
+   end subroutine store_get
 
    !> Run r at values x, or its row from the directory when it is there
    !! (a resumed study); the row written at once, atomically.
@@ -406,8 +456,11 @@ contains
       integer :: k, j, errno, status, n_done, n_bad, r
       integer(8) :: c0, c1, rate
       type(run_row_t) :: row
-      logical :: ok
+      logical :: ok, seen(sc%n_runs)
       running = .false.
+      seen = .false.
+      n_done = 0
+      n_bad = 0
       call system_clock(c0, rate)
       do k = 1, req%jobs
          allocate (args(0))
@@ -448,11 +501,12 @@ contains
             end if
          end do
          if (present(progress)) then
-            n_done = 0
-            n_bad = 0
+            ! the rows that appeared since the last look
             do r = 1, sc%n_runs
+               if (seen(r)) cycle
                call read_row(req%results_dir, sc, r, row, ok)
                if (.not. ok) cycle
+               seen(r) = .true.
                n_done = n_done + 1
                if (row%status == status_failed .or. row%status == status_invalid) n_bad = n_bad + 1
             end do
@@ -470,17 +524,17 @@ contains
    !! exceeded; a failed or invalid run counts as the worst value. Runs are
    !! numbered in the order asked, so a resumed search replays the same
    !! points from its rows.
-   subroutine optimize(req, sc, rows, have, n_made, err, progress)
+   subroutine optimize(req, sc, store, n_made, err, progress)
       type(study_request_t), intent(in) :: req
       type(study_case_t), intent(in) :: sc
-      type(run_row_t), intent(inout) :: rows(:)
-      logical, intent(inout) :: have(:)
+      type(row_store_t), intent(inout) :: store
       integer, intent(out) :: n_made
       type(error_t), intent(inout) :: err
       procedure(progress_report), optional :: progress
       type(nm_t) :: nm
       real(wp), allocatable :: x(:), lo(:), hi(:), x0(:), asked(:, :)
-      logical :: done
+      type(run_row_t) :: row
+      logical :: done, ok
       integer :: r, n, k, ko, j
       n = size(sc%st%vars)
       allocate (lo(n), hi(n), x0(n), x(n))
@@ -505,17 +559,17 @@ contains
             if (.not. any(abs(asked(:, k) - x) > 0.0_wp)) j = k
          end do
          if (j > 0) then
-            rows(r) = rows(j)
-            rows(r)%run = r
-            rows(r)%reason = 'the values of run '//itoa(j)//': not run again'
-            call store_row(req, sc, rows(r), err)
+            call store_get(store, sc, j, row, ok)
+            row%run = r
+            row%reason = 'the values of run '//itoa(j)//': not run again'
+            call store_row(req, sc, row, err)
          else
-            call one_run(req, sc, r, x, rows(r), err)
+            call one_run(req, sc, r, x, row, err)
          end if
          if (err%failed()) return
-         have(r) = .true.
-         call nm%tell(penalised(sc%st, rows(r), ko))
-         if (present(progress)) call progress(count(have), bad_runs(rows, have), sc%n_runs, cpu_now())
+         call store_keep(store, row)
+         call nm%tell(penalised(sc%st, row, ko))
+         if (present(progress)) call progress(count(store%have), store%n_bad, sc%n_runs, cpu_now())
       end do
    end subroutine optimize
 
@@ -550,36 +604,41 @@ contains
    ! --- the outputs -------------------------------------------------------
 
    !> results.csv (with a results directory) and the study's listing.
-   subroutine write_results(req, sc, rows, have, err)
+   subroutine write_results(req, sc, store, err)
       type(study_request_t), intent(in) :: req
       type(study_case_t), intent(in) :: sc
-      type(run_row_t), intent(in) :: rows(:)
-      logical, intent(in) :: have(:)
+      type(row_store_t), intent(in) :: store
       type(error_t), intent(inout) :: err
       type(output_file_t) :: csv, lst
-      type(string_t), allocatable :: lines(:)
-      integer :: r, k
+      type(study_h5_t) :: h5
+      type(run_row_t) :: row
+      integer :: r
+      logical :: ok
       if (len(req%results_dir) > 0) then
          call csv%create_text(req%results_dir//'/results.csv', 'results table', err)
          if (err%failed()) return
          call csv%put_line(table_header(var_columns(sc%st), crit_columns(sc%st)))
-         do r = 1, size(rows)
-            if (have(r)) call csv%put_line(row_csv(rows(r), size(sc%st%crits)))
+         do r = 1, store%n
+            call store_get(store, sc, r, row, ok)
+            if (ok) call csv%put_line(row_csv(row, size(sc%st%crits)))
          end do
          call csv%commit(err)
          if (err%failed()) return
       end if
       if (len(req%h5_file) > 0) then
-         call write_study_h5(req%h5_file, title_of(sc%deck), deck_text(sc%deck), var_columns(sc%st), &
-                             var_units(sc), crit_columns(sc%st), crit_units(sc%st), rows, have, err)
+         call h5%open(req%h5_file, title_of(sc%deck), deck_text(sc%deck), var_columns(sc%st), var_units(sc), &
+                      crit_columns(sc%st), crit_units(sc%st), err)
+         do r = 1, store%n
+            if (err%failed()) exit
+            call store_get(store, sc, r, row, ok)
+            if (ok) call h5%add(row, err)
+         end do
+         call h5%close(err)
          if (err%failed()) return
       end if
-      lines = listing_lines(sc, rows, have)
       call lst%create_text(req%listing_file, 'listing', err)
       if (err%failed()) return
-      do k = 1, size(lines)
-         call lst%put_line(lines(k)%s)
-      end do
+      call write_listing(lst, sc, store)
       call lst%commit(err)
    end subroutine write_results
 
@@ -632,36 +691,37 @@ contains
 
    !> The study's listing: what was varied and how each run was judged,
    !! the table of runs, the counts, the best run.
-   function listing_lines(sc, rows, have) result(lines)
+   subroutine write_listing(lst, sc, store)
+      type(output_file_t), intent(inout) :: lst
       type(study_case_t), intent(in) :: sc
-      type(run_row_t), intent(in) :: rows(:)
-      logical, intent(in) :: have(:)
-      type(string_t), allocatable :: lines(:)
+      type(row_store_t), intent(in) :: store
+      type(run_row_t) :: row, best_row
+      logical :: ok
+      integer :: n_meet, n_status(4)
       character(len=:), allocatable :: line
       integer :: k, r, best, ko, n_cols, first, last, width
       type(string_t), allocatable :: vc(:), cc(:)
       !> the line printer's width; a column's least width
       integer, parameter :: line_width = 132, column_width = 13
-      allocate (lines(0))
-      call append_string(lines, ' hsri2d '//hsri2d_version//'   STUDY (report C.8: the program varies its own inputs)')
-      call append_string(lines, ' TITLE   '//trim(title_of(sc%deck)))
-      call append_string(lines, ' METHOD  '//method_word(sc%st%method)//';  runs '//itoa(sc%n_runs))
-      call append_string(lines, '')
-      call append_string(lines, ' VARIED FIELDS (deck units; the deck''s own value)')
+      call lst%put_line(' hsri2d '//hsri2d_version//'   STUDY (report C.8: the program varies its own inputs)')
+      call lst%put_line(' TITLE   '//trim(title_of(sc%deck)))
+      call lst%put_line(' METHOD  '//method_word(sc%st%method)//';  runs '//itoa(sc%n_runs))
+      call lst%put_line('')
+      call lst%put_line(' VARIED FIELDS (deck units; the deck''s own value)')
       do k = 1, size(sc%st%vars)
-         call append_string(lines, '   '//itoa(k)//'  '//sc%st%vars(k)%label//'  ('//sc%st%vars(k)%column//'),  '// &
+         call lst%put_line('   '//itoa(k)//'  '//sc%st%vars(k)%label//'  ('//sc%st%vars(k)%column//'),  '// &
                             'deck value '//num(sc%st%vars(k)%base))
       end do
-      call append_string(lines, '')
-      call append_string(lines, ' CRITERIA (a run meets the study''s limits when each is at most its limit)')
+      call lst%put_line('')
+      call lst%put_line(' CRITERIA (a run meets the study''s limits when each is at most its limit)')
       do k = 1, size(sc%st%crits)
          line = '   '//pad(trim(sc%st%crits(k)%word), 9)//' occupant '//itoa(sc%st%crits(k)%occupant)//'  '// &
                 trim(criterion_unit(criterion_index(sc%st%crits(k)%word)))
          if (sc%st%crits(k)%has_limit) line = line//'   limit '//num(sc%st%crits(k)%limit)
-         call append_string(lines, line)
+         call lst%put_line(line)
       end do
-      call append_string(lines, '')
-      call append_string(lines, ' RUNS')
+      call lst%put_line('')
+      call lst%put_line(' RUNS')
       vc = var_columns(sc%st)
       cc = crit_columns(sc%st)
       ! the varied fields, then the criteria, as many columns a panel as fit
@@ -683,54 +743,63 @@ contains
             line = line//' '//rpad(column_name(k), col_width(k))
          end do
          if (last == n_cols) line = line//'  limits'
-         call append_string(lines, line)
-         do r = 1, size(rows)
-            if (.not. have(r)) then
-               call append_string(lines, ' '//rpad(itoa(r), 6)//'  (no result)')
+         call lst%put_line(line)
+         do r = 1, store%n
+            call store_get(store, sc, r, row, ok)
+            if (.not. ok) then
+               call lst%put_line(' '//rpad(itoa(r), 6)//'  (no result)')
                cycle
             end if
-            line = ' '//rpad(itoa(r), 6)//'  '//pad(status_word(rows(r)%status), 9)
+            line = ' '//rpad(itoa(r), 6)//'  '//pad(status_word(row%status), 9)
             do k = first, last
-               line = line//' '//rpad(cell(rows(r), k), col_width(k))
+               line = line//' '//rpad(cell(row, k), col_width(k))
             end do
-            if (last == n_cols) line = line//'  '//trim(merge('meets', 'no   ', rows(r)%meets))
-            call append_string(lines, line)
-            if (first == 1 .and. len(rows(r)%reason) > 0) call append_string(lines, '          '//rows(r)%reason)
+            if (last == n_cols) line = line//'  '//trim(merge('meets', 'no   ', row%meets))
+            call lst%put_line(line)
+            if (first == 1 .and. len(row%reason) > 0) call lst%put_line('          '//row%reason)
          end do
          first = last + 1
-         if (first <= n_cols) call append_string(lines, '')
+         if (first <= n_cols) call lst%put_line('')
       end do
-      call append_string(lines, '')
-      call append_string(lines, ' SUMMARY  '//itoa(count(have))//' of '//itoa(size(rows))//' runs have a result: '// &
-                         itoa(count_status(status_completed))//' completed, '//itoa(count_status(status_ended))// &
-                         ' ended by an end test, '//itoa(count_status(status_failed))//' failed, '// &
-                         itoa(count_status(status_invalid))//' invalid; '//itoa(count(rows(:)%meets .and. have))// &
-                         ' meet the limits')
-      call statistics_lines(lines, rows, have, cc)
+      call lst%put_line('')
+      ! the counts, and the best run within the limits (one pass over the rows)
       ko = objective_column(sc%st)
+      n_status = 0
+      n_meet = 0
+      best = 0
+      do r = 1, store%n
+         call store_get(store, sc, r, row, ok)
+         if (.not. ok) cycle
+         if (row%status >= 1 .and. row%status <= 4) n_status(row%status) = n_status(row%status) + 1
+         if (.not. row%meets) cycle
+         n_meet = n_meet + 1
+         if (ko == 0 .or. .not. allocated(row%crit)) cycle
+         if (best == 0) then
+            best = r
+            best_row = row
+         else if (row%crit(ko) < best_row%crit(ko)) then
+            best = r
+            best_row = row
+         end if
+      end do
+      call lst%put_line(' SUMMARY  '//itoa(count(store%have(1:store%n)))//' of '//itoa(store%n)// &
+                        ' runs have a result: '//itoa(n_status(status_completed))//' completed, '// &
+                        itoa(n_status(status_ended))//' ended by an end test, '//itoa(n_status(status_failed))// &
+                        ' failed, '//itoa(n_status(status_invalid))//' invalid; '//itoa(n_meet)//' meet the limits')
+      call statistics_lines(lst, sc, store, cc)
       if (ko > 0) then
-         best = 0
-         do r = 1, size(rows)
-            if (.not. have(r) .or. .not. rows(r)%meets) cycle
-            if (.not. allocated(rows(r)%crit)) cycle
-            if (best == 0) then
-               best = r
-            else if (rows(r)%crit(ko) < rows(best)%crit(ko)) then
-               best = r
-            end if
-         end do
          if (best > 0) then
-            line = ' BEST     run '//itoa(best)//': '//trim(sc%st%objective)//' = '//num(rows(best)%crit(ko), 6)// &
+            line = ' BEST     run '//itoa(best)//': '//trim(sc%st%objective)//' = '//num(best_row%crit(ko), 6)// &
                    ' within the limits, at'
             do k = 1, size(vc)
-               line = line//' '//vc(k)%s//' = '//num(rows(best)%x(k), 6)
+               line = line//' '//vc(k)%s//' = '//num(best_row%x(k), 6)
             end do
-            call append_string(lines, line)
+            call lst%put_line(line)
          else
-            call append_string(lines, ' BEST     no run meets the limits')
+            call lst%put_line(' BEST     no run meets the limits')
          end if
       end if
-      call append_string(lines, ' TABLE    one row per run, every digit: results.csv in the results directory '// &
+      call lst%put_line(' TABLE    one row per run, every digit: results.csv in the results directory '// &
                          '(docs/modification.md)')
    contains
       pure integer function col_width(k)
@@ -761,74 +830,55 @@ contains
          end if
       end function cell
 
-      integer function count_status(s)
-         integer, intent(in) :: s
-         integer :: i
-         count_status = 0
-         do i = 1, size(rows)
-            if (have(i)) then
-               if (rows(i)%status == s) count_status = count_status + 1
-            end if
-         end do
-      end function count_status
-   end function listing_lines
+   end subroutine write_listing
 
    !> Each criterion's count, mean, standard deviation and range over the
    !! runs that have criteria (completed, or ended by an end test): with
    !! ENSEMBLE, how robust each output is to the inputs' small changes.
-   subroutine statistics_lines(lines, rows, have, cc)
-      type(string_t), allocatable, intent(inout) :: lines(:)
-      type(run_row_t), intent(in) :: rows(:)
-      logical, intent(in) :: have(:)
+   subroutine statistics_lines(lst, sc, store, cc)
+      type(output_file_t), intent(inout) :: lst
+      type(study_case_t), intent(in) :: sc
+      type(row_store_t), intent(in) :: store
       type(string_t), intent(in) :: cc(:)
-      real(wp) :: total, mean, sq, lo, hi
+      type(run_row_t) :: row
+      logical :: ok
+      real(wp) :: mean(size(cc)), m2(size(cc)), lo(size(cc)), hi(size(cc)), delta
       integer :: k, r, n
       if (size(cc) == 0) return
-      call append_string(lines, ' STATISTICS over the runs with criteria (completed or ended; standard deviation '// &
-                         'with n - 1)')
-      call append_string(lines, '   criterion          runs          mean     std. dev.       least     largest')
-      do k = 1, size(cc)
-         n = 0
-         total = 0.0_wp
-         lo = huge(1.0_wp)
-         hi = -huge(1.0_wp)
-         do r = 1, size(rows)
-            if (.not. have(r)) cycle
-            if (.not. allocated(rows(r)%crit)) cycle
-            n = n + 1
-            total = total + rows(r)%crit(k)
-            lo = min(lo, rows(r)%crit(k))
-            hi = max(hi, rows(r)%crit(k))
+      ! one pass over the rows (Welford's running mean and sum of squares)
+      n = 0
+      mean = 0.0_wp
+      m2 = 0.0_wp
+      lo = huge(1.0_wp)
+      hi = -huge(1.0_wp)
+      do r = 1, store%n
+         call store_get(store, sc, r, row, ok)
+         if (.not. ok) cycle
+         if (.not. allocated(row%crit)) cycle
+         n = n + 1
+         do k = 1, size(cc)
+            delta = row%crit(k) - mean(k)
+            mean(k) = mean(k) + delta/n
+            m2(k) = m2(k) + delta*(row%crit(k) - mean(k))
+            lo(k) = min(lo(k), row%crit(k))
+            hi(k) = max(hi(k), row%crit(k))
          end do
+      end do
+      call lst%put_line(' STATISTICS over the runs with criteria (completed or ended; standard deviation '// &
+                        'with n - 1)')
+      call lst%put_line('   criterion          runs          mean     std. dev.       least     largest')
+      do k = 1, size(cc)
          if (n == 0) then
-            call append_string(lines, '   '//pad(cc(k)%s, 13)//rpad('0', 9))
+            call lst%put_line('   '//pad(cc(k)%s, 13)//rpad('0', 9))
             cycle
          end if
-         mean = total/n
-         sq = 0.0_wp
-         do r = 1, size(rows)
-            if (.not. have(r)) cycle
-            if (.not. allocated(rows(r)%crit)) cycle
-            sq = sq + (rows(r)%crit(k) - mean)**2
-         end do
-         sq = sqrt(sq/max(n - 1, 1))
-         call append_string(lines, '   '//pad(cc(k)%s, 13)//rpad(itoa(n), 9)//' '//rpad(num(mean, 6), 13)//' '// &
-                            rpad(num(sq, 6), 13)//' '//rpad(num(lo, 6), 11)//' '//rpad(num(hi, 6), 11))
+         call lst%put_line('   '//pad(cc(k)%s, 13)//rpad(itoa(n), 9)//' '//rpad(num(mean(k), 6), 13)//' '// &
+                           rpad(num(sqrt(m2(k)/max(n - 1, 1)), 6), 13)//' '//rpad(num(lo(k), 6), 11)//' '// &
+                           rpad(num(hi(k), 6), 11))
       end do
    end subroutine statistics_lines
 
    ! --- small helpers -----------------------------------------------------
-
-   integer function bad_runs(rows, have) result(n)
-      type(run_row_t), intent(in) :: rows(:)
-      logical, intent(in) :: have(:)
-      integer :: r
-      n = 0
-      do r = 1, size(rows)
-         if (.not. have(r)) cycle
-         if (rows(r)%status == status_failed .or. rows(r)%status == status_invalid) n = n + 1
-      end do
-   end function bad_runs
 
    function missing_list(have) result(s)
       logical, intent(in) :: have(:)

@@ -5,7 +5,8 @@
 !! /study/values (a column per varied field, deck units) and
 !! /study/criteria (a column per criterion; NaN for a run without them).
 !! The reasons are in results.csv and the listing. Written under a
-!! temporary name and put in place at the end (output_files), as a run's.
+!! temporary name and put in place at the end (output_files), as a run's;
+!! row by row, so that no row is held in memory.
 module study_h5
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: wp
@@ -17,57 +18,77 @@ module study_h5
    implicit none
    private
 
-   public :: write_study_h5
+   public :: study_h5_t
+
+   !> The file being written, row by row (no row is held).
+   type :: study_h5_t
+      private
+      type(output_file_t) :: target
+      type(history_file_t) :: h5
+      integer :: id_run = 0, id_status = 0, id_meets = 0, id_t = 0, id_x = 0, id_c = 0
+      integer :: n_crit = 0
+   contains
+      procedure :: open => study_h5_open
+      procedure :: add => study_h5_add
+      procedure :: close => study_h5_close
+   end type study_h5_t
 
 contains
 
-   !> The rows (those with have) to the HDF5 file at path.
-   subroutine write_study_h5(path, title, deck_lines, var_columns, var_units, crit_columns, crit_units, rows, have, &
-                             err)
+   !> Create the file at path (under a temporary name): the root
+   !! attributes, /input/deck (deck_lines), the /study datasets' columns.
+   subroutine study_h5_open(this, path, title, deck_lines, var_columns, var_units, crit_columns, crit_units, err)
+      class(study_h5_t), intent(inout) :: this
       character(len=*), intent(in) :: path, title
       character(len=*), intent(in) :: deck_lines(:)
       type(string_t), intent(in) :: var_columns(:), var_units(:), crit_columns(:), crit_units(:)
-      type(run_row_t), intent(in) :: rows(:)
-      logical, intent(in) :: have(:)
       type(error_t), intent(inout) :: err
-      type(output_file_t) :: target
-      type(history_file_t) :: h5
-      integer :: id_run, id_status, id_meets, id_t, id_x, id_c, r
-      real(wp), allocatable :: c(:)
-      call target%reserve(path, 'HDF5 file', err)
+      this%n_crit = size(crit_columns)
+      call this%target%reserve(path, 'HDF5 file', err)
       if (err%failed()) return
-      call h5%open(target%writing_path(), title, deck_lines, err)
-      id_x = 0
-      id_c = 0
-      if (.not. err%failed()) call h5%add_series('study/run', ['run'], ['-'], 'the run''s number', id_run, err)
-      if (.not. err%failed()) call h5%add_series('study/status', ['status'], ['-'], &
-         '1 completed, 2 ended by an end test (C.7), 3 failed numerically, 4 invalid deck', id_status, err)
-      if (.not. err%failed()) call h5%add_series('study/meets_limits', ['meets_limits'], ['-'], &
-         '1 when every criterion with a limit is within it', id_meets, err)
-      if (.not. err%failed()) call h5%add_series('study/t_end', ['t_end'], ['s'], 'when the run ended', id_t, err)
-      if (.not. err%failed() .and. size(var_columns) > 0) call h5%add_series('study/values', names(var_columns), &
-         names(var_units), 'the varied fields'' values as run (deck units)', id_x, err, rank=2)
-      if (.not. err%failed() .and. size(crit_columns) > 0) call h5%add_series('study/criteria', names(crit_columns), &
-         names(crit_units), 'the criteria of each run (NaN: a run without them)', id_c, err, rank=2)
-      allocate (c(size(crit_columns)))
-      do r = 1, size(rows)
-         if (err%failed()) exit
-         if (.not. have(r)) cycle
-         call h5%append(id_run, [real(rows(r)%run, wp)], err)
-         call h5%append(id_status, [real(rows(r)%status, wp)], err)
-         call h5%append(id_meets, [merge(1.0_wp, 0.0_wp, rows(r)%meets)], err)
-         call h5%append(id_t, [rows(r)%t_end], err)
-         if (id_x > 0) call h5%append(id_x, rows(r)%x, err)
-         if (id_c > 0) then
-            c = ieee_value(1.0_wp, ieee_quiet_nan)
-            if (allocated(rows(r)%crit)) c = rows(r)%crit
-            call h5%append(id_c, c, err)
-         end if
-      end do
-      call h5%close(err)
-      call deliver_outputs(err, target)
-   end subroutine write_study_h5
+      call this%h5%open(this%target%writing_path(), title, deck_lines, err)
+      if (.not. err%failed()) call this%h5%add_series('study/run', ['run'], ['-'], 'the run''s number', &
+         this%id_run, err)
+      if (.not. err%failed()) call this%h5%add_series('study/status', ['status'], ['-'], &
+         '1 completed, 2 ended by an end test (C.7), 3 failed numerically, 4 invalid deck', this%id_status, err)
+      if (.not. err%failed()) call this%h5%add_series('study/meets_limits', ['meets_limits'], ['-'], &
+         '1 when every criterion with a limit is within it', this%id_meets, err)
+      if (.not. err%failed()) call this%h5%add_series('study/t_end', ['t_end'], ['s'], 'when the run ended', &
+         this%id_t, err)
+      if (.not. err%failed() .and. size(var_columns) > 0) call this%h5%add_series('study/values', &
+         names(var_columns), names(var_units), 'the varied fields'' values as run (deck units)', this%id_x, err, &
+         rank=2)
+      if (.not. err%failed() .and. size(crit_columns) > 0) call this%h5%add_series('study/criteria', &
+         names(crit_columns), names(crit_units), 'the criteria of each run (NaN: a run without them)', this%id_c, &
+         err, rank=2)
+   end subroutine study_h5_open
 
+   !> One run's row.
+   subroutine study_h5_add(this, row, err)
+      class(study_h5_t), intent(inout) :: this
+      type(run_row_t), intent(in) :: row
+      type(error_t), intent(inout) :: err
+      real(wp) :: c(this%n_crit)
+      if (err%failed()) return
+      call this%h5%append(this%id_run, [real(row%run, wp)], err)
+      call this%h5%append(this%id_status, [real(row%status, wp)], err)
+      call this%h5%append(this%id_meets, [merge(1.0_wp, 0.0_wp, row%meets)], err)
+      call this%h5%append(this%id_t, [row%t_end], err)
+      if (this%id_x > 0) call this%h5%append(this%id_x, row%x, err)
+      if (this%id_c > 0) then
+         c = ieee_value(1.0_wp, ieee_quiet_nan)
+         if (allocated(row%crit)) c = row%crit
+         call this%h5%append(this%id_c, c, err)
+      end if
+   end subroutine study_h5_add
+
+   !> Close the file and put it in place of its target (removed on a failure).
+   subroutine study_h5_close(this, err)
+      class(study_h5_t), intent(inout) :: this
+      type(error_t), intent(inout) :: err
+      if (this%h5%is_open()) call this%h5%close(err)
+      call deliver_outputs(err, this%target)
+   end subroutine study_h5_close
    !> Names as fixed-length strings (history_file_t's columns).
    function names(list) result(out)
       type(string_t), intent(in) :: list(:)
