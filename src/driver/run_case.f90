@@ -84,8 +84,9 @@ contains
       end do
       if (err%code /= exit_io) call deck_finish(deck, err)
       if (.not. err%failed() .and. deck%group(g_study)%present) &
-         call error_set(err, exit_usage, 'a study deck (*STUDY, report C.8) is run from regular files, not from '// &
-                        'standard input, a pipe or a FIFO: name the deck files on the command line (docs/modification.md)')
+         call error_set(err, exit_usage, 'a study deck (*STUDY, report C.8) is run from regular files, as a study: '// &
+                        'not from standard input, a pipe or a FIFO, nor by --refine or --outputs, which take a single '// &
+                        'run''s deck (docs/modification.md)')
       if (.not. err%failed()) call build_model(deck, m, err)
       if (.not. err%failed()) m%warnings = [m%warnings, initial_warnings(m)]
    end subroutine read_case_deck

@@ -96,6 +96,9 @@ expect_status 2 $? "a study on standard input alone"
 cat "$base" "$studies/oat.deck" | "$exe" - >/dev/null 2>err
 expect_status 1 $? "a study on standard input"
 expect_text err 'a study deck \(\*STUDY, report C.8\) is run from regular files' "a study on standard input"
+"$exe" --refine "$decks/study_restraint.deck" >/dev/null 2>err
+expect_status 1 $? "--refine on a study deck"
+expect_text err 'nor by --refine or --outputs' "--refine on a study deck"
 
 # ENSEMBLE: the deck, then seeded perturbations within the field's range;
 # the listing's statistics of each criterion; the same seed, the same runs
