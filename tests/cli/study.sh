@@ -100,6 +100,15 @@ expect_text err 'a study deck \(\*STUDY, report C.8\) is run from regular files'
 expect_status 1 $? "--refine on a study deck"
 expect_text err 'nor by --refine or --outputs' "--refine on a study deck"
 
+# progress on standard error only when it is a terminal (script(1) gives one)
+"$exe" --results quiet "$base" "$studies/lhs.deck" -o /dev/null 2>err || fail "the hypercube failed: $(cat err)"
+[ ! -s err ] || fail "progress written where standard error is not a terminal: $(cat err)"
+if command -v script >/dev/null; then
+    script -qec "$exe --jobs 2 --results tty $base $studies/lhs.deck -o /dev/null" /dev/null >tty.out 2>&1 \
+        || fail "the study on a terminal failed: $(cat tty.out)"
+    expect_text tty.out 'hsri2d: study: 4 of 4 runs done, 0 failed, 0 remaining' "progress on a terminal"
+fi
+
 # ENSEMBLE: the deck, then seeded perturbations within the field's range;
 # the listing's statistics of each criterion; the same seed, the same runs
 "$exe" --results ens "$base" "$studies/ensemble.deck" >ens.lst 2>err || fail "the ensemble failed: $(cat err)"
