@@ -1104,7 +1104,8 @@ contains
       f = deck%spec(gid)%field(k)
       card = deck%group(gid)%card(ic)
       e = echo_of(deck, card%source, card%line)
-      c = deck%echo(e)%text
+      c = ' '
+      if (e > 0) c = deck%echo(e)%text
       w = f%last_col - f%first_col + 1
       if (f%kind == kind_int) then
          t = itoa(nint(x))
@@ -1121,6 +1122,7 @@ contains
       call parse_field(deck, err, f, where//' (varied)', card%source, card%line, c, card, k, ok)
       if (.not. ok) return
       deck%group(gid)%card(ic) = card
+      if (e == 0) return   ! (every card read has its echo line)
       deck%echo(e)%text = trim(c)
       deck%echo(e)%varied = .true.
    end subroutine deck_set_field

@@ -8,8 +8,9 @@
 !! Nothing a run does ends the study: a run that fails is a row that says so.
 module study_driver
    use, intrinsic :: iso_c_binding, only: c_long
+   use, intrinsic :: iso_fortran_env, only: int64
    use kinds, only: wp
-   use error_handling, only: error_t, error_set, error_append, exit_usage, exit_io, exit_study
+   use error_handling, only: error_t, error_set, exit_usage, exit_io, exit_study
    use strings, only: itoa, num, upper
    use text_io, only: string_t, append_string, read_text_file, standard_input_path
    use posix_files, only: file_info_t, posix_file_info, posix_make_dir, posix_error_text, kind_regular
@@ -19,6 +20,8 @@ module study_driver
    use run_case_mod, only: builtin_deck_name, deck_text, pulse_file
    use model, only: model_t
    use model_builder, only: build_model
+   use equations_of_motion, only: crash_system_t, system_build
+   use model_origin, only: deck_origin, problem
    use output_files, only: output_file_t, check_output_paths
    use study_h5, only: study_h5_t
    use version_info, only: hsri2d_version
@@ -191,7 +194,7 @@ contains
       type(error_t), intent(inout) :: err
       type(model_t), allocatable :: m
       type(study_variable_t), allocatable :: vars(:)
-      integer :: k
+      integer :: k, n_occ
       allocate (m)
       call deck_init(sc%deck)
       do k = 1, size(req%decks)
@@ -212,13 +215,16 @@ contains
       call build_model(sc%deck, m, err)
       call read_study(sc%deck, sc%st, err)
       if (err%failed()) return
+      ! a deck's model has one occupant (NBODY is its position, not a count)
+      n_occ = occupants_of(m)
       do k = 1, size(sc%st%crits)
-         if (sc%st%crits(k)%occupant > m%options%nbody .and. m%options%nbody > 0) then
-            call error_append(err, exit_usage, '*CRITERIA '//trim(sc%st%crits(k)%word)//': the deck has '// &
-                              itoa(m%options%nbody)//' occupant(s); there is no occupant '// &
-                              itoa(sc%st%crits(k)%occupant))
-         end if
+         if (sc%st%crits(k)%occupant > n_occ) call problem(deck_origin(sc%deck), err, sc%st%crits(k)%card, &
+            'the deck''s model has '//itoa(n_occ)//' occupant(s); there is no occupant '// &
+            itoa(sc%st%crits(k)%occupant), 'OCC')
       end do
+      if (sc%st%objective_occupant > n_occ .and. len_trim(sc%st%objective) > 0) &
+         call problem(deck_origin(sc%deck), err, sc%st%card, 'the deck''s model has '//itoa(n_occ)// &
+                      ' occupant(s); there is no occupant '//itoa(sc%st%objective_occupant), 'OCC')
       if (err%failed()) return
       sc%identity = study_text(sc%deck)
       sc%pulse_file = pulse_file(sc%deck, m)
@@ -278,8 +284,6 @@ contains
       else if (sc%st%method == method_optimize .and. (req%jobs > 1 .or. req%n_shards > 0)) then
          call error_set(err, exit_usage, 'METHOD OPTIMIZE makes one run after another (each depends on the '// &
                         'last): --jobs and --shard apply to the other methods')
-      else if (req%n_shards > 0 .and. req%shard > sc%n_runs) then
-         continue   ! an empty slice: nothing to do, and not an error
       end if
    end subroutine check_request
 
@@ -454,7 +458,7 @@ contains
       logical :: running(req%jobs), done
       type(string_t), allocatable :: args(:)
       integer :: k, j, errno, status, n_done, n_bad, r
-      integer(8) :: c0, c1, rate
+      integer(int64) :: c0, c1, rate
       type(run_row_t) :: row
       logical :: ok, seen(sc%n_runs)
       running = .false.
@@ -879,6 +883,15 @@ contains
    end subroutine statistics_lines
 
    ! --- small helpers -----------------------------------------------------
+
+   !> The occupants of model m's system.
+   integer function occupants_of(m) result(n)
+      type(model_t), intent(in) :: m
+      type(crash_system_t), allocatable :: sys
+      allocate (sys)
+      call system_build(m, sys)
+      n = size(sys%occupants)
+   end function occupants_of
 
    function missing_list(have) result(s)
       logical, intent(in) :: have(:)

@@ -47,6 +47,7 @@ module study_input
       integer :: occupant = 1
       logical :: has_limit = .false.
       real(wp) :: limit = 0.0_wp
+      type(card_t) :: card                   !< where it came from (none: a default criterion)
    end type study_crit_t
 
    !> A study as its cards give it.
@@ -58,6 +59,7 @@ module study_input
       character(len=8) :: objective = ' '    !< OPTIMIZE: the criterion minimised
       integer :: objective_occupant = 1
       integer :: keep = keep_none
+      type(card_t) :: card                   !< the *STUDY card, for messages
       type(study_var_t), allocatable :: vars(:)
       type(study_crit_t), allocatable :: crits(:)
    end type study_t
@@ -92,6 +94,7 @@ contains
          return   ! (the reader reported the missing card)
       end if
       c = deck%group(g_study)%card(1)
+      st%card = c
       st%method = nint(c%value(1))
       st%runs = nint(c%value(2))
       st%seed = nint(c%value(3))
@@ -154,6 +157,7 @@ contains
                st%crits(i)%occupant = nint(g%card(i)%value(2))
                st%crits(i)%has_limit = g%card(i)%given(3)
                st%crits(i)%limit = g%card(i)%value(3)
+               st%crits(i)%card = g%card(i)
             end do
          end associate
       else

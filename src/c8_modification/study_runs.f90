@@ -15,9 +15,9 @@ module study_runs
    use model, only: model_t
    use model_builder, only: build_model
    use simulation, only: run_simulation, initial_warnings
-   use run_case_mod, only: write_case
+   use run_case_mod, only: write_case, accuracy_notes
    use run_summary, only: run_summary_t
-   use end_tests, only: end_time, end_failure, end_energy, end_injury, end_rest, end_contact
+   use end_tests, only: end_time, end_injury, end_rest, end_contact
    use study_input, only: study_t
    use study_criteria, only: criterion_index, criterion_value
    use study_table, only: run_row_t, status_completed, status_ended, status_failed, status_invalid
@@ -60,7 +60,7 @@ contains
       type(run_summary_t) :: res
       type(error_t) :: err
       type(string_t), allocatable :: notes(:)
-      integer :: k
+      integer :: k, j
       allocate (deck, m)
       row%run = run
       row%x = x
@@ -70,7 +70,7 @@ contains
       if (.not. err%failed()) call build_model(deck, m, err)
       if (err%failed()) then
          row%status = status_invalid
-         row%reason = err%message
+         row%reason = message_of(err, 'the variation is not a valid deck')
          return
       end if
       m%warnings = [m%warnings, initial_warnings(m)]
@@ -86,21 +86,25 @@ contains
       case (end_injury, end_rest, end_contact)
          row%status = status_ended
          row%reason = 'ended by the '//end_words(res%end_reason)//' end test (C.7) at t = '//num(res%t_end)//' s'
-      case (end_failure, end_energy)
-         row%status = status_failed
-         row%reason = err%message
-         return
       case default
+         ! end_failure, end_energy: the integration failed (exit 3's message)
          row%status = status_failed
-         row%reason = err%message
+         row%reason = message_of(err, 'the run ended without a result')
          return
       end select
       if (err%failed()) then
          ! the run's own outputs could not be written: the run is not a result
          row%status = status_failed
-         row%reason = err%message
+         row%reason = message_of(err, 'the run''s outputs could not be written')
          return
       end if
+      ! what the run says of its own accuracy (a step too large, ...): in
+      ! the row, as the program warns of it after a run (nothing silently wrong)
+      notes = accuracy_notes(m, res)
+      do j = 1, size(notes)
+         if (len(row%reason) > 0) row%reason = row%reason//'; '
+         row%reason = row%reason//'warning: '//notes(j)%s
+      end do
       allocate (row%crit(size(st%crits)))
       row%meets = .true.
       do k = 1, size(st%crits)
@@ -108,6 +112,17 @@ contains
          if (st%crits(k)%has_limit) row%meets = row%meets .and. row%crit(k) <= st%crits(k)%limit
       end do
    end subroutine study_run
+
+   !> err's message, or `otherwise` where it has none.
+   pure function message_of(err, otherwise) result(m)
+      type(error_t), intent(in) :: err
+      character(len=*), intent(in) :: otherwise
+      character(len=:), allocatable :: m
+      m = otherwise
+      if (allocated(err%message)) then
+         if (len(err%message) > 0) m = err%message
+      end if
+   end function message_of
 
    pure function end_words(reason) result(w)
       integer, intent(in) :: reason

@@ -7,6 +7,7 @@
 !! read back (a resumed optimisation) gives the same bits, and any number
 !! of worker processes write the same bytes.
 module study_table
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
    use kinds, only: wp
    use strings, only: itoa, read_real, read_int
    use text_io, only: string_t, append_string
@@ -142,7 +143,13 @@ contains
       character(len=16) :: fmt
       real(wp) :: back
       integer :: d, ios
-      if (.not. abs(x) > 0.0_wp) then
+      if (ieee_is_nan(x)) then
+         s = 'NaN'   ! (never a criterion: read_case checks each one's occupant)
+         return
+      else if (.not. ieee_is_finite(x)) then
+         s = trim(merge('-Infinity', 'Infinity ', x < 0.0_wp))
+         return
+      else if (.not. abs(x) > 0.0_wp) then
          s = '0'
          return
       end if

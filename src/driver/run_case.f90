@@ -33,7 +33,7 @@ module run_case_mod
    private
 
    public :: run_request_t, run_case, write_case, read_case_deck, builtin_deck_name, describe_outputs, refine_case
-   public :: deck_text, pulse_file
+   public :: deck_text, pulse_file, accuracy_notes
 
    !> The outputs of a case: the listing, and the HDF5 file when asked for.
    type, extends(output_sink_t) :: case_sink_t
@@ -166,9 +166,6 @@ contains
       type(sink_list_t) :: sinks
       type(run_t) :: run
       type(output_file_t) :: h5_file_out
-      type(string_t), allocatable :: accuracy(:)
-      character(len=:), allocatable :: who
-      integer :: o, k
 
       allocate (notes(0), sink)
       call sink%listing%lst%create_text(listing_file, 'listing', err)
@@ -215,6 +212,21 @@ contains
       if (io_err%failed()) call error_set(err, io_err%code, io_err%message)
       ! a fixed step too large for the deck, a corrector that did not
       ! converge (docs/accuracy.md): said in the listing's summary too
+      notes = accuracy_notes(m, res)
+   end subroutine write_case
+
+   !> What a finished run of model m says of its own accuracy (docs/accuracy.md):
+   !! a fixed step too large, a widened friction ramp, a corrector that did
+   !! not converge, an energy balance that failed while the deck said to go
+   !! on. The program's warnings, and a study's rows (C.8).
+   function accuracy_notes(m, res) result(notes)
+      type(model_t), intent(in) :: m
+      type(run_summary_t), intent(in) :: res
+      type(string_t), allocatable :: notes(:)
+      type(string_t), allocatable :: accuracy(:)
+      character(len=:), allocatable :: who
+      integer :: o, k
+      allocate (notes(0))
       do o = 1, size(res%occ)
          who = ''
          if (size(res%occ) > 1) who = 'occupant '//itoa(o)//': '
@@ -238,7 +250,7 @@ contains
             'the energy balance failed its tolerance at t = '//num(res%occ(o)%t_flagged)//' s (*NUMERICS ' &
             //'EBTOL; EBFAIL = CONTINUE ran on): the results are not trustworthy')
       end do
-   end subroutine write_case
+   end function accuracy_notes
 
    subroutine case_begin(this, sys, reg, first, err)
       class(case_sink_t), intent(inout) :: this

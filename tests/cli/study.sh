@@ -86,6 +86,10 @@ printf '*STUDY\n      GRID\n*VARY\n 1 BELTS             1 SLACK\n*VALUES\n 1    
 "$exe" "$base" bad_value.deck >/dev/null 2>err
 expect_status 2 $? "a value outside its field's range"
 expect_text err 'bad_value.deck:6: \*VALUES card 1, field V2 \(columns 13-22\): value -0.5 is outside the range of \*BELTS 1 SLACK' "a value outside its field's range"
+printf '*STUDY\n      GRID\n*VARY\n 1 BELTS             1 SLACK      0.1       0.2         2\n*CRITERIA\n     HIC15         2\n' >bad_occupant.deck
+"$exe" "$base" bad_occupant.deck >/dev/null 2>err
+expect_status 2 $? "a criterion of an occupant the model does not have"
+expect_text err 'bad_occupant.deck:6: \*CRITERIA card 1, field OCC \(columns 13-22\): the deck.s model has 1 occupant\(s\); there is no occupant 2' "a criterion's occupant"
 printf '*STUDY\n      GRID\n*VARY\n 1 SEATS             1 K\n' >bad_group.deck
 "$exe" "$base" bad_group.deck >/dev/null 2>err
 expect_status 2 $? "a group that does not exist"
@@ -108,6 +112,11 @@ if command -v script >/dev/null; then
         || fail "the study on a terminal failed: $(cat tty.out)"
     expect_text tty.out 'hsri2d: study: 4 of 4 runs done, 0 failed, 0 remaining' "progress on a terminal"
 fi
+
+# a run the program cannot vouch for carries its warning in its row
+"$exe" --results coarse "$base" "$studies/coarse_step.deck" >coarse.lst 2>err || fail "the coarse study failed: $(cat err)"
+expect_text coarse/results.csv '^1,completed,2,0.0025,.*"warning: .*DT = 0.0025 s \(\*TIME\) is too large for this deck' "the row's warning"
+expect_text coarse.lst 'warning: .*is too large for this deck' "the listing's warning"
 
 # ENSEMBLE: the deck, then seeded perturbations within the field's range;
 # the listing's statistics of each criterion; the same seed, the same runs
