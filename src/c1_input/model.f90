@@ -112,6 +112,10 @@ module model
       !! card sets it: off only in the tests that show what location buys
       !! (tests/test_hard_*.pf, issue 15 section 4)
       logical :: locate_switches = .true.
+      !> the head's forward excursion kept on accepted steps (C.8's HEADX);
+      !! no card sets it: a study asks for it when it judges by HEADX, so a
+      !! run that does not pays nothing for it
+      logical :: head_excursion = .false.
    end type options_section_t
 
    !> Time controls (C.3, C.6, C.7, *TIME).

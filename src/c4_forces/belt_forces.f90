@@ -394,6 +394,8 @@ contains
                aux_rate(ch%start_aux) = ieee_value(0.0_wp, ieee_quiet_nan)
                cycle
             end if
+            ! C.4.e: the webbing's tension F along the belt's direction g (its
+            ! generalized force, errata BE-1; the work rate of D-B4 and E6-2)
             b = b - sp%force*g
             ! belt_chain_rates(ch, sp, s_dot - dot_product(g, st%zdot), aux_rate),
             ! its three lines: called from belt_add_forces alone, it is inlined

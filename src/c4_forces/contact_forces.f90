@@ -569,6 +569,10 @@ contains
       aux_rate(this%aux_friction:this%aux_supplied) = 0.0_wp
       if (.not. ps%split%force > 0.0_wp) return
       ! J_C^T n and J_C^T t, the generalized forces of unit forces at C (D-C23)
+      ! C.4.f: P along the surface's normal and the friction P_t along its
+      ! tangent, as generalized forces J_C^T n, J_C^T t (errata D-C23); the
+      ! work the friction dissipates and the moving surface supplies (C.6
+      ! with E6-2, docs/contacts.md 4.7), as pair_add_forces
       b_n = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%n_in)
       b_t = 0.0_wp
       if (abs(ps%p_t) > 0.0_wp) b_t = point_force_generalized(this%body, st%z, arc_segment(this%i), ps%c_in, ps%t_in)

@@ -112,6 +112,7 @@ contains
       if (pf) then
          call link_cos_sin(st%z(1:n_seg), c, s)
          p = cg_positions(this%body, st%z, c, s)
+         ! C.4.b: the weight m_i g of each segment at its centre of gravity
          do i = 1, n_seg
             call point_force_add(list, i, p(:, i), [0.0_wp, -this%body%mass(i)*this%g], across_bone=.false.)
          end do

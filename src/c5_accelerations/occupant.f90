@@ -361,6 +361,8 @@ contains
          ! slide in line in occupant_rhs, at every evaluation)
          call gather_slides(occ, st, y, set)
          if (set%n > 0) call set_multipliers(occ, st, zdd, set, info)
+         ! the sliding constraints' multipliers (issue 15, errata D-4b): z'' and
+         ! the work they dissipate and supply, as occupant_rhs
          if (set%n > 0 .and. info == 0) then
             do c = 1, set%n
                zdd = zdd + set%y_cols(:, c)*set%lam_clipped(c)

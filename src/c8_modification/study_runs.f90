@@ -74,6 +74,8 @@ contains
          return
       end if
       m%warnings = [m%warnings, initial_warnings(m)]
+      ! the head's excursion is kept only where the study judges by it
+      m%options%head_excursion = any(st%crits(:)%word == 'HEADX')
       if (len(listing_file) > 0 .or. len(h5_file) > 0) then
          call write_case(deck, m, listing_file, h5_file, err, res, notes)
       else

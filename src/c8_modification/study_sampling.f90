@@ -51,9 +51,10 @@
 !! integer, halves away from zero (ANINT), after any clipping: its bounds
 !! should be integers. RANDOM and LHS values are kept within [LOW, HIGH]
 !! against the rounding of the arithmetic. The same inputs give the same
-!! points bit for bit on every compiler and platform: the stream is exact
-!! integer arithmetic and each value is one correctly rounded operation
-!! chain; ENSEMBLE's normal deviates use SQRT and LOG only in the tails
+!! points bit for bit with the same build: the stream is exact integer
+!! arithmetic on every compiler and platform, but a compiler that fuses a
+!! multiply and an add (FMA, gfortran's default where the target has it)
+!! may round LOW + (HIGH - LOW) u differently on another machine; ENSEMBLE's normal deviates use SQRT and LOG only in the tails
 !! (u < 0.02425 or u > 0.97575), where a platform's LOG could differ in the
 !! last bit.
 !!
@@ -111,7 +112,7 @@ module study_sampling
 
    !> A random stream: MRG32k3a's six-integer state (x1(n-3), x1(n-2),
    !! x1(n-1), then the same of x2), in exact int64 arithmetic (no product
-   !! exceeds 2^49), so every compiler and platform draws the same numbers.
+   !! reaches 2^53), so every compiler and platform draws the same numbers.
    !! Unseeded, it is stream 1 (12345 six times).
    type :: rng_t
       private

@@ -90,7 +90,8 @@ contains
       end if
       tr = stepper_traits(this%stepper)
       this%t = 0.0_wp
-      call this%books%init(this%sys, this%t, this%y, m%numerics, m%vehicle, this%summary)
+      call this%books%init(this%sys, this%t, this%y, m%numerics, m%vehicle, this%summary, &
+                           head_excursion=m%options%head_excursion)
       total0 = this%summary%occ%e_total0    ! (the energy totals the balances are measured from)
       call this%schedule%init(m%time, tr, m%vehicle, this%sys, total0, m%options%locate_switches)
       call this%stepper%init(this%sys, this%t, this%y, why)

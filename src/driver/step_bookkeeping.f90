@@ -7,6 +7,7 @@
 !! (its NEND, rest limits, Table 5 limits). Nothing is allocated here at a
 !! step: the room it needs is reserved by books_init.
 module step_bookkeeping
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: wp, i8, g_std
    use acceleration_criteria, only: criteria_new
    use error_handling, only: error_t, error_set, error_prefix, exit_numerical
@@ -69,6 +70,8 @@ module step_bookkeeping
       !> some effect may say so (effect_t%reports_unchanged): else the flags
       !! stay false and cost nothing
       logical :: tracks_unchanged = .false.
+      !> the head's excursion is kept (model_t%options%head_excursion)
+      logical :: head_excursion = .false.
    contains
       procedure :: init => books_init
       procedure :: accept => books_accept
@@ -81,17 +84,19 @@ contains
    !! summary (the energy totals the balance is measured from, the initial
    !! joint angles the ranges start from, the criteria), and the room the
    !! accepted steps need.
-   subroutine books_init(this, sys, t, y, numerics, vehicle, summary)
+   subroutine books_init(this, sys, t, y, numerics, vehicle, summary, head_excursion)
       class(step_books_t), intent(out) :: this
       type(crash_system_t), intent(in) :: sys
       real(wp), intent(in) :: t, y(:)
       type(numerics_section_t), intent(in) :: numerics
       type(vehicle_section_t), intent(in) :: vehicle
       type(run_summary_t), intent(inout) :: summary
+      logical, intent(in), optional :: head_excursion   !< keep the head's excursion (C.8's HEADX)
       integer :: o, i, n_occ
       n_occ = size(sys%occupants)
       this%numerics = numerics
       this%t_accepted = t
+      if (present(head_excursion)) this%head_excursion = head_excursion
       allocate (this%y_moved(size(y)), this%f_moved(size(y)))
       this%pulse_tabulated = allocated(vehicle%pulse_vel%t) .or. allocated(vehicle%pulse_pos%t)
       allocate (summary%occ(n_occ), this%end_state(n_occ), this%injured(n_occ), this%f_accepted(size(y)))
@@ -115,6 +120,8 @@ contains
          summary%occ(o)%head_x0 = head_interior_x(sys%occupants(o)%body, this%st%z, this%st%c, this%st%s, &
                                                   this%st%vehicle%pos)
          summary%occ(o)%head_excursion = extreme_t(0.0_wp, t)
+         ! not kept: not a number, never a silent 0 (C.8's HEADX asks for it)
+         if (.not. this%head_excursion) summary%occ(o)%head_excursion%value = ieee_value(0.0_wp, ieee_quiet_nan)
          do i = 1, n_joint
             summary%occ(o)%joint_min(i) = extreme_t(relative_angle(this%st%z, i), 0.0_wp)
             summary%occ(o)%joint_max(i) = summary%occ(o)%joint_min(i)
@@ -186,12 +193,14 @@ contains
       do o = 1, size(sys%occupants)
          undesired = .false.
          associate (occ => sys%occupants(o), os => summary%occ(o), st => this%st)
-            ! the vehicle's state (for the head's excursion; and the
-            ! interior frame's data only when something reads them)
+            ! the vehicle's state only when something reads it
             call occupant_state(occ, t, y, st)
-            call occupant_vehicle(occ, sys%vm, t, st)
-            ! the head's forward excursion relative to the interior (C.8's criteria)
-            call raise(os%head_excursion, head_interior_x(occ%body, st%z, st%c, st%s, st%vehicle%pos) - os%head_x0, t)
+            if (sys%needs_vehicle .or. occ%nend == nend_rest .or. this%head_excursion) &
+               call occupant_vehicle(occ, sys%vm, t, st)
+            ! the head's forward excursion relative to the interior (C.8's
+            ! HEADX), only where a study asks for it
+            if (this%head_excursion) call raise(os%head_excursion, &
+               head_interior_x(occ%body, st%z, st%c, st%s, st%vehicle%pos) - os%head_x0, t)
             ! Table 5's force criteria, with the memory the step was taken with
             if (os%force_checked) &
                call force_criteria(this, occ, o, t, y, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
