@@ -54,6 +54,7 @@
 !! or after the end, is ignored.
 module nelder_mead
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+   use strings, only: itoa, num
    use kinds, only: wp
    use error_handling, only: error_t, error_append, error_set, exit_deck
    implicit none
@@ -134,10 +135,10 @@ contains
       else
          do i = 1, n
             if (.not. low(i) < high(i)) then
-               call error_append(problems, exit_deck, 'optimisation variable '//int_text(i) &
+               call error_append(problems, exit_deck, 'optimisation variable '//itoa(i) &
                                  //': its low bound is not below its high')
             else if (x0(i) < low(i) .or. x0(i) > high(i)) then
-               call error_append(problems, exit_deck, 'optimisation variable '//int_text(i) &
+               call error_append(problems, exit_deck, 'optimisation variable '//itoa(i) &
                                  //': its start is outside its bounds')
             end if
          end do
@@ -414,11 +415,4 @@ contains
       if (.not. ieee_is_nan(x)) usable = abs(x) <= value_limit
    end function usable
 
-   pure function int_text(n) result(text)
-      integer, intent(in) :: n
-      character(len=:), allocatable :: text
-      character(len=12) :: buffer
-      write (buffer, '(i0)') n
-      text = trim(buffer)
-   end function int_text
 end module nelder_mead

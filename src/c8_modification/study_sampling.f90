@@ -66,6 +66,7 @@
 !! On an error, points has no columns.
 module study_sampling
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+   use strings, only: itoa, num
    use kinds, only: wp, i8
    use error_handling, only: error_t, error_append, error_set, exit_deck
    implicit none
@@ -297,35 +298,35 @@ contains
 
       if (size(vars) < 1) call error_append(problems, exit_deck, 'a study needs at least one variable')
       if (method < method_oat .or. method > method_ensemble) then
-         call error_append(problems, exit_deck, 'unknown study method '//int_text(method) &
+         call error_append(problems, exit_deck, 'unknown study method '//itoa(method) &
                            //' (1 OAT, 2 GRID, 3 RANDOM, 4 LHS, 5 ENSEMBLE)')
          return
       end if
       seeded = method == method_random .or. method == method_lhs .or. method == method_ensemble
       by_values = method == method_oat .or. method == method_grid
       if (seeded .and. n_runs < 1) call error_append(problems, exit_deck, 'the '//method_name(method) &
-                                                     //' method needs at least 1 run (got '//int_text(n_runs)//')')
+                                                     //' method needs at least 1 run (got '//itoa(n_runs)//')')
       if (seeded .and. seed < 1) call error_append(problems, exit_deck, 'the '//method_name(method) &
-                                                   //' method needs a seed of at least 1 (got '//int_text(seed)//')')
+                                                   //' method needs a seed of at least 1 (got '//itoa(seed)//')')
       if (seeded .and. n_runs > max_study_points) call error_append(problems, exit_deck, 'the ' &
-         //method_name(method)//' study would have '//int_text(n_runs)//' runs, more than '//int_text(max_study_points))
+         //method_name(method)//' study would have '//itoa(n_runs)//' runs, more than '//itoa(max_study_points))
       do j = 1, size(vars)
-         what = 'study variable '//int_text(j)//': '
+         what = 'study variable '//itoa(j)//': '
          associate (v => vars(j))
             if (.not. (usable(v%low) .and. usable(v%high) .and. usable(v%base) .and. usable(v%spread))) then
                call error_append(problems, exit_deck, what//'its low, high, base and spread must be numbers within +-1e300')
             else if (v%low > v%high) then
-               call error_append(problems, exit_deck, what//'low '//real_text(v%low)//' is above high '//real_text(v%high))
+               call error_append(problems, exit_deck, what//'low '//num(v%low)//' is above high '//num(v%high))
             end if
             if (has_list(v)) then
                if (.not. all(usable(v%values))) &
                   call error_append(problems, exit_deck, what//'its values must be numbers within +-1e300')
             else if (by_values .and. v%count < 1) then
                call error_append(problems, exit_deck, what//'the '//method_name(method) &
-                                 //' method needs a list of values or a count of at least 1 (got '//int_text(v%count)//')')
+                                 //' method needs a list of values or a count of at least 1 (got '//itoa(v%count)//')')
             end if
             if (method == method_ensemble .and. v%spread < 0.0_wp) &
-               call error_append(problems, exit_deck, what//'its spread '//real_text(v%spread)//' is negative')
+               call error_append(problems, exit_deck, what//'its spread '//num(v%spread)//' is negative')
          end associate
       end do
    end subroutine check_study
@@ -344,8 +345,8 @@ contains
          total = total + value_count(vars(j))
       end do
       if (total > max_study_points) then
-         call error_append(problems, exit_deck, 'the OAT study would have '//int8_text(total) &
-                           //' runs, more than '//int_text(max_study_points))
+         call error_append(problems, exit_deck, 'the OAT study would have '//num(real(total, wp)) &
+                           //' runs, more than '//itoa(max_study_points))
          return
       end if
       deallocate (points)
@@ -377,7 +378,7 @@ contains
          total = total*counts(j)
          if (total > max_study_points) then   ! checked each time: the product cannot overflow
             call error_append(problems, exit_deck, 'the GRID study would have more than ' &
-                              //int_text(max_study_points)//' runs (the product of the variables'' numbers of values)')
+                              //itoa(max_study_points)//' runs (the product of the variables'' numbers of values)')
             return
          end if
       end do
@@ -551,27 +552,8 @@ contains
       name = trim(names(method))
    end function method_name
 
-   pure function int_text(n) result(text)
-      integer, intent(in) :: n
-      character(len=:), allocatable :: text
-      text = int8_text(int(n, i8))
-   end function int_text
 
-   pure function int8_text(n) result(text)
-      integer(i8), intent(in) :: n
-      character(len=:), allocatable :: text
-      character(len=24) :: buffer
-      write (buffer, '(i0)') n
-      text = trim(buffer)
-   end function int8_text
 
-   pure function real_text(x) result(text)
-      real(wp), intent(in) :: x
-      character(len=:), allocatable :: text
-      character(len=32) :: buffer
-      write (buffer, '(g0)') x
-      text = trim(adjustl(buffer))
-   end function real_text
 
    pure function identity() result(e)
       integer(i8) :: e(3, 3)
