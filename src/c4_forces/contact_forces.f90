@@ -678,6 +678,10 @@ contains
       end if
       if (slack) then
          call pair_geometry(this, st, ps, c_pitch, s_pitch)
+      else if (kept_matches(this%kept, st, aux)) then
+         ! (the evaluation that ended the step, or a step taken again, was
+         ! at st and aux with the memory as it is: the same bits)
+         ps = this%kept_ps
       else
          call pair_eval(this, st, aux, ps)
       end if
