@@ -74,6 +74,7 @@ module dormand_prince
       procedure :: resume => dopri_resume
       procedure :: has_dense => dopri_has_dense
       procedure :: dense => dopri_dense
+      procedure :: within_tolerance => dopri_within_tolerance
    end type dopri_stepper_t
 
 contains
@@ -147,6 +148,26 @@ contains
          y = c(:, 1) + th*(c(:, 2) + th1*(c(:, 3) + th*(c(:, 4) + th1*c(:, 5))))
       end associate
    end subroutine dopri_dense
+
+   !> See stepper_t: the scaled RMS norm of the step's error control
+   !! (try_step's, with y at both ends) at most 1.
+   pure logical function dopri_within_tolerance(this, y, dy) result(ok)
+      class(dopri_stepper_t), intent(in) :: this
+      real(wp), intent(in), contiguous :: y(:), dy(:)
+      real(wp) :: sc, norm
+      integer :: i, j
+      norm = 0.0_wp
+      do j = 1, size(this%controlled)
+         i = this%controlled(j)
+         sc = this%atol + this%rtol*abs(y(i))
+         if (.not. abs(dy(i)) <= sc) then
+            ok = .false.
+            return
+         end if
+         norm = norm + (dy(i)/sc)**2
+      end do
+      ok = norm <= real(max(size(this%controlled), 1), wp)
+   end function dopri_within_tolerance
 
    !> See stepper_t: the step to t_to at once (its part of a step the
    !! controller accepted), not the controller's next step size.

@@ -61,6 +61,9 @@ module ode_system
       integer(i8) :: restarts = 0           !< calls of restart (init is not counted)
       integer(i8) :: switches_located = 0   !< accepted states placed just past a switch (issue 15)
       integer(i8) :: retaken = 0            !< steps taken again to locate a switch (not rejected ones)
+      !> switches reached on the continuous extension of a step taken again
+      !! that ended just short of them, not by taking it once more (issue 16)
+      integer(i8) :: gaps_crossed = 0
       !> accepted states on a kink of the vehicle's motion inside a step (issue 15; print_schedule)
       integer(i8) :: kinks = 0
       !> switches found at once after the last, taken at the step's end (chatter)
@@ -115,6 +118,7 @@ module ode_system
       procedure :: resume => stepper_resume
       procedure :: has_dense => stepper_has_dense
       procedure :: dense => stepper_dense
+      procedure :: within_tolerance => stepper_within_tolerance
       procedure, non_overridable :: evaluate => stepper_evaluate
       procedure, non_overridable :: evaluate_end => stepper_evaluate_end
       procedure, non_overridable :: restartable => stepper_restartable
@@ -224,6 +228,19 @@ contains
       end associate
       y = 0.0_wp
    end subroutine stepper_dense
+
+   !> A change dy of the state y within the stepper's error tolerance for
+   !! one step (its scaled norm at most 1): where a state may be taken from
+   !! the continuous extension a little past the step's end (the switch
+   !! locator, issue 16). The default, a stepper without an error
+   !! tolerance: never.
+   pure logical function stepper_within_tolerance(this, y, dy)
+      class(stepper_t), intent(in) :: this
+      real(wp), intent(in), contiguous :: y(:), dy(:)
+      associate (unused => this%stats%steps, u2 => size(y) + size(dy))
+      end associate
+      stepper_within_tolerance = .false.
+   end function stepper_within_tolerance
 
    !> f(t, y) for a step of this stepper, counted in its statistics: true
    !! when the system could evaluate it. A failure is an outcome here (the

@@ -70,6 +70,11 @@ module switch_location
    !> Steps taken again to a root of the continuous extension (shifted to
    !! the last one's switching functions) before the regula falsi takes over
    integer, parameter :: max_dense_tries = 3
+   !> A gap crossed on a step's extension (locate_on_dense): the bound of
+   !! its departure from the tangent, times this, within the tolerance ...
+   real(wp), parameter :: gap_safety = 1.0_wp
+   !> ... and the gap at most this fraction of the step taken again
+   real(wp), parameter :: gap_fraction = 0.1_wp
 
    type :: switch_locator_t
       !> some effect of the scene has switching functions and the stepper
@@ -125,6 +130,8 @@ module switch_location
       real(wp), allocatable :: y_end(:)    !< the step as first taken
       real(wp), allocatable :: f_prev(:), f_end(:)   !< y' at the step's ends (Hermite's interpolant)
       real(wp), allocatable :: y_work(:)   !< a state of the interpolant
+      !> the extension's departure from its tangent over a gap (locate_on_dense)
+      real(wp), allocatable :: dy_gap(:)
       real(wp), allocatable :: rates(:)    !< workspace of the sliding switches (occupant_slide_switches)
       integer(i8), allocatable :: counts(:)
    contains
@@ -161,7 +168,8 @@ contains
       allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%live(n), this%idx(n))
       allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n), this%g_end(n))
       allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)), this%y_lo(size(y)), this%f_lo(size(y)))
-      allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)))
+      allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)), &
+                this%dy_gap(size(y)))
       allocate (this%counts(size(sys%counts, 1)), this%y_full(size(y)))
       call this%accepted(sys, t, y, stats)
    end subroutine locator_init
@@ -575,7 +583,9 @@ contains
    !! extension: its state is the bracket's start (t_lo, g_lo), the
    !! extension is shifted by the difference of the switching functions
    !! there, and the root of the shifted extension is tried in the same
-   !! way, at most max_dense_tries times in all; then the caller's
+   !! way (where it lies within a small gap of that step's end, on that
+   !! step's own extension, without another step: cross_gap_on_dense),
+   !! at most max_dense_tries times in all; then the caller's
    !! regula falsi goes on from the bracket (done false). Each try is a
    !! step taken again (stats%retaken).
    subroutine locate_on_dense(this, sys, stepper, t_end, tol_t, t_lo, t_hi, current_is_hi, t, y, done, short)
@@ -592,16 +602,23 @@ contains
       type(error_t) :: retry
       real(wp) :: t_to, t_b
       integer :: j, i
-      logical :: current
+      logical :: current, lo_on_dense
       done = .false.
       short = .false.
       this%g_shift = 0.0_wp
       this%g_end = this%g_hi
       t_b = t_end
+      ! the stepper's extension is that of a step taken again that ended
+      ! at t_lo, short of the switch (not the first step's, nor a trial's)
+      lo_on_dense = .false.
       do j = 1, max_dense_tries
          t_to = interpolant_crossing(this, sys, stepper, t_lo, t_b, tol_t, stepper%stats, .true.)
          t_to = t_to + 0.5_wp*tol_t
          if (.not. (t_to > t_lo .and. t_to < t_b)) exit
+         if (lo_on_dense) then
+            if (cross_gap_on_dense()) return
+         end if
+         lo_on_dense = .false.
          call step_again(this, sys, stepper, t_to, t, y, retry, short, current, allow_trial=j < max_dense_tries)
          current_is_hi = .false.
          if (retry%failed()) exit
@@ -642,9 +659,40 @@ contains
          do i = 1, this%n_searched
             this%g_shift(this%idx(i)) = this%g_try(this%idx(i)) - this%g_shift(this%idx(i))
          end do
+         lo_on_dense = .true.
       end do
       ! (the caller's bracket ends at the step's end)
       this%g_hi = this%g_end
+   contains
+      !> Issue 16: the step taken again ended short of the switch by a gap
+      !! (t_lo to t_to) so small that its own continuous extension, carried
+      !! on past its end, reaches the switch within the step's tolerance:
+      !! that extension leaves the step's end on y' there (exactly: DOPRI5's
+      !! extension is C1 at its ends) and departs from that tangent by
+      !! y''(gap)**2/2, which the step's mean change of y' bounds
+      !! (dy_gap; checked against the tolerance, the gap at most a tenth
+      !! of the step). Then the state past the switch is taken from it
+      !! (done) instead of taking the step once more (six evaluations);
+      !! otherwise (or where the extension's state is still short) false.
+      logical function cross_gap_on_dense() result(crossed_gap)
+         real(wp) :: gap, span
+         crossed_gap = .false.
+         gap = t_to - t_lo
+         span = t_lo - this%t_prev
+         if (.not. (gap <= gap_fraction*span)) return
+         this%dy_gap = (gap_safety*0.5_wp*gap*gap/span)*(stepper%f - this%f_prev)
+         if (.not. stepper%within_tolerance(y, this%dy_gap)) return
+         call stepper%dense(t_to, this%y_work)
+         call search_values(this, sys, t_to, this%y_work, this%g_try, stepper%stats)
+         if (.not. any_change(this%g_prev, this%g_try, this%live, this%idx(:this%n_searched), .true.)) return
+         t_hi = t_to
+         call copy_on(this%g_hi, this%g_try, this%idx(:this%n_searched))
+         this%y_hi = this%y_work
+         current_is_hi = .false.
+         stepper%stats%gaps_crossed = stepper%stats%gaps_crossed + 1
+         done = .true.
+         crossed_gap = .true.
+      end function cross_gap_on_dense
    end subroutine locate_on_dense
 
    !> The earliest time in (t_a, t_b) (t_a: the marked state's time or a
