@@ -242,7 +242,7 @@ contains
             this%trial = project(this%centroid + chi*(this%centroid - this%v(:, n + 1)))
             this%stage = stage_expand
          else if (value < this%fv(n)) then
-            call replace_worst(this, this%xr, value)
+            call replace_worst(this, .false., value)
          else if (value < this%fv(n + 1)) then
             this%trial = project(this%centroid + gamma*(this%xr - this%centroid))
             this%stage = stage_outside
@@ -252,19 +252,19 @@ contains
          end if
       case (stage_expand)
          if (value < this%fr) then
-            call replace_worst(this, this%trial, value)
+            call replace_worst(this, .true., value)
          else
-            call replace_worst(this, this%xr, this%fr)
+            call replace_worst(this, .false., this%fr)
          end if
       case (stage_outside)
          if (value <= this%fr) then
-            call replace_worst(this, this%trial, value)
+            call replace_worst(this, .true., value)
          else
             call start_shrink(this)
          end if
       case (stage_inside)
          if (value < this%fv(n + 1)) then
-            call replace_worst(this, this%trial, value)
+            call replace_worst(this, .true., value)
          else
             call start_shrink(this)
          end if
@@ -296,11 +296,19 @@ contains
       nm_evaluations = this%n_evals
    end function nm_evaluations
 
-   !> The worst vertex replaced by an accepted point; the next iteration.
-   subroutine replace_worst(this, u, f)
+   !> The worst vertex replaced by an accepted point, the trial or the
+   !! reflection (named, not passed: a component of this as an argument
+   !! beside this would alias what start_iteration changes); the next
+   !! iteration.
+   subroutine replace_worst(this, trial, f)
       type(nm_t), intent(inout) :: this
-      real(wp), intent(in) :: u(:), f
-      this%v(:, this%n + 1) = u
+      logical, intent(in) :: trial
+      real(wp), intent(in) :: f
+      if (trial) then
+         this%v(:, this%n + 1) = this%trial
+      else
+         this%v(:, this%n + 1) = this%xr
+      end if
       this%fv(this%n + 1) = f
       call start_iteration(this)
    end subroutine replace_worst

@@ -25,6 +25,7 @@
 module study_criteria
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: wp, g_std
+   use strings, only: upper
    use run_summary, only: run_summary_t, occupant_summary_t
    use end_tests, only: end_injury, end_contact, end_rest
    use joint_dislocation, only: event_dislocation_low, event_dislocation_high
@@ -135,12 +136,7 @@ contains
    pure integer function criterion_index(word) result(i)
       character(len=*), intent(in) :: word
       character(len=len(word)) :: w
-      integer :: k, c
-      w = adjustl(word)
-      do k = 1, len(w)
-         c = iachar(w(k:k))
-         if (c >= iachar('a') .and. c <= iachar('z')) w(k:k) = achar(c - 32)
-      end do
+      w = upper(adjustl(word))
       do i = 1, n_criteria
          if (trim(w) == trim(words(i))) return
       end do
@@ -237,11 +233,20 @@ contains
       end do
    end function largest_tension
 
-   !> A load over its limit; 0 where no limit is given.
+   !> A load over its limit; 0 where no limit is given; the largest number
+   !! where the quotient would overflow (a limit the deck gives absurdly
+   !! small: never an overflow, which the tests' build traps).
    pure real(wp) function ratio(load, limit)
       real(wp), intent(in) :: load, limit
       ratio = 0.0_wp
-      if (limit > 0.0_wp) ratio = load/limit
+      if (.not. limit > 0.0_wp) return
+      ratio = sign(huge(1.0_wp), load)
+      ! (Fortran's .or. need not stop at its first operand: nested)
+      if (limit >= 1.0_wp) then
+         ratio = load/limit
+      else if (abs(load) < limit*huge(1.0_wp)) then
+         ratio = load/limit
+      end if
    end function ratio
 
    !> The largest of the torso's Table 5 loads over their limits (the

@@ -13,6 +13,7 @@ module study_input
    use deck_cards, only: g_study, g_vary, g_values, g_criteria, study_methods, kind_int
    use field_values, only: field_expectation
    use model_origin, only: model_origin_t, deck_origin, problem, problem_at
+   use study_sampling, only: method_oat, method_grid, method_random, method_lhs, method_ensemble
    implicit none
    private
 
@@ -20,9 +21,9 @@ module study_input
    public :: method_oat, method_grid, method_random, method_lhs, method_ensemble, method_optimize
    public :: keep_none, keep_listing, keep_h5, keep_both
 
-   !> *STUDY's METHOD words, in order (deck_cards' study_methods).
-   integer, parameter :: method_oat = 1, method_grid = 2, method_random = 3, method_lhs = 4, &
-                         method_ensemble = 5, method_optimize = 6
+   !> *STUDY's METHOD words, in order (deck_cards' study_methods): the
+   !! sampled ones study_sampling's, then the search
+   integer, parameter :: method_optimize = method_ensemble + 1
    !> *STUDY's KEEP words.
    integer, parameter :: keep_none = 1, keep_listing = 2, keep_h5 = 3, keep_both = 4
 

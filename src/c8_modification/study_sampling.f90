@@ -271,11 +271,11 @@ contains
       case (method_grid)
          call grid_points(vars, points, problems)
       case (method_random)
-         call random_points(vars, n_runs, seed, points)
+         call random_points(vars, n_runs, seed, points, problems)
       case (method_lhs)
-         call lhs_points(vars, n_runs, seed, points)
+         call lhs_points(vars, n_runs, seed, points, problems)
       case (method_ensemble)
-         call ensemble_points(vars, n_runs, seed, points)
+         call ensemble_points(vars, n_runs, seed, points, problems)
       end select
       if (problems%failed()) then
          call error_set(err, problems%code, problems%message)
@@ -285,6 +285,22 @@ contains
          if (vars(j)%integer_valued) points(j, :) = anint(points(j, :))
       end do
    end subroutine study_points
+
+   !> points with room for n_vars variables of n_runs runs; a problem (not a
+   !! run-time error) where the memory cannot be had.
+   subroutine reserve(points, n_vars, n_runs, problems)
+      real(wp), allocatable, intent(inout) :: points(:, :)
+      integer, intent(in) :: n_vars, n_runs
+      type(error_t), intent(inout) :: problems
+      integer :: stat
+      if (allocated(points)) deallocate (points)
+      allocate (points(n_vars, n_runs), stat=stat)
+      if (stat /= 0) then
+         call error_append(problems, exit_deck, 'no memory for the study''s '//itoa(n_runs)//' runs of ' &
+                           //itoa(n_vars)//' variables')
+         allocate (points(n_vars, 0))
+      end if
+   end subroutine reserve
 
    !> Every problem of the study's inputs, one per line.
    subroutine check_study(method, vars, n_runs, seed, problems)
@@ -349,8 +365,8 @@ contains
                            //' runs, more than '//itoa(max_study_points))
          return
       end if
-      deallocate (points)
-      allocate (points(size(vars), int(total)))
+      call reserve(points, size(vars), int(total), problems)
+      if (problems%failed()) return
       points(:, 1) = vars(:)%base
       run = 1
       do j = 1, size(vars)
@@ -382,8 +398,8 @@ contains
             return
          end if
       end do
-      deallocate (points)
-      allocate (points(size(vars), int(total)))
+      call reserve(points, size(vars), int(total), problems)
+      if (problems%failed()) return
       at = 1
       do run = 1, int(total)
          do j = 1, size(vars)
@@ -401,16 +417,17 @@ contains
    end subroutine grid_points
 
    !> RANDOM: run by run, variable by variable, one uniform each.
-   subroutine random_points(vars, n_runs, seed, points)
+   subroutine random_points(vars, n_runs, seed, points, problems)
       type(study_variable_t), intent(in) :: vars(:)
       integer, intent(in) :: n_runs, seed
       real(wp), allocatable, intent(inout) :: points(:, :)
+      type(error_t), intent(inout) :: problems
       type(rng_t) :: rng
       real(wp) :: u
       integer :: j, run, n
 
-      deallocate (points)
-      allocate (points(size(vars), n_runs))
+      call reserve(points, size(vars), n_runs, problems)
+      if (problems%failed()) return
       call rng_seed(rng, seed)
       do run = 1, n_runs
          do j = 1, size(vars)
@@ -427,18 +444,24 @@ contains
 
    !> LHS: variable by variable, a point in each stratum, then the strata
    !! shuffled over the runs.
-   subroutine lhs_points(vars, n_runs, seed, points)
+   subroutine lhs_points(vars, n_runs, seed, points, problems)
       type(study_variable_t), intent(in) :: vars(:)
       integer, intent(in) :: n_runs, seed
       real(wp), allocatable, intent(inout) :: points(:, :)
+      type(error_t), intent(inout) :: problems
       type(rng_t) :: rng
       real(wp), allocatable :: strata(:)
       integer, allocatable :: perm(:)
       real(wp) :: u
-      integer :: j, k, i, m, swap
+      integer :: j, k, i, m, swap, stat
 
-      deallocate (points)
-      allocate (points(size(vars), n_runs), strata(n_runs), perm(n_runs))
+      call reserve(points, size(vars), n_runs, problems)
+      if (problems%failed()) return
+      allocate (strata(n_runs), perm(n_runs), stat=stat)
+      if (stat /= 0) then
+         call error_append(problems, exit_deck, 'no memory for the LHS study''s '//itoa(n_runs)//' strata')
+         return
+      end if
       call rng_seed(rng, seed)
       do j = 1, size(vars)
          associate (v => vars(j))
@@ -466,16 +489,17 @@ contains
    end subroutine lhs_points
 
    !> ENSEMBLE: the base, then normal perturbations clipped to the bounds.
-   subroutine ensemble_points(vars, n_runs, seed, points)
+   subroutine ensemble_points(vars, n_runs, seed, points, problems)
       type(study_variable_t), intent(in) :: vars(:)
       integer, intent(in) :: n_runs, seed
       real(wp), allocatable, intent(inout) :: points(:, :)
+      type(error_t), intent(inout) :: problems
       type(rng_t) :: rng
       real(wp) :: z
       integer :: j, run
 
-      deallocate (points)
-      allocate (points(size(vars), n_runs))
+      call reserve(points, size(vars), n_runs, problems)
+      if (problems%failed()) return
       call rng_seed(rng, seed)
       points(:, 1) = vars(:)%base
       do run = 2, n_runs
