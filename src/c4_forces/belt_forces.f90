@@ -407,7 +407,7 @@ contains
             aux_rate(ch%start_aux) = sp%guess_rate
          end associate
       end do
-      call kept_set(this%kept, st, aux)
+      call kept_set(this%kept, st, extra, aux)
    end subroutine belt_add_forces_kept
 
    !> The chain's deformation s: its sections' nominal deformations less
@@ -448,7 +448,7 @@ contains
       ! each chain's s, s' and split: those kept at the evaluation that ended
       ! the step where it was at st and aux exactly (with the memory as it
       ! is: kept since the last accept), else computed: the same bits
-      reuse = kept_matches(this%kept, st, aux)
+      reuse = kept_matches(this%kept, st, extra, aux)
       this%kept%valid = .false.          ! (the memory may change below)
       if (reuse) then
          this%accepts_reused = this%accepts_reused + 1

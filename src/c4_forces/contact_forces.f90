@@ -611,7 +611,7 @@ contains
       end if
       call pair_eval(this, st, aux, ps)
       this%kept_ps = ps
-      call kept_set(this%kept, st, aux)
+      call kept_set(this%kept, st, extra, aux)
       ! pair_add_full
       if (ps%split%status /= split_ok) then
          aux_rate = ieee_value(0.0_wp, ieee_quiet_nan)
@@ -678,7 +678,7 @@ contains
       end if
       if (slack) then
          call pair_geometry(this, st, ps, c_pitch, s_pitch)
-      else if (kept_matches(this%kept, st, aux)) then
+      else if (kept_matches(this%kept, st, extra, aux)) then
          ! (the evaluation that ended the step, or a step taken again, was
          ! at st and aux with the memory as it is: the same bits)
          ps = this%kept_ps
@@ -855,7 +855,7 @@ contains
             return
          end if
       end if
-      call pair_accept_full(this, st, aux, result)
+      call pair_accept_full(this, st, extra, aux, result)
    end subroutine pair_accept_paths
 
    !> accept's full path (its own procedure: the pair's state is not set
@@ -863,16 +863,16 @@ contains
    !! evaluation that ended the step where that was at st and aux exactly
    !! (with the memory as it is: kept since the last accept), else
    !! pair_eval's: the same bits.
-   subroutine pair_accept_full(this, st, aux, result)
+   subroutine pair_accept_full(this, st, extra, aux, result)
       class(contact_pair_effect_t), intent(inout) :: this
       type(body_state_t), intent(in) :: st
-      real(wp), intent(in) :: aux(:)
+      real(wp), intent(in) :: extra(:), aux(:)
       type(accept_result_t), intent(inout) :: result
       type(pair_state_t) :: ps
       type(contact_state_t) :: cs
       logical :: changed
       integer :: side
-      if (kept_matches(this%kept, st, aux)) then
+      if (kept_matches(this%kept, st, extra, aux)) then
          ps = this%kept_ps
          this%accepts_reused = this%accepts_reused + 1
       else

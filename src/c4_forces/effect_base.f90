@@ -92,7 +92,10 @@ module effect_base
       !> where the effect is inert for certain, tested before each dispatch (D-C29)
       type(proximity_guard_t) :: guard
       !> the evaluation that ends a step goes through add_forces_kept, which
-      !! keeps what accept needs (issue 16 section 4); .false.: add_forces
+      !! keeps what accept needs (issue 16 section 4); .false.: add_forces.
+      !! Not with sliding constraints (n_slide > 0): a release changes the
+      !! memory outside accept, which would leave the kept results stale
+      !! (occupant_add_effect then ignores it)
       logical :: keeps = .false.
       !> accepts that took the kept results instead of computing them again
       !! (counted, for the tests and measurements)
@@ -143,6 +146,7 @@ module effect_base
       real(wp) :: t = 0.0_wp
       real(wp) :: z(n_dof) = 0.0_wp, zdot(n_dof) = 0.0_wp
       real(wp), allocatable :: aux(:)
+      real(wp), allocatable :: extra(:)   !< the effect's own coordinates and rates, if any
    end type kept_inputs_t
 
 contains
@@ -158,37 +162,51 @@ contains
       call this%add_forces(st, extra, aux, b, extra_rate, aux_rate)
    end subroutine effect_add_forces_kept
 
-   !> Tag kept results with the inputs (st, aux) they were computed from
-   !! (aux's room allocated at the first, then reused: its size is fixed).
-   pure subroutine kept_set(k, st, aux)
+   !> Tag kept results with the inputs (st, extra, aux) they were computed
+   !! from (the rooms allocated at the first, then reused: their sizes are
+   !! fixed).
+   pure subroutine kept_set(k, st, extra, aux)
       type(kept_inputs_t), intent(inout) :: k
       type(body_state_t), intent(in) :: st
-      real(wp), intent(in) :: aux(:)
+      real(wp), intent(in) :: extra(:), aux(:)
       integer :: i
-      if (.not. allocated(k%aux)) allocate (k%aux(size(aux)))
-      if (size(k%aux) /= size(aux)) then
-         deallocate (k%aux)
-         allocate (k%aux(size(aux)))
-      end if
+      call fit(k%aux, size(aux))
+      call fit(k%extra, size(extra))
       k%t = st%t
       k%z = st%z
       k%zdot = st%zdot
       do i = 1, size(aux)
          k%aux(i) = aux(i)
       end do
+      do i = 1, size(extra)
+         k%extra(i) = extra(i)
+      end do
       k%valid = .true.
+   contains
+      pure subroutine fit(a, n)
+         real(wp), allocatable, intent(inout) :: a(:)
+         integer, intent(in) :: n
+         if (allocated(a)) then
+            if (size(a) == n) return
+            deallocate (a)
+         end if
+         allocate (a(n))
+      end subroutine fit
    end subroutine kept_set
 
    !> The kept results were computed from exactly these inputs: every one
    !! the same bits (a signed zero or a NaN is not taken for another).
-   pure logical function kept_matches(k, st, aux) result(same)
+   pure logical function kept_matches(k, st, extra, aux) result(same)
       type(kept_inputs_t), intent(in) :: k
       type(body_state_t), intent(in) :: st
-      real(wp), intent(in) :: aux(:)
+      real(wp), intent(in) :: extra(:), aux(:)
       integer :: i
       same = .false.
       if (.not. k%valid) return
-      if (size(k%aux) /= size(aux)) return
+      if (size(k%aux) /= size(aux) .or. size(k%extra) /= size(extra)) return
+      do i = 1, size(extra)
+         if (.not. same_bits(k%extra(i), extra(i))) return
+      end do
       if (.not. same_bits(k%t, st%t)) return
       do i = 1, n_dof
          if (.not. (same_bits(k%z(i), st%z(i)) .and. same_bits(k%zdot(i), st%zdot(i)))) return

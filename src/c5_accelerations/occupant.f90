@@ -133,6 +133,8 @@ contains
          if (.not. allocated(occ%remembering)) allocate (occ%remembering(0))
          if (e%acts .or. e%n_aux > 0 .or. e%n_extra > 0) occ%evaluated = [(occ%evaluated(j), j=1, size(occ%evaluated)), k]
          if (e%has_memory) occ%remembering = [(occ%remembering(j), j=1, size(occ%remembering)), k]
+         ! (an effect with sliding constraints never keeps: effect_t%keeps)
+         if (e%n_slide > 0) e%keeps = .false.
          occ%keeps = occ%keeps .or. (e%keeps .and. e%has_memory .and. any(occ%evaluated == k))
          if (.not. allocated(occ%sliding)) allocate (occ%sliding(0))
          if (e%n_slide > 0) then
