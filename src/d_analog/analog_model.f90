@@ -164,15 +164,16 @@ contains
       tau = huge(1.0_wp)
       if (sigma > 0.0_wp) then
          w = sqrt(sigma)
-         tau = atan2(s*v0*w, q)/w
+         ! (abs: s v0 >= 0, and from rest atan2 must see +0, not -0, to give pi)
+         tau = atan2(abs(v0)*w, q)/w
       else if (sigma < 0.0_wp) then
          w = sqrt(-sigma)
          if (q > 0.0_wp) then
-            r = s*v0*w/q
+            r = abs(v0)*w/q
             if (r < 1.0_wp) tau = atanh(r)/w
          end if
       else if (q > 0.0_wp) then
-         tau = s*v0/q
+         tau = abs(v0)/q
       end if
       if (.not. tau > 0.0_wp) tau = huge(1.0_wp)
    end function phase_end
