@@ -249,13 +249,21 @@ contains
       type(analog_solution_t), intent(in) :: sol
       real(wp), intent(in) :: t
       real(wp), intent(out) :: theta, rate
-      integer :: k
+      integer :: k, lo, hi, mid
       real(wp) :: x
-      k = sol%n_phase
-      do while (k > 1)
-         if (sol%phase(k)%t0 <= t) exit
-         k = k - 1
+      ! the last phase starting at or before t, by bisection (a stiff harness
+      ! over TMAX makes many phases, and the contact scan asks often)
+      lo = 1
+      hi = sol%n_phase
+      do while (lo < hi)
+         mid = (lo + hi + 1)/2
+         if (sol%phase(mid)%t0 <= t) then
+            lo = mid
+         else
+            hi = mid - 1
+         end if
       end do
+      k = lo
       associate (p => sol%phase(k))
          if (p%at_rest) then
             theta = p%theta0

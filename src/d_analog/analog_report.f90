@@ -176,7 +176,7 @@ contains
       real(wp), allocatable :: times(:)
       real(wp) :: th1, r1, th2, r2, gap
       integer :: k
-      allocate (tables(0))
+      allocate (tables(0), times(0))
       times = analog_history_times(sol%c%t_max)
       do k = 1, size(times)
          if (mod(k - 1, rows_per_page) == 0) then

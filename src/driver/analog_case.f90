@@ -44,6 +44,8 @@ contains
       type(error_t) :: io_err
       integer :: k
 
+      ! (allocated first: gfortran's -Wuninitialized reads the descriptor of the assignment)
+      allocate (cases(0))
       cases = analog_cases(deck)
       allocate (sols(size(cases)))
       do k = 1, size(cases)
@@ -81,6 +83,7 @@ contains
       type(analog_solution_t), intent(in) :: sols(:)
       type(text_table_t), allocatable :: history(:)
       integer :: k, i
+      allocate (history(0))
       call lst%start('HSRI-2D '//hsri2d_version, analog_title(deck))
       call lst%new_page('RUN')
       call lst%put(' HSRI-2D '//hsri2d_version//'  the two-occupant analog of Section D')
@@ -120,6 +123,7 @@ contains
       real(wp), allocatable :: times(:)
       real(wp) :: th1, r1, th2, r2
       integer :: k, i, id
+      allocate (times(0))
       do k = 1, size(sols)
          call h5%add_series('analog/case_'//itoa(k), [character(len=10) :: 't', 'theta1', 'theta1dot', 'theta2', &
                             'theta2dot', 'separation'], [character(len=5) :: 's', 'rad', 'rad/s', 'rad', 'rad/s', &
