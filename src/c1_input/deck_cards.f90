@@ -31,6 +31,7 @@ module deck_cards
    public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
    public :: g_belts, g_beltoptions
    public :: g_study, g_vary, g_values, g_criteria, study_methods, max_study_variables
+   public :: g_analog
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -64,7 +65,9 @@ module deck_cards
    integer, parameter :: g_surfaces = 31, g_interior = 32, g_contactoff = 33
    !> A study: the program varies its own inputs (C.8; docs/modification.md).
    integer, parameter :: g_study = 34, g_vary = 35, g_values = 36, g_criteria = 37
-   integer, parameter :: n_groups = 37
+   !> Section D's two-occupant analog, a deck of its own (docs/analog.md).
+   integer, parameter :: g_analog = 40
+   integer, parameter :: n_groups = 40
 
    !> C.8's methods, in the order of *STUDY's METHOD words.
    character(len=*), parameter :: study_methods = 'OAT|GRID|RANDOM|LHS|ENSEMBLE|OPTIMIZE'
@@ -503,6 +506,7 @@ contains
 
       call seat_groups(t)
       call study_groups(t)
+      call analog_groups(t)
 
       block
          integer :: i
@@ -846,5 +850,33 @@ contains
          int_field('OCC', blank_default, 1, 1, 2, 'of occupant'), &
          real_field('LIMIT', '(crit.)', one, blank_absent, zero, -huge(one), huge(one), 'largest value allowed')])
    end subroutine study_groups
+
+   !> Report Section D: the two-occupant analog (docs/analog.md).
+   pure subroutine analog_groups(t)
+      type(group_spec_t), intent(inout) :: t(:)
+      real(wp), parameter :: zero = 0.0_wp, one = 1.0_wp
+      ! 1 mph = 5280*12/3600 in/s
+      real(wp), parameter :: mph = 17.6_wp
+      t(g_analog)%name = 'ANALOG'
+      t(g_analog)%title = 'The two-occupant analog of Section D: one card per case'
+      t(g_analog)%layout = layout_list
+      t(g_analog)%max_cards = 100
+      t(g_analog)%note = 'A deck with this group runs Section D''s analog instead of the occupant simulation, ' &
+         //'and holds no other group but *TITLE. Each card is one case: a front occupant held by a shoulder ' &
+         //'harness (spring K1 at L1 from the hip, damping ratio ZETA: 0 undamped, 1 critical) and a hip ' &
+         //'torque T; a rear occupant pivoting freely until the front seat back stops him at 60 deg; both the ' &
+         //'95th-percentile upper body of the report (110 lb, 38 in, CG 17 in from the hip, I0 = 117 ' &
+         //'lb*in*s^2), upright at the start with m V rho = I0 omega; hips L apart. The harness turns the ' &
+         //'body with L1**2 K1 (erratum D-2): the report''s motion is K1 = 1470.59 lb/in at L1 = 17 in. ' &
+         //'Listed every 1 ms to TMAX (docs/analog.md).'
+      call set_fields(t(g_analog), [ &
+         real_field('V', 'mph', mph, blank_default, 20.0_wp, zero, 200.0_wp, 'collision speed v', .true.), &
+         real_field('K1', 'lb/in', one, blank_default, 1470.59_wp, zero, 1.0e7_wp, 'harness spring k_1', .true.), &
+         real_field('L1', 'in', one, blank_default, 17.0_wp, zero, 100.0_wp, 'hip to harness l_1', .true.), &
+         real_field('ZETA', '-', one, blank_default, zero, zero, 100.0_wp, 'harness damping ratio (1 critical)'), &
+         real_field('T', 'in*lb', one, blank_default, 3300.0_wp, zero, 1.0e7_wp, 'front hip torque T'), &
+         real_field('L', 'in', one, blank_default, 34.0_wp, zero, 200.0_wp, 'seat spacing: hip to hip', .true.), &
+         real_field('TMAX', 's', one, blank_default, 0.125_wp, zero, 2.0_wp, 'duration', .true.)])
+   end subroutine analog_groups
 
 end module deck_cards

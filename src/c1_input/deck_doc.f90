@@ -49,10 +49,12 @@ contains
          '  and the group''s later cards are left out.', '', &
          '| group | layout | required | content |', '|---|---|---|---|'])
       do g = 1, n_groups
+         if (t(g)%name == ' ') cycle   ! a number another branch holds (none here)
          call append_string(lines, '| `*'//trim(t(g)%name)//'` | '//layout_text(t(g))//' | ' &
             //trim(merge('yes', 'no ', t(g)%required))//' | '//md(trim(t(g)%title))//' |')
       end do
       do g = 1, n_groups
+         if (t(g)%name == ' ') cycle
          call append_string(lines, '')
          call append_string(lines, '## \*'//trim(t(g)%name))
          call append_string(lines, '')

@@ -15,7 +15,7 @@ module deck_reader
    use deck_cards, only: group_spec_t, field_spec_t, card_table, max_fields, card_width, &
       index_first_col, index_last_col, data_last_col, field_first_col, field_last_col, &
       kind_real, kind_int, kind_word, kind_text, blank_default, blank_required, blank_absent, &
-      layout_single, layout_indexed, layout_list, layout_multi, n_groups
+      layout_single, layout_indexed, layout_list, layout_multi, n_groups, g_analog, g_title
    implicit none
    private
 
@@ -213,12 +213,23 @@ contains
       type(deck_t), intent(inout) :: deck
       type(error_t), intent(inout) :: err
       integer :: gid, k
+      logical :: analog
 
+      ! Section D's analog is a deck of its own: *TITLE and *ANALOG alone
+      analog = deck%group(g_analog)%present .or. deck%header_rejected(g_analog)
+      do gid = 1, n_groups
+         if (analog .and. deck%group(gid)%present .and. gid /= g_analog .and. gid /= g_title) &
+            call report(deck, err, deck%group(gid)%source, deck%group(gid)%line, 'card group *' &
+            //trim(deck%spec(gid)%name)//' in a deck with *ANALOG (line '//itoa(deck%group(g_analog)%line) &
+            //' of '//deck%source_name(deck%group(g_analog)%source)%s//'): an analog deck (report Section D, ' &
+            //'docs/analog.md) holds *TITLE and *ANALOG only')
+      end do
       do gid = 1, n_groups
          associate (g => deck%group(gid), s => deck%spec(gid))
             if (.not. g%present) then
-               ! (when no source held a line, "the deck is empty" says it all)
-               if (s%required .and. .not. kind_present(deck, gid) .and. deck%n_echo > 0 .and. .not. &
+               ! (when no source held a line, "the deck is empty" says it all;
+               ! an analog deck needs none of the occupant's groups)
+               if (s%required .and. .not. analog .and. .not. kind_present(deck, gid) .and. deck%n_echo > 0 .and. .not. &
                    (deck%header_rejected(gid) .or. deck%unknown_header_rejected)) &
                   call report(deck, err, 0, 0, 'the deck has no *'//trim(s%name)//' card group (' &
                   //trim(s%title)//'); it is required')
@@ -894,6 +905,7 @@ contains
       character(len=*), intent(in) :: name
       integer :: i
       group_by_name = 0
+      if (len_trim(name) == 0) return   ! (an unnamed slot of the table is no group)
       do i = 1, n_groups
          if (deck%spec(i)%name == name) group_by_name = i
       end do
@@ -905,8 +917,9 @@ contains
       integer :: i
       s = ''
       do i = 1, n_groups
+         if (deck%spec(i)%name == ' ') cycle
+         if (len(s) > 0) s = s//' '
          s = s//'*'//trim(deck%spec(i)%name)
-         if (i < n_groups) s = s//' '
       end do
    end function group_names
 

@@ -29,6 +29,8 @@ module run_case_mod
    use output_doc, only: output_table_lines
    use version_info, only: hsri2d_version
    use refine_check, only: refine_table
+   use analog_input, only: deck_is_analog
+   use analog_case, only: run_analog
    implicit none
    private
 
@@ -70,6 +72,19 @@ contains
       type(deck_t), intent(out) :: deck
       type(model_t), intent(out) :: m
       type(error_t), intent(inout) :: err
+      call read_deck_files(req, deck, err)
+      if (.not. err%failed() .and. deck_is_analog(deck)) &
+         call error_set(err, exit_usage, 'an analog deck (*ANALOG, report Section D) is run as a plain run, '// &
+                        'not by --refine or --outputs, which take a simulation''s deck (docs/analog.md)')
+      call build_case_model(deck, m, err)
+   end subroutine read_case_deck
+
+   !> The decks of a request read (C.1) into deck; every problem found is
+   !! appended to err.
+   subroutine read_deck_files(req, deck, err)
+      type(run_request_t), intent(in) :: req
+      type(deck_t), intent(out) :: deck
+      type(error_t), intent(inout) :: err
       integer :: i
       call deck_init(deck)
       if (size(req%decks) == 0) then
@@ -83,13 +98,20 @@ contains
          end if
       end do
       if (err%code /= exit_io) call deck_finish(deck, err)
+   end subroutine read_deck_files
+
+   !> The model of a simulation's deck (not a study's): built and checked.
+   subroutine build_case_model(deck, m, err)
+      type(deck_t), intent(in) :: deck
+      type(model_t), intent(out) :: m
+      type(error_t), intent(inout) :: err
       if (.not. err%failed() .and. deck%group(g_study)%present) &
          call error_set(err, exit_usage, 'a study deck (*STUDY, report C.8) is run from regular files, as a study: '// &
                         'not from standard input, a pipe or a FIFO, nor by --refine or --outputs, which take a single '// &
                         'run''s deck (docs/modification.md)')
       if (.not. err%failed()) call build_model(deck, m, err)
       if (.not. err%failed()) m%warnings = [m%warnings, initial_warnings(m)]
-   end subroutine read_case_deck
+   end subroutine build_case_model
 
    !> `hsri2d --refine`: read the decks and run the case at its setting and
    !! at a refined one (refine_check), writing nothing; lines: the table.
@@ -124,7 +146,16 @@ contains
       type(string_t), allocatable :: notes(:)
       integer :: k
 
-      call read_case_deck(req, deck, m, err)
+      call read_deck_files(req, deck, err)
+      if (.not. err%failed() .and. deck_is_analog(deck)) then
+         ! report Section D's analog instead of the simulation (docs/analog.md)
+         if (present(warnings)) allocate (warnings(0))
+         call check_output_paths(deck_files(req), '', req%listing_file, req%h5_file, err)
+         if (err%failed() .or. req%check_only) return
+         call run_analog(deck, deck_text(deck), req%listing_file, req%h5_file, err)
+         return
+      end if
+      call build_case_model(deck, m, err)
       m%options%locate_switches = req%locate_switches
       if (present(warnings)) then
          if (allocated(m%warnings)) then

@@ -49,7 +49,17 @@ expect("a folder outside the order", {**BASE, "extras/x.f90": "module x\nend mod
 expect("a module defined twice", {**BASE, "c4_forces/model.f90": "module model\nend module model\n"},
        1, "module model in c1_input and c4_forces")
 
+# report Section D's analog, a side branch: it uses common and c1_input only, and only the
+# driver (and above) uses it
+ANALOG = {**BASE, "d_analog/analog_model.f90": "module analog_model\n   use model\nend module analog_model\n",
+          "driver/run_case.f90": "module run_case\n   use analog_model\nend module run_case\n"}
+expect("the analog's branch kept", ANALOG, 0, "no loop, no folder uses a higher one")
+expect("the analog uses the simulation", {**ANALOG, "d_analog/x.f90": "module x\n   use gravity\nend module x\n"},
+       1, "d_analog may use only c1_input, common, not c4_forces: d_analog/x.f90:2 uses gravity")
+expect("the simulation uses the analog", {**ANALOG, "c4_forces/y.f90": "module y\n   use analog_model\nend module y\n"},
+       1, "c4_forces may not use d_analog (only app, c8_modification, driver may): c4_forces/y.f90:2 uses analog_model")
+
 for f in failures:
     print("FAILED", f)
-print(f"{5 - len(failures)} passed, {len(failures)} failed")
+print(f"{8 - len(failures)} passed, {len(failures)} failed")
 sys.exit(1 if failures else 0)

@@ -115,8 +115,12 @@ def nout3_options(path):
 for deck in sorted(os.listdir(decks)):
     if not deck.endswith(".deck"):
         continue
-    write("nout3.deck", nout3_options(os.path.join(decks, deck)))
-    for extra in ([], ["nout3.deck"]):
+    extras = [[]]
+    # (an analog deck of Section D has no *OPTIONS: its one listing is checked)
+    if "*OPTIONS" in open(os.path.join(decks, deck)).read().upper():
+        write("nout3.deck", nout3_options(os.path.join(decks, deck)))
+        extras.append(["nout3.deck"])
+    for extra in extras:
         out = deck + ("_nout3" if extra else "") + ".lst"
         p = run(os.path.join(decks, deck), *extra, "-o", out)
         if p.returncode != 0:
