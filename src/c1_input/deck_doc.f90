@@ -42,17 +42,20 @@ contains
          '* Angles are in degrees and angular rates in degrees per second; stiffnesses are per radian.', &
          '  Other units are the report''s: inch, pound force, second; mass in lb*s^2/in.', &
          '* Several decks may be named on the command line. A later card group replaces the earlier group', &
-         '  of its kind (*PULSE and *PULSEFILE are one kind); within one file a group may appear once.', &
+         '  of its kind (*PULSE, *PULSEFILE and *PULSEMME are one kind); within one file a group may', &
+         '  appear once.', &
          '* Every problem in a deck is reported once, with file, line, group, card, field, columns and the', &
          '  text found; the exit status is then 2. A list group holds at most the number of cards its', &
          '  layout gives (a table of 100,000 or 1,000,000 points): the first card beyond it is reported', &
          '  and the group''s later cards are left out.', '', &
          '| group | layout | required | content |', '|---|---|---|---|'])
       do g = 1, n_groups
+         if (t(g)%name == ' ') cycle   ! (a number not yet given to a group)
          call append_string(lines, '| `*'//trim(t(g)%name)//'` | '//layout_text(t(g))//' | ' &
             //trim(merge('yes', 'no ', t(g)%required))//' | '//md(trim(t(g)%title))//' |')
       end do
       do g = 1, n_groups
+         if (t(g)%name == ' ') cycle
          call append_string(lines, '')
          call append_string(lines, '## \*'//trim(t(g)%name))
          call append_string(lines, '')

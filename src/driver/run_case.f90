@@ -8,7 +8,7 @@ module run_case_mod
    use accuracy_estimate, only: accuracy_warnings, corrector_warning, widened_ramp_warning
    use text_io, only: string_t, append_string
    use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
-   use deck_cards, only: g_pulsefile, g_study
+   use deck_cards, only: g_pulsefile, g_pulsemme, g_study
    use default_deck, only: default_deck_lines
    use model_builder, only: build_model
    use model, only: model_t, nint_adams, nint_dopri
@@ -337,14 +337,16 @@ contains
       end do
    end function deck_files
 
-   !> The CSV file named on a *PULSEFILE card ('' when the pulse is not
-   !! read from a file).
-   function pulse_file(d, m) result(path)
+   !> The files the pulse was read from: the CSV file of a *PULSEFILE card,
+   !! the .mme file, channel index and channel file of *PULSEMME (none when
+   !! the pulse is on cards).
+   function pulse_file(d, m) result(paths)
       type(deck_t), intent(in) :: d
       type(model_t), intent(in) :: m
-      character(len=:), allocatable :: path
-      path = ''
-      if (d%group(g_pulsefile)%present .and. d%group(g_pulsefile)%n > 0) path = m%vehicle%pulse_source
+      type(string_t), allocatable :: paths(:)
+      allocate (paths(0))
+      if (.not. (d%group(g_pulsefile)%present .or. d%group(g_pulsemme)%present)) return
+      if (allocated(m%vehicle%pulse_inputs)) paths = m%vehicle%pulse_inputs
    end function pulse_file
 
    !> The deck's card images, for the HDF5 file.
