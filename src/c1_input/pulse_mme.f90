@@ -412,7 +412,8 @@ contains
                j = j + 1
             end do
             ! samples i + 1 .. j - 1 are missing
-            if (real(j - i, wp)*interval > mme_max_gap*(1.0_wp + 1.0e-9_wp)) then
+            ! (the time the missing samples stand for)
+            if (real(j - i - 1, wp)*interval > mme_max_gap*(1.0_wp + 1.0e-9_wp)) then
                call problem(path, data_line + line_offset(text, data_line, i + 1), 'samples ' &
                   //itoa(i + 1)//' to '//itoa(j - 1)//' are '//novalue//': '//num(real(j - i - 1, wp)*interval) &
                   //' s of the pulse missing; at most '//num(mme_max_gap)//' s of dropouts are bridged')
