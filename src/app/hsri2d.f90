@@ -65,6 +65,7 @@ program hsri2d
    req%decks = opts%decks
    req%listing_file = opts%listing_file
    req%h5_file = opts%h5_file
+   req%mme_dir = opts%mme_dir
    req%check_only = opts%check_only
    if (opts%outputs) then
       call describe_outputs(req, builtin, err)

@@ -97,7 +97,11 @@ contains
             s = 'a card for any '//trim(g%index_name)//' of 1 to '//itoa(g%max_index)
          end if
       case (layout_list)
-         s = 'a list of '//itoa(g%min_cards)//' to '//grouped(g%max_cards)//' cards'
+         if (g%min_cards == g%max_cards) then
+            s = itoa(g%min_cards)//' cards'
+         else
+            s = 'a list of '//itoa(g%min_cards)//' to '//grouped(g%max_cards)//' cards'
+         end if
       case (layout_multi)
          s = 'a list of '//itoa(g%min_cards)//' to '//grouped(g%max_cards)//' cards, each with its ' &
              //trim(g%index_name)
