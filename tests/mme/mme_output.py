@@ -4,7 +4,8 @@
 
 usage: mme_output.py HSRI2D DECK WORKDIR
 
-Runs DECK (a belted deck) with --mme and --h5, then checks the data set
+Runs DECK (a belted deck) with a vertical part added to its pulse, with --mme
+and --h5, then checks the data set
 against the HDF5 file: the index's channels and codes, each channel's
 header (code, unit, dimension, sampling interval = the print interval,
 number of samples = its sample lines = the print records), its values
@@ -49,7 +50,13 @@ def main():
     os.makedirs(os.path.join(work, "out"))
     dset = os.path.join(work, "out", "run1")
     h5 = os.path.join(work, "run1.h5")
-    proc = subprocess.run([exe, deck, "--mme", dset, "--h5", h5, "-o", os.path.join(work, "run1.lst")],
+    # the deck's pulse with a vertical part, so that the z channel's sign shows
+    vertical = os.path.join(work, "vertical.deck")
+    with open(vertical, "w") as f:
+        f.write("*PULSE\n")
+        for t, x, y in ((0.0, 0.0, 0.0), (0.05, -20.0, 5.0), (0.1, 0.0, 0.0)):
+            f.write("  %10.4f%10.4f%10.4f\n" % (t, x, y))
+    proc = subprocess.run([exe, deck, vertical, "--mme", dset, "--h5", h5, "-o", os.path.join(work, "run1.lst")],
                           capture_output=True, text=True)
     if proc.returncode != 0:
         fail("the run exited with %d: %s" % (proc.returncode, proc.stderr))
@@ -79,6 +86,8 @@ def main():
     }
     if sorted(names.values()) != sorted(expected):
         fail("channels %s, expected %s" % (sorted(names.values()), sorted(expected)))
+    if np.max(np.abs(vehicle[:, 7])) < G_STD:
+        fail("the vertical pulse did not reach the run")
     dt = t[1] - t[0]
     n = len(t)
     if abs(t[-1] - (t[0] + (n - 1) * dt)) > 1e-9:
