@@ -23,7 +23,7 @@ module mme_sink
    implicit none
    private
 
-   public :: mme_sink_t, mme_sink_open, mme_lb_to_n
+   public :: mme_sink_t, mme_sink_open, mme_check_dir, mme_lb_to_n
 
    !> One pound force in newtons (the international avoirdupois pound and g_n).
    real(wp), parameter :: mme_lb_to_n = 4.4482216152605_wp
@@ -56,24 +56,43 @@ module mme_sink
 
 contains
 
+   !> What --check can say before a run (nothing created): the folder's
+   !! name is usable, its .mme file and index are not there yet.
+   subroutine mme_check_dir(dir, err)
+      character(len=*), intent(in) :: dir
+      type(error_t), intent(inout) :: err
+      character(len=:), allocatable :: folder, name
+      call folder_and_name(dir, folder, name, err)
+      if (err%failed()) return
+      call refuse_existing(folder//'/'//name//'.mme', err)
+      if (.not. err%failed()) call refuse_existing(folder//'/CHANNEL/'//name//'.chn', err)
+   end subroutine mme_check_dir
+
+   !> The folder without trailing slashes, and its own name (the test's).
+   subroutine folder_and_name(dir, folder, name, err)
+      character(len=*), intent(in) :: dir
+      character(len=:), allocatable, intent(out) :: folder, name
+      type(error_t), intent(inout) :: err
+      integer :: last
+      last = len_trim(dir)
+      do while (last > 1 .and. dir(last:last) == '/')
+         last = last - 1
+      end do
+      folder = dir(1:last)
+      name = folder(index(folder, '/', back=.true.) + 1:)
+      if (len(name) == 0 .or. name == '.' .or. name == '..') call error_set(err, exit_io, 'ISO-MME data set ' &
+         //escaped(dir)//': name its folder (--mme DIR): the folder''s name is the test''s, DIR/<name>.mme')
+   end subroutine folder_and_name
+
    !> The data set's folder (created if it is not there) and the run's title.
    subroutine mme_sink_open(this, dir, title, err)
       type(mme_sink_t), intent(inout) :: this
       character(len=*), intent(in) :: dir, title
       type(error_t), intent(inout) :: err
-      integer :: last, errno
-      last = len_trim(dir)
-      do while (last > 1 .and. dir(last:last) == '/')
-         last = last - 1
-      end do
-      this%dir = dir(1:last)
-      this%name = this%dir(index(this%dir, '/', back=.true.) + 1:)
+      integer :: errno
       this%title = title
-      if (len(this%name) == 0 .or. this%name == '.' .or. this%name == '..') then
-         call error_set(err, exit_io, 'ISO-MME data set '//escaped(dir)//': name its folder (--mme DIR): the ' &
-            //'folder''s name is the test''s, DIR/<name>.mme')
-         return
-      end if
+      call folder_and_name(dir, this%dir, this%name, err)
+      if (err%failed()) return
       errno = posix_make_dir(this%dir)
       if (errno == 0) errno = posix_make_dir(this%dir//'/CHANNEL')
       if (errno /= 0) then

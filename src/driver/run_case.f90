@@ -23,7 +23,7 @@ module run_case_mod
    use effect_events, only: event_t
    use run_report, only: listing_sink_t, listing_sink_start
    use history_sink, only: history_sink_t, history_sink_open
-   use mme_sink, only: mme_sink_t, mme_sink_open
+   use mme_sink, only: mme_sink_t, mme_sink_open, mme_check_dir
    use output_files, only: output_file_t, check_output_paths, deliver_outputs
    use equations_of_motion, only: system_build
    use output_producers, only: registry_build
@@ -143,6 +143,9 @@ contains
       ! targets at the end (output_files); nothing is created before the
       ! paths are known not to be inputs (--check checks them too)
       call check_output_paths(deck_files(req), pulse_file(deck, m), req%listing_file, req%h5_file, err)
+      if (.not. err%failed() .and. allocated(req%mme_dir)) then
+         if (len(req%mme_dir) > 0) call mme_check_dir(req%mme_dir, err)
+      end if
       if (err%failed() .or. req%check_only) return
       if (allocated(req%mme_dir)) then
          call write_case(deck, m, req%listing_file, req%h5_file, err, res, notes, req%mme_dir)

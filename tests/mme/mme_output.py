@@ -117,6 +117,12 @@ def main():
         fail("a second run into the data set: status %d, %s" % (proc.returncode, proc.stderr))
     if os.path.exists(second):
         fail("the refused run wrote its listing")
+    proc = subprocess.run([exe, "--check", deck, "--mme", dset], capture_output=True, text=True)
+    if proc.returncode != 4 or "exists; it is not overwritten" not in proc.stderr:
+        fail("--check of a folder holding a data set: status %d, %s" % (proc.returncode, proc.stderr))
+    proc = subprocess.run([exe, "--outputs", deck, "--mme", dset], capture_output=True, text=True)
+    if proc.returncode != 1 or "--mme would be ignored" not in proc.stderr:
+        fail("--outputs with --mme: status %d, %s" % (proc.returncode, proc.stderr))
     after = {p: open(os.path.join(dset, "CHANNEL", p), "rb").read() for p in os.listdir(os.path.join(dset, "CHANNEL"))}
     if before != after:
         fail("the refused run changed the data set")
