@@ -435,7 +435,10 @@ contains
          integer :: n, k, first
          real(wp) :: tol, w
          n = size(samples)
-         tau = [(t_first + real(n_before + k - 1, wp)*dt - t_zero, k=1, n)]
+         allocate (tau(n))
+         do k = 1, n
+            tau(k) = t_first + real(n_before + k - 1, wp)*dt - t_zero
+         end do
          tol = 1.0e-6_wp*dt   ! (a sample at T0 within rounding is at 0)
          where (abs(tau) < tol) tau = 0.0_wp
          if (tau(1) > 0.0_wp) then
