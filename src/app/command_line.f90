@@ -13,6 +13,7 @@ module command_line
       type(string_t), allocatable :: decks(:)
       character(len=:), allocatable :: listing_file   !< '' = standard output
       character(len=:), allocatable :: h5_file        !< '' = none
+      character(len=:), allocatable :: mme_dir        !< --mme DIR: the run as an ISO-MME data set ('' = none)
       logical :: help = .false., version = .false.
       logical :: deck_format = .false., print_default_deck = .false., check_only = .false.
       logical :: outputs = .false.
@@ -31,12 +32,14 @@ contains
       type(error_t), intent(inout) :: err
       integer :: i, n, ios, slash
       character(len=:), allocatable :: arg
-      logical :: options_done, stdin_named, listing_named, h5_named, results_named, ok
+      logical :: options_done, stdin_named, listing_named, h5_named, results_named, ok, mme_named
       character(len=:), allocatable :: text
 
       allocate (opts%decks(0))
       opts%listing_file = ''
       opts%h5_file = ''
+      opts%mme_dir = ''
+      mme_named = .false.
       opts%results_dir = ''
       results_named = .false.
       options_done = .false.
@@ -94,6 +97,8 @@ contains
                               //'standard output (-)')
                return
             end if
+         case ('--mme')
+            if (.not. value_of(opts%mme_dir, mme_named, 'the ISO-MME data set''s folder (--mme)')) return
          case ('--results')
             if (.not. value_of(opts%results_dir, results_named, 'the results directory (--results)')) return
          case ('--jobs')
@@ -145,6 +150,10 @@ contains
          end select
       end do
       if (.not. (opts%help .or. opts%version)) call check_combination(opts, h5_named, err)
+      if (.not. (opts%help .or. opts%version .or. err%failed()) .and. mme_named .and. &
+          (opts%deck_format .or. opts%print_default_deck .or. opts%outputs .or. opts%refine .or. opts%collect .or. &
+           opts%study_size .or. opts%n_shards > 0 .or. len(opts%results_dir) > 0 .or. opts%jobs > 1)) &
+         call error_set(err, exit_usage, 'only a run of a deck writes an ISO-MME data set; --mme would be ignored')
    contains
       !> The value of option `arg`, which names `what` once only (`named`:
       !! whether it was named already).
@@ -238,6 +247,7 @@ contains
           '  -o, --output FILE   write the listing (or what --outputs, --refine, --deck-format'//nl// &
           '                      or --default-deck print) to FILE; - or no -o: standard output'//nl// &
           '  --h5 FILE           write the time histories to the HDF5 file FILE'//nl// &
+          '  --mme DIR           write the run as an ISO-MME data set DIR/<DIR''s name>.mme'//nl// &
           '  --check             read and check the decks (and that -o and --h5 would not'//nl// &
           '                      overwrite an input), run nothing, write nothing'//nl// &
           '  --outputs           print the output series the decks would write (HDF5 datasets, '//nl// &

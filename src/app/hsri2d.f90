@@ -4,7 +4,7 @@
 program hsri2d
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use, intrinsic :: iso_c_binding, only: c_int
-   use error_handling, only: error_t, exit_ok, exit_deck, exit_numerical, error_category_name
+   use error_handling, only: error_t, error_set, exit_ok, exit_usage, exit_deck, exit_numerical, error_category_name
    use text_io, only: string_t
    use command_line, only: options_t, parse_command_line, usage_text
    use deck_doc, only: deck_format_lines
@@ -65,6 +65,7 @@ program hsri2d
    req%decks = opts%decks
    req%listing_file = opts%listing_file
    req%h5_file = opts%h5_file
+   req%mme_dir = opts%mme_dir
    req%check_only = opts%check_only
    if (opts%outputs) then
       call describe_outputs(req, builtin, err)
@@ -83,6 +84,11 @@ program hsri2d
    is_study = deck_has_study(opts%decks)
    if (opts%collect .or. opts%study_size .or. opts%n_shards > 0 .or. len(opts%results_dir) > 0 .or. &
        opts%jobs > 1 .or. is_study) then
+      if (len(opts%mme_dir) > 0) then
+         call error_set(err, exit_usage, 'a study writes no ISO-MME data set (each run''s outputs: *STUDY''s KEEP); ' &
+                        //'--mme would be ignored')
+         call quit(err)
+      end if
       study%decks = opts%decks
       study%listing_file = opts%listing_file
       study%results_dir = opts%results_dir

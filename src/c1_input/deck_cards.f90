@@ -31,7 +31,7 @@ module deck_cards
    public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
    public :: g_belts, g_beltoptions
    public :: g_study, g_vary, g_values, g_criteria, study_methods, max_study_variables
-   public :: g_analog
+   public :: g_pulsemme, g_analog
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -65,6 +65,8 @@ module deck_cards
    integer, parameter :: g_surfaces = 31, g_interior = 32, g_contactoff = 33
    !> A study: the program varies its own inputs (C.8; docs/modification.md).
    integer, parameter :: g_study = 34, g_vary = 35, g_values = 36, g_criteria = 37
+   !> The pulse from an ISO-MME data set (ISO/TS 13499; docs/pulse.md).
+   integer, parameter :: g_pulsemme = 39
    !> Section D's two-occupant analog, a deck of its own (docs/analog.md).
    integer, parameter :: g_analog = 40
    integer, parameter :: n_groups = 40
@@ -131,6 +133,7 @@ contains
       integer :: i
       find_group = 0
       do i = 1, size(table)
+         if (table(i)%name == ' ') cycle   ! (a number not yet given to a group)
          if (table(i)%name == name) then
             find_group = i
             return
@@ -443,6 +446,23 @@ contains
          //'"t, xddot, yddot, phiddot" in s, g, g, deg/s^2; missing trailing columns are 0; lines ' &
          //'starting with # and a first line of column names are skipped. Replaces *PULSE.'
       call set_fields(t(g_pulsefile), [text_field('FILE', blank_required, 'CSV file name (columns 1-72)')])
+
+      t(g_pulsemme)%name = 'PULSEMME'
+      t(g_pulsemme)%kind = 'PULSE'
+      t(g_pulsemme)%title = 'Vehicle accelerations from an ISO-MME data set (ISO/TS 13499)'
+      t(g_pulsemme)%layout = layout_list
+      t(g_pulsemme)%min_cards = 2
+      t(g_pulsemme)%max_cards = 2
+      t(g_pulsemme)%note = 'Two cards. Card 1: the data set''s .mme file (a path as *PULSEFILE''s); its channel ' &
+         //'index and channel files are in the folder CHANNEL beside it. Card 2: in columns 1-20 the code of an ' &
+         //'acceleration channel (dimension AC; direction X: XDDOT, positive forward; Z: YDDOT, the sign ' &
+         //'reversed, ISO''s z pointing down), in columns 21-30 CFC, the channel class of the SAE J211 filter ' &
+         //'applied (blank or 0: none; 60, 180, 600, 1000), in columns 31-40 T0 (s), the data set''s time taken ' &
+         //'as the run''s t = 0 (blank: 0); samples before it are dropped, after filtering. Units g, m/s**2, ' &
+         //'ft/s**2, in/s**2; NOVALUE samples inside the record are bridged linearly (an error beyond 1 ms). ' &
+         //'Replaces *PULSE. docs/pulse.md.'
+      call set_fields(t(g_pulsemme), [text_field('TEXT', blank_required, &
+         'card 1: the .mme file; card 2: channel, CFC, T0')])
 
       t(g_endtests)%name = 'ENDTESTS'
       t(g_endtests)%title = 'End-of-program test thresholds (C.7)'

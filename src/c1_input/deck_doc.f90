@@ -42,14 +42,15 @@ contains
          '* Angles are in degrees and angular rates in degrees per second; stiffnesses are per radian.', &
          '  Other units are the report''s: inch, pound force, second; mass in lb*s^2/in.', &
          '* Several decks may be named on the command line. A later card group replaces the earlier group', &
-         '  of its kind (*PULSE and *PULSEFILE are one kind); within one file a group may appear once.', &
+         '  of its kind (*PULSE, *PULSEFILE and *PULSEMME are one kind); within one file a group may', &
+         '  appear once.', &
          '* Every problem in a deck is reported once, with file, line, group, card, field, columns and the', &
          '  text found; the exit status is then 2. A list group holds at most the number of cards its', &
          '  layout gives (a table of 100,000 or 1,000,000 points): the first card beyond it is reported', &
          '  and the group''s later cards are left out.', '', &
          '| group | layout | required | content |', '|---|---|---|---|'])
       do g = 1, n_groups
-         if (t(g)%name == ' ') cycle   ! a number another branch holds (none here)
+         if (t(g)%name == ' ') cycle   ! (a number not yet given to a group)
          call append_string(lines, '| `*'//trim(t(g)%name)//'` | '//layout_text(t(g))//' | ' &
             //trim(merge('yes', 'no ', t(g)%required))//' | '//md(trim(t(g)%title))//' |')
       end do
@@ -96,7 +97,11 @@ contains
             s = 'a card for any '//trim(g%index_name)//' of 1 to '//itoa(g%max_index)
          end if
       case (layout_list)
-         s = 'a list of '//itoa(g%min_cards)//' to '//grouped(g%max_cards)//' cards'
+         if (g%min_cards == g%max_cards) then
+            s = itoa(g%min_cards)//' cards'
+         else
+            s = 'a list of '//itoa(g%min_cards)//' to '//grouped(g%max_cards)//' cards'
+         end if
       case (layout_multi)
          s = 'a list of '//itoa(g%min_cards)//' to '//grouped(g%max_cards)//' cards, each with its ' &
              //trim(g%index_name)

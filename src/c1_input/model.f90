@@ -270,6 +270,7 @@ module model
       type(pulse_table_t) :: pulse_acc, pulse_vel, pulse_pos
       character(len=:), allocatable :: pulse_source  !< 'cards', 'none ...' or the CSV path
       logical :: pulse_from_file = .false.
+      type(string_t), allocatable :: pulse_inputs(:)   !< the files the pulse was read from (*PULSEFILE, *PULSEMME)
    end type vehicle_section_t
 
    !> Gravity (*GRAVITY).

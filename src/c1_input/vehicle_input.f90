@@ -6,15 +6,16 @@
 !! consistency with each other (the integral of the tables below each).
 module vehicle_input
    use kinds, only: wp, deg
-   use error_handling, only: error_t
-   use strings, only: itoa, num, escaped
+   use error_handling, only: error_t, error_append, exit_deck
+   use strings, only: itoa, num, escaped, read_int, read_real
    use text_io, only: string_t
-   use deck_cards, only: g_vehicle, g_gravity, g_pulse, g_pulserates, g_pulsepos, g_pulsefile
+   use deck_cards, only: g_vehicle, g_gravity, g_pulse, g_pulserates, g_pulsepos, g_pulsefile, g_pulsemme
    use deck_reader, only: deck_t, card_t
    use deck_fields, only: card_value, card_given, group_value, single_card
    use model_origin, only: model_origin_t, cards, field_given, first_card, list_card, card_ref, problem, warning
    use model, only: vehicle_section_t, pulse_table_t, environment_section_t
    use pulse_csv, only: read_pulse_csv
+   use pulse_mme, only: read_pulse_mme, mme_channel_classes
    use vehicle_motion, only: vehicle_motion_t, vehicle_state_t, vehicle_motion_init, vehicle_state_at
    implicit none
    private
@@ -55,6 +56,10 @@ contains
                              v%pulse_acc, err)
          v%pulse_source = escaped(path)   ! (for the listing: one line whatever the name holds)
          v%pulse_from_file = .true.
+         allocate (v%pulse_inputs(1))
+         v%pulse_inputs(1)%s = path
+      else if (single_card(deck, g_pulsemme)) then
+         call pulse_from_mme(deck, v, err)
       else if (deck%group(g_pulse)%present) then
          call table_from_group(deck, g_pulse, ['XDDOT  ', 'YDDOT  ', 'PHIDDOT'], v%pulse_acc, .true.)
          v%pulse_source = 'cards'
@@ -73,6 +78,67 @@ contains
          call table_from_group(deck, g_pulsepos, ['X  ', 'Y  ', 'PHI'], v%pulse_pos, .false.)
       end if
    end subroutine build_vehicle
+
+   !> *PULSEMME (docs/pulse.md): card 1 the data set's .mme file (a
+   !! path as *PULSEFILE's), card 2 the channel code (columns 1-20), the
+   !! filter's class CFC (21-30) and T0 (31-40), each checked as a field.
+   subroutine pulse_from_mme(deck, v, err)
+      type(deck_t), intent(in) :: deck
+      type(vehicle_section_t), intent(inout) :: v
+      type(error_t), intent(inout) :: err
+      type(card_t) :: c1, c2
+      type(string_t) :: named_at(2)
+      character(len=:), allocatable :: path, text, code, raw
+      real(wp) :: t_zero
+      integer :: cfc
+      logical :: good, card_ok
+      ! (checked as it is read, as a CSV pulse: a bad card leaves no table)
+      v%pulse_from_file = .true.
+      v%pulse_source = 'ISO-MME'
+      associate (g => deck%group(g_pulsemme))
+         if (g%n < 2) return   ! (the reader reported the missing card)
+         c1 = g%card(1)
+         c2 = g%card(2)
+      end associate
+      named_at(1)%s = deck%source_name(c1%source)%s//':'//itoa(c1%line)
+      named_at(2)%s = deck%source_name(c2%source)%s//':'//itoa(c2%line)
+      path = trim(adjustl(c1%text))
+      if (path(1:1) /= '/') path = deck%source_dir(c1%source)%s//path
+      text = c2%text//repeat(' ', 40)
+      code = trim(adjustl(text(1:20)))
+      good = len(code) > 0 .and. index(code, ' ') == 0
+      card_ok = good
+      if (.not. good) call error_append(err, exit_deck, named_at(2)%s//': *PULSEMME card 2, CHANNEL (columns ' &
+         //'1-20): found "'//escaped(trim(text(1:20)))//'"; expected a channel code, one word (such as ' &
+         //'10VEHC0000CGACXD)')
+      cfc = 0
+      raw = trim(adjustl(text(21:30)))
+      if (len(raw) > 0) then
+         call read_int(raw, cfc, good)
+         if (good) good = cfc == 0 .or. any(cfc == mme_channel_classes)
+         card_ok = card_ok .and. good
+         if (.not. good) call error_append(err, exit_deck, named_at(2)%s//': *PULSEMME card 2, CFC (columns ' &
+            //'21-30): found "'//escaped(raw)//'"; expected 0 (no filter), 60, 180, 600 or 1000')
+      end if
+      t_zero = 0.0_wp
+      raw = trim(adjustl(text(31:40)))
+      if (len(raw) > 0) then
+         call read_real(raw, t_zero, good)
+         if (good) good = abs(t_zero) <= 1.0e3_wp
+         card_ok = card_ok .and. good
+         if (.not. good) call error_append(err, exit_deck, named_at(2)%s//': *PULSEMME card 2, T0 (columns ' &
+            //'31-40): found "'//escaped(raw)//'"; expected a time from -1000 to 1000 (s)')
+      end if
+      if (len_trim(text(41:)) > 0) then
+         call error_append(err, exit_deck, named_at(2)%s//': *PULSEMME card 2: columns 41-72 must be blank; ' &
+            //'found "'//escaped(trim(adjustl(text(41:))))//'"')
+         card_ok = .false.
+      end if
+      if (.not. card_ok) return
+      call read_pulse_mme(path, code, cfc, t_zero, named_at, deck%spec(g_pulse), v%pulse_acc, v%pulse_source, &
+                          v%pulse_inputs, err)
+      v%pulse_source = 'ISO-MME '//v%pulse_source
+   end subroutine pulse_from_mme
 
    !> A time table from list cards: the time T and the columns named for
    !! x, y and the pitch (a column is given when some card gives it; all

@@ -301,15 +301,15 @@ contains
    !> Refuse (exit status 1) outputs that would overwrite an input: the
    !! listing (`listing_file`, '' = standard output) or the HDF5 file
    !! (`h5_file`, '' = none) being one of the decks (`-` = standard input)
-   !! or the pulse file (`pulse_file`, '' = none), or both outputs being the
+   !! or the pulse's files (`pulse_files`: the CSV file, the ISO-MME data set's), or both outputs being the
    !! same file (also standard output redirected to the HDF5 file). An
    !! output and an input are the same file when they have the same device
    !! and inode, whatever the names (`-o /dev/stdin`, `>> run.deck`); a
    !! character device (a terminal, /dev/null) is exempt: writing to it
    !! destroys nothing. Runs before any output file is created.
-   subroutine check_output_paths(decks, pulse_file, listing_file, h5_file, err)
-      type(string_t), intent(in) :: decks(:)
-      character(len=*), intent(in) :: pulse_file, listing_file, h5_file
+   subroutine check_output_paths(decks, pulse_files, listing_file, h5_file, err)
+      type(string_t), intent(in) :: decks(:), pulse_files(:)
+      character(len=*), intent(in) :: listing_file, h5_file
       type(error_t), intent(inout) :: err
       type(file_info_t) :: listing_info, h5_info
       logical :: listing_exists, h5_exists
@@ -338,7 +338,9 @@ contains
       do k = 1, size(decks)
          call refuse(decks(k)%s, 'input deck')
       end do
-      if (len(pulse_file) > 0) call refuse(pulse_file, 'pulse file')
+      do k = 1, size(pulse_files)
+         call refuse(pulse_files(k)%s, 'pulse file')
+      end do
    contains
       subroutine refuse(input, kind)
          character(len=*), intent(in) :: input, kind

@@ -66,7 +66,7 @@ module study_driver
       real(wp), allocatable :: points(:, :)   !< (variable, run); OPTIMIZE: none
       integer :: n_runs = 0
       character(len=:), allocatable :: identity   !< the deck's text (DIR/study.deck)
-      character(len=:), allocatable :: pulse_file   !< the base deck's *PULSEFILE ('' none)
+      type(string_t), allocatable :: pulse_file(:)   !< the files of the base deck's pulse (*PULSEFILE, *PULSEMME)
    end type study_case_t
 
    !> The rows of a study's runs: with a results directory, in its files,

@@ -8,7 +8,7 @@ module run_case_mod
    use accuracy_estimate, only: accuracy_warnings, corrector_warning, widened_ramp_warning
    use text_io, only: string_t, append_string
    use deck_reader, only: deck_t, deck_init, deck_add_file, deck_add_lines, deck_finish
-   use deck_cards, only: g_pulsefile, g_study
+   use deck_cards, only: g_pulsefile, g_pulsemme, g_study
    use default_deck, only: default_deck_lines
    use model_builder, only: build_model
    use model, only: model_t, nint_adams, nint_dopri
@@ -23,6 +23,7 @@ module run_case_mod
    use effect_events, only: event_t
    use run_report, only: listing_sink_t, listing_sink_start
    use history_sink, only: history_sink_t, history_sink_open
+   use mme_sink, only: mme_sink_t, mme_sink_open, mme_check_dir
    use output_files, only: output_file_t, check_output_paths, deliver_outputs
    use equations_of_motion, only: system_build
    use output_producers, only: registry_build
@@ -42,6 +43,8 @@ module run_case_mod
       type(listing_sink_t) :: listing
       type(history_sink_t) :: h5
       logical :: with_h5 = .false.
+      type(mme_sink_t) :: mme
+      logical :: with_mme = .false.
    contains
       procedure :: begin => case_begin
       procedure :: record => case_record
@@ -57,6 +60,7 @@ module run_case_mod
       type(string_t), allocatable :: decks(:)        !< in order; builtin_deck_name = the built-in deck
       character(len=:), allocatable :: listing_file  !< '' = the listing goes to standard output
       character(len=:), allocatable :: h5_file       !< '' = no HDF5 file
+      character(len=:), allocatable :: mme_dir       !< '' = no ISO-MME data set (--mme DIR)
       logical :: check_only = .false.                !< read and check the decks, run nothing
       !> the switches located inside a step (issue 15); off only in the
       !! tests that show what location buys (model_t%options)
@@ -170,8 +174,15 @@ contains
       ! targets at the end (output_files); nothing is created before the
       ! paths are known not to be inputs (--check checks them too)
       call check_output_paths(deck_files(req), pulse_file(deck, m), req%listing_file, req%h5_file, err)
+      if (.not. err%failed() .and. allocated(req%mme_dir)) then
+         if (len(req%mme_dir) > 0) call mme_check_dir(req%mme_dir, err)
+      end if
       if (err%failed() .or. req%check_only) return
-      call write_case(deck, m, req%listing_file, req%h5_file, err, res, notes)
+      if (allocated(req%mme_dir)) then
+         call write_case(deck, m, req%listing_file, req%h5_file, err, res, notes, req%mme_dir)
+      else
+         call write_case(deck, m, req%listing_file, req%h5_file, err, res, notes)
+      end if
       if (present(warnings)) then
          do k = 1, size(notes)
             call append_string(warnings, notes(k)%s)
@@ -183,11 +194,14 @@ contains
    !> Simulate model m of deck (C.2-C.7) and write its listing (listing_file,
    !! '' = standard output) and HDF5 file (h5_file, '' = none), whose paths
    !! the caller has checked; res: the run's summary; notes: the warnings
-   !! of the run's accuracy (the listing shows them too). err as run_case's.
-   subroutine write_case(deck, m, listing_file, h5_file, err, res, notes)
+   !! of the run's accuracy (the listing shows them too); mme_dir: the
+   !! folder of the run's ISO-MME data set (absent or '': none). err as
+   !! run_case's.
+   subroutine write_case(deck, m, listing_file, h5_file, err, res, notes, mme_dir)
       type(deck_t), intent(in) :: deck
       type(model_t), intent(in) :: m
       character(len=*), intent(in) :: listing_file, h5_file
+      character(len=*), intent(in), optional :: mme_dir
       type(error_t), intent(inout) :: err
       type(run_summary_t), intent(out) :: res
       type(string_t), allocatable, intent(out) :: notes(:)
@@ -199,6 +213,11 @@ contains
       type(output_file_t) :: h5_file_out
 
       allocate (notes(0), sink)
+      ! the ISO-MME data set's folder first: it holds no earlier output to
+      ! keep (no file of it is ever overwritten), so nothing is to be undone
+      if (present(mme_dir)) sink%with_mme = len(mme_dir) > 0
+      if (sink%with_mme) call mme_sink_open(sink%mme, mme_dir, m%title, err)
+      if (err%failed()) return
       call sink%listing%lst%create_text(listing_file, 'listing', err)
       if (err%failed()) return
       sink%with_h5 = len(h5_file) > 0
@@ -292,6 +311,7 @@ contains
       ! the HDF5 file's structure first (it is flushed at once), then the
       ! listing's first pages, what is known before the run, on the disk
       ! before the run starts: a run killed early leaves both (docs/usage.md)
+      if (this%with_mme) call this%mme%begin(sys, reg, first, err)
       if (this%with_h5) call this%h5%begin(sys, reg, first, err)
       call this%listing%begin(sys, reg, first, err)
       call this%listing%lst%flush(err)
@@ -307,6 +327,7 @@ contains
       ! read any more (a closed pipe) ends the run at once
       call this%listing%lst%flush(err)
       if (this%with_h5) call this%h5%record(frame, err)
+      if (this%with_mme) call this%mme%record(frame, err)
    end subroutine case_record
 
    subroutine case_event(this, e, err)
@@ -325,6 +346,7 @@ contains
       type(error_t) :: listing_err
       call this%listing%finish(summary, listing_err)
       if (this%with_h5) call this%h5%finish(summary, err)
+      if (this%with_mme) call this%mme%finish(summary, err)
       if (listing_err%failed() .and. .not. err%failed()) err = listing_err
    end subroutine case_finish
 
@@ -368,14 +390,16 @@ contains
       end do
    end function deck_files
 
-   !> The CSV file named on a *PULSEFILE card ('' when the pulse is not
-   !! read from a file).
-   function pulse_file(d, m) result(path)
+   !> The files the pulse was read from: the CSV file of a *PULSEFILE card,
+   !! the .mme file, channel index and channel file of *PULSEMME (none when
+   !! the pulse is on cards).
+   function pulse_file(d, m) result(paths)
       type(deck_t), intent(in) :: d
       type(model_t), intent(in) :: m
-      character(len=:), allocatable :: path
-      path = ''
-      if (d%group(g_pulsefile)%present .and. d%group(g_pulsefile)%n > 0) path = m%vehicle%pulse_source
+      type(string_t), allocatable :: paths(:)
+      allocate (paths(0))
+      if (.not. (d%group(g_pulsefile)%present .or. d%group(g_pulsemme)%present)) return
+      if (allocated(m%vehicle%pulse_inputs)) paths = m%vehicle%pulse_inputs
    end function pulse_file
 
    !> The deck's card images, for the HDF5 file.
