@@ -154,7 +154,10 @@ contains
       if (.not. err%failed() .and. deck_is_analog(deck)) then
          ! report Section D's analog instead of the simulation (docs/analog.md)
          if (present(warnings)) allocate (warnings(0))
-         call check_output_paths(deck_files(req), '', req%listing_file, req%h5_file, err)
+         block
+            type(string_t) :: no_pulse(0)   ! (an analog deck reads no pulse)
+            call check_output_paths(deck_files(req), no_pulse, req%listing_file, req%h5_file, err)
+         end block
          if (err%failed() .or. req%check_only) return
          call run_analog(deck, deck_text(deck), req%listing_file, req%h5_file, err)
          return
