@@ -12,7 +12,8 @@ module step_bookkeeping
    use acceleration_criteria, only: criteria_new
    use error_handling, only: error_t, error_set, error_prefix, exit_numerical
    use strings, only: num
-   use model, only: n_dof, n_seg, n_joint, n_injury, joint_partner, nend_rest, numerics_section_t, vehicle_section_t
+   use model, only: n_dof, n_seg, n_joint, n_injury, joint_partner, nend_rest, numerics_section_t, vehicle_section_t, &
+      fmvss_limits_t
    use equations_of_motion, only: crash_system_t, system_body_state, system_settle
    use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
    use ode_system, only: stepper_t, evaluate_outside_step
@@ -84,7 +85,7 @@ contains
    !! summary (the energy totals the balance is measured from, the initial
    !! joint angles the ranges start from, the criteria), and the room the
    !! accepted steps need.
-   subroutine books_init(this, sys, t, y, numerics, vehicle, summary, head_excursion)
+   subroutine books_init(this, sys, t, y, numerics, vehicle, summary, head_excursion, fmvss, duration)
       class(step_books_t), intent(out) :: this
       type(crash_system_t), intent(in) :: sys
       real(wp), intent(in) :: t, y(:)
@@ -92,6 +93,9 @@ contains
       type(vehicle_section_t), intent(in) :: vehicle
       type(run_summary_t), intent(inout) :: summary
       logical, intent(in), optional :: head_excursion   !< keep the head's excursion (C.8's HEADX)
+      type(fmvss_limits_t), intent(in), optional :: fmvss   !< the FMVSS 208 table's limits (*FMVSS208)
+      real(wp), intent(in), optional :: duration            !< the run's length (s): the channels' room
+      real(wp) :: room
       integer :: o, i, n_occ
       n_occ = size(sys%occupants)
       this%numerics = numerics
@@ -108,6 +112,12 @@ contains
          end associate
          summary%occ(o)%head_criteria = criteria_new()
          summary%occ(o)%chest_criteria = criteria_new(with_hic=.false.)   ! GSI and the 3 ms clip
+         ! the channels of the FMVSS 208 table (fmvss_table), with room for the run
+         room = 0.0_wp
+         if (present(duration)) room = duration
+         if (present(fmvss)) summary%occ(o)%fmvss_limits = fmvss
+         call summary%occ(o)%channels%head%reserve(2, room)
+         call summary%occ(o)%channels%chest%reserve(2, room)
          ! Table 5's force criteria only when the occupant's deck gives a limit
          ! (they cost the point forces and the joint reactions at every
          ! accepted step)
@@ -328,6 +338,8 @@ contains
       call head_chest_motion(occ%body, st%c, st%s, st%zdot, zdd, a_head, a_chest, v_head, v_chest)
       call os%head_criteria%add_motion(t, a_head/g_std, v_head/g_std)
       call os%chest_criteria%add_motion(t, a_chest/g_std, v_chest/g_std)
+      call os%channels%head%add_motion(t, a_head/g_std, v_head/g_std)
+      call os%channels%chest%add_motion(t, a_chest/g_std, v_chest/g_std)
       call raise(os%head_max, g_std*os%head_criteria%peak, os%head_criteria%t_peak)
       call raise(os%chest_max, g_std*os%chest_criteria%peak, os%chest_criteria%t_peak)
    end subroutine sample_criteria
