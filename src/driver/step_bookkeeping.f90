@@ -20,6 +20,8 @@ module step_bookkeeping
    use effect_base, only: body_state_t
    use effect_events, only: accept_result_t, event_t
    use point_forces, only: point_force_list_t, point_force_reserve
+   use joint_reactions, only: segment_cg_states, joint_reactions_at, joint_moment_at
+   use body_kinematics, only: point_state_t
    use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined, force_injury_event, event_tension, &
       event_compression, event_shear
    use joint_coupling, only: relative_angle
@@ -118,6 +120,14 @@ contains
          if (present(fmvss)) summary%occ(o)%fmvss_limits = fmvss
          call summary%occ(o)%channels%head%reserve(2, room)
          call summary%occ(o)%channels%chest%reserve(2, room)
+         ! the neck's and femur's loads from the joint reactions, which the
+         ! table reads (a run without it, a library caller's: none)
+         if (present(fmvss)) then
+            summary%occ(o)%channels%neck_kept = .true.
+            summary%occ(o)%channels%femur_kept = .true.
+            call summary%occ(o)%channels%neck%reserve(2, room)
+            call summary%occ(o)%channels%femur%reserve(1, room)
+         end if
          ! Table 5's force criteria only when the occupant's deck gives a limit
          ! (they cost the point forces and the joint reactions at every
          ! accepted step)
@@ -140,7 +150,7 @@ contains
       ! Nothing allocated in the step loop (docs/architecture.md): room for
       ! the point forces, one per segment of each effect from outside (the
       ! most any reports: gravity's)
-      if (any([(summary%occ(o)%force_checked, o=1, n_occ)])) &
+      if (any([(summary%occ(o)%force_checked .or. summary%occ(o)%channels%neck_kept, o=1, n_occ)])) &
          call point_force_reserve(this%forces, n_seg*maxval([(count([(sys%occupants(o)%effects(i)%e%external, &
                                                                   i=1, size(sys%occupants(o)%effects))]), o=1, n_occ)]))
    end subroutine books_init
@@ -211,9 +221,14 @@ contains
             ! HEADX), only where a study asks for it
             if (this%head_excursion) call raise(os%head_excursion, &
                head_interior_x(occ%body, st%z, st%c, st%s, st%vehicle%pos) - os%head_x0, t)
-            ! Table 5's force criteria, with the memory the step was taken with
+            ! Table 5's force criteria and the FMVSS table's neck and femur
+            ! loads, with the memory the step was taken with (the point
+            ! forces once for both)
+            if (os%force_checked .or. os%channels%neck_kept) call occupant_point_forces(occ, st, y, this%forces)
             if (os%force_checked) &
-               call force_criteria(this, occ, o, t, y, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
+               call force_criteria(this, occ, o, t, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
+            if (os%channels%neck_kept) &
+               call sample_loads(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), this%forces, t, os)
             if (estimated) then
                call os%accuracy%add_step(t, stepper%local_error(occ%z_offset + 1:occ%z_offset + n_dof), &
                                          stepper%local_error(occ%zdot_offset + 1:occ%zdot_offset + n_dof))
@@ -322,6 +337,11 @@ contains
          associate (occ => sys%occupants(o), os => summary%occ(o), st => this%st)
             call occupant_state(occ, t, y, st)
             call sample_criteria(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), t, os)
+            ! the loads' second sample, with the new memory's forces
+            if (os%channels%neck_kept) then
+               call occupant_point_forces(occ, st, y, this%forces)
+               call sample_loads(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), this%forces, t, os)
+            end if
          end associate
       end do
    end subroutine sample_after_jump
@@ -379,16 +399,15 @@ contains
    !> Table 5's criteria of occupant o at the step accepted at (t, y),
    !! where its z'' is zdd: the bone loads against its limits, an event the
    !! first time each is passed, the maxima kept.
-   subroutine force_criteria(this, occ, o, t, y, zdd, summary, sinks)
+   subroutine force_criteria(this, occ, o, t, zdd, summary, sinks)
       class(step_books_t), intent(inout) :: this
       type(occupant_t), intent(in) :: occ
       integer, intent(in) :: o
-      real(wp), intent(in) :: t, y(:), zdd(n_dof)
+      real(wp), intent(in) :: t, zdd(n_dof)
       type(run_summary_t), intent(inout) :: summary
       type(sink_list_t), intent(inout) :: sinks
       type(bone_loads_t) :: bl
       integer :: i
-      call occupant_point_forces(occ, this%st, y, this%forces)
       bl = bone_loads(occ%body, this%st%z, this%st%zdot, zdd, this%forces)
       do i = 1, n_joint
          call raise(summary%occ(o)%ft_max(i), bl%ft(i), t)
@@ -405,6 +424,36 @@ contains
          end if
       end do
    end subroutine force_criteria
+
+   !> The neck's and femur's loads at the accepted point t for the FMVSS 208
+   !! table (fmvss_table), in SI: from the joint reactions (A-INJ) with the
+   !! point forces at hand, the neck's axial force (FT_4 on the head's axis,
+   !! + tension) and its flexion/extension moment (the moment the torso
+   !! exerts on the head about the neck joint, counter-clockwise: flexion
+   !! lowers the neck's relative angle, docs/anthropometry.md, so the torso
+   !! holding a head that pitches forward is + flexion), and one femur's
+   !! axial compression (the hip's reaction on the thigh's axis, Table 5's
+   !! FC_7, halved: segment 7 is both thighs). docs/injury.md.
+   pure subroutine sample_loads(occ, st, zdd, forces, t, os)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: zdd(n_dof), t
+      type(point_force_list_t), intent(in) :: forces
+      type(occupant_summary_t), intent(inout) :: os
+      real(wp), parameter :: newton = 4.4482216152605_wp       ! N per lbf
+      real(wp), parameter :: newton_metre = newton*0.0254_wp   ! N m per lbf in
+      real(wp), parameter :: thighs = 2.0_wp                  ! femurs in segment 7
+      integer, parameter :: hip = 1, neck = 4, head = 4, thigh = 7
+      type(point_state_t) :: cg(n_seg)
+      real(wp) :: r(2, n_joint), axial, moment, femur
+      cg = segment_cg_states(occ%body, st%z, st%zdot, zdd)
+      r = joint_reactions_at(occ%body, cg, forces)
+      axial = -(r(1, neck)*st%c(head) + r(2, neck)*st%s(head))
+      moment = joint_moment_at(occ%body, st%z, st%zdot, zdd, cg, forces, neck)
+      femur = r(1, hip)*st%c(thigh) + r(2, hip)*st%s(thigh)
+      call os%channels%neck%add(t, [newton*axial, newton_metre*moment])
+      call os%channels%femur%add(t, [newton*femur/thighs])
+   end subroutine sample_loads
 
    !> Criterion c (1 tension, 2 compression, 3 shear) of occupant o's joint
    !! or bone index at time t: an event the first time value passes a
