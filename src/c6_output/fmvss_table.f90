@@ -17,7 +17,8 @@
 !!   the peaks of tension and compression (S6.6(b));
 !! - femur (where kept): the thigh's axial force (N, + compression), CFC
 !!   600 (S6.5);
-!! - chest deflection (where kept): mm, CFC 180 (S6.4), and the viscous
+!! - chest deflection (where an effect deflects the chest's material 12):
+!!   mm, CFC 180 (S6.4), and the viscous
 !!   criterion VC = max of 1.3 V(t) D(t)/0.229 m (deflection rate times
 !!   the deflection over the 50th male's chest depth; no FMVSS 208 limit).
 !!

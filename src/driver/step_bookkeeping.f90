@@ -15,7 +15,7 @@ module step_bookkeeping
    use model, only: n_dof, n_seg, n_joint, n_injury, joint_partner, nend_rest, numerics_section_t, vehicle_section_t, &
       fmvss_limits_t
    use equations_of_motion, only: crash_system_t, system_body_state, system_settle
-   use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
+   use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle, occupant_chest_deflection
    use ode_system, only: stepper_t, evaluate_outside_step
    use effect_base, only: body_state_t
    use effect_events, only: accept_result_t, event_t
@@ -127,6 +127,10 @@ contains
             summary%occ(o)%channels%femur_kept = .true.
             call summary%occ(o)%channels%neck%reserve(2, room)
             call summary%occ(o)%channels%femur%reserve(1, room)
+            ! the chest's deflection where an effect deflects its material
+            summary%occ(o)%channels%deflection_kept = &
+               any([(sys%occupants(o)%effects(i)%e%deflects_chest, i=1, size(sys%occupants(o)%effects))])
+            if (summary%occ(o)%channels%deflection_kept) call summary%occ(o)%channels%deflection%reserve(1, room)
          end if
          ! Table 5's force criteria only when the occupant's deck gives a limit
          ! (they cost the point forces and the joint reactions at every
@@ -229,6 +233,9 @@ contains
                call force_criteria(this, occ, o, t, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
             if (os%channels%neck_kept) &
                call sample_loads(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), this%forces, t, os)
+            ! the chest's deflection (mm) under the torso belt and its contacts
+            if (os%channels%deflection_kept) &
+               call os%channels%deflection%add(t, [25.4_wp*occupant_chest_deflection(occ, st, y)])
             if (estimated) then
                call os%accuracy%add_step(t, stepper%local_error(occ%z_offset + 1:occ%z_offset + n_dof), &
                                          stepper%local_error(occ%zdot_offset + 1:occ%zdot_offset + n_dof))
@@ -342,6 +349,8 @@ contains
                call occupant_point_forces(occ, st, y, this%forces)
                call sample_loads(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), this%forces, t, os)
             end if
+            if (os%channels%deflection_kept) &
+               call os%channels%deflection%add(t, [25.4_wp*occupant_chest_deflection(occ, st, y)])
          end associate
       end do
    end subroutine sample_after_jump

@@ -3,8 +3,8 @@ computation of its own from the HDF5 file: the unfiltered 10 kHz channels
 (/channels) filtered here as SAE J211-1 specifies (numpy, written apart from
 src/c6_output/channel_filter.f90, the start-up as docs/injury.md states it),
 then HIC15 and HIC36 by brute force over every window of the grid, GSI, the
-cumulative 3 ms clip, Nij with FMVSS 208 S6.6's intercepts, the neck's and
-femur's peaks, each against /summary/criteria (value, time, limit, pass);
+cumulative 3 ms clip, the chest's deflection and VC, Nij with FMVSS 208
+S6.6's intercepts, the neck's and femur's peaks, each against /summary/criteria (value, time, limit, pass);
 the unfiltered column against /summary/injury_criteria.
 
 Usage: fmvss_criteria_check.py HSRI2D DECK WORK_DIRECTORY
@@ -122,6 +122,7 @@ def main():
         chest = ch["chest_acceleration"][()]
         neck = ch["neck_loads"][()]
         femur = ch["femur_force"][()]
+        deflection = ch["chest_deflection"][()]
         unf = f["summary/injury_criteria"]
         unfiltered = dict(zip(list(unf.attrs["columns"]), unf[0, :]))
 
@@ -175,6 +176,14 @@ def main():
     ff = j211(femur, 600, dt)
     k = int(np.argmax(ff))
     check("femur_compression", max(ff[k], 0.0), 1e-9, at=t[k] if ff[k] > 0 else None, cfc="CFC 600", unit="N")
+
+    d = j211(deflection, 180, dt)
+    k = int(np.argmax(d))
+    check("chest_deflection", d[k], 1e-9, at=t[k], cfc="CFC 180", unit="mm")
+    rate = np.gradient(d, t, edge_order=1) / 1000.0          # m/s (central inside, one-sided at the ends)
+    vc = 1.3 * rate * (d / 1000.0) / 0.229
+    k = int(np.argmax(vc))
+    check("chest_vc", vc[k], 1e-9, at=t[k], cfc="CFC 180", unit="m/s")
 
     # the accepted steps' unfiltered values beside them
     for name, key in (("head_hic15", "head_hic15"), ("head_hic36", "head_hic36"), ("head_gsi", "head_gsi"),
