@@ -253,6 +253,11 @@ contains
       do k = 1, size(occ%effects)
          associate (e => occ%effects(k)%e)
             if (.not. e%external) cycle
+            ! an effect inert for certain at st applies no force (its proximity
+            ! guard, D-C29: a far contact pair), so it is not asked
+            if (e%guard%kind /= guard_none) then
+               if (guard_holds(e%guard, st)) cycle
+            end if
             xo = occ%extra_offset(k)
             ao = occ%aux_offset(k)
             call e%point_forces(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), list)
