@@ -172,6 +172,11 @@ contains
          end select
       end associate
       e%last_segment = maxval(e%geom(1:e%n_sections)%segment)
+      ! its sections' forces act on their segments only (lower and centre torso, upper torso)
+      e%acts_on = .false.
+      do k = 1, e%n_sections
+         e%acts_on(e%geom(k)%segment) = .true.
+      end do
       e%needs_vehicle = .true.
       e%external = .true.
       e%has_energy = .true.

@@ -175,6 +175,8 @@ contains
       integer :: q
       e%name = 'contact_'//itoa(i)//'_'//itoa(k)
       e%title = 'contact '//itoa(i)//' on '//itoa(k)//' (C.4.f)'
+      e%acts_on = .false.
+      e%acts_on(arc_segment(i)) = .true.     ! its force acts on the body point's segment
       e%i = i
       e%k = k
       e%body = body

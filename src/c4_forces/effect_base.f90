@@ -46,7 +46,7 @@
 !! proximity_guard, output_series; effect_slots holds effects in a list.
 module effect_base
    use kinds, only: wp, i8
-   use model, only: n_dof
+   use model, only: n_dof, n_seg
    use body_state, only: body_state_t
    use effect_energies, only: n_energy_kinds
    use effect_events, only: accept_result_t
@@ -92,6 +92,10 @@ module effect_base
       !> deflects the chest's body material (material 12), which
       !! `chest_deflection` reports (issue 18: the FMVSS 208 table)
       logical :: deflects_chest = .false.
+      !> the segments its point forces may act on (all unless it says):
+      !! the FMVSS 208 table's neck and femur loads ask only the effects
+      !! that can load the head or the legs (occupant_point_forces)
+      logical :: acts_on(n_seg) = .true.
       !> where the effect is inert for certain, tested before each dispatch (D-C29)
       type(proximity_guard_t) :: guard
       !> the evaluation that ends a step goes through add_forces_kept, which

@@ -242,17 +242,23 @@ contains
    end subroutine occupant_frame
 
    !> The forces from outside the body that the occupant's effects apply at
-   !! st (for the joint reactions, A-INJ).
-   pure subroutine occupant_point_forces(occ, st, y, list)
+   !! st (for the joint reactions, A-INJ); with segments, only those of the
+   !! effects that may act on one of them (effect_t%acts_on: the joint
+   !! reactions of a distal side need only its own forces).
+   pure subroutine occupant_point_forces(occ, st, y, list, segments)
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: y(:)
       type(point_force_list_t), intent(inout) :: list
+      logical, intent(in), optional :: segments(n_seg)
       integer :: k, xo, ao
       list%n = 0      ! (its storage kept: nothing allocated once it is large enough)
       do k = 1, size(occ%effects)
          associate (e => occ%effects(k)%e)
             if (.not. e%external) cycle
+            if (present(segments)) then
+               if (.not. any(e%acts_on .and. segments)) cycle
+            end if
             ! an effect inert for certain at st applies no force (its proximity
             ! guard, D-C29: a far contact pair), so it is not asked
             if (e%guard%kind /= guard_none) then

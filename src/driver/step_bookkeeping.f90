@@ -39,6 +39,9 @@ module step_bookkeeping
 
    !> A balance error below this fraction of its scale is rounding.
    real(wp), parameter :: rounding = 1.0e-9_wp
+   !> The distal sides of the neck (the head) and the hip (thigh, shank):
+   !! the segments whose forces the FMVSS 208 table's loads need (sample_loads)
+   logical, parameter :: loads_segments(n_seg) = [.false., .false., .false., .true., .false., .false., .true., .true.]
 
    type :: step_books_t
       type(end_state_t), allocatable :: end_state(:)   !< each occupant's rest timer (C.7)
@@ -228,7 +231,11 @@ contains
             ! Table 5's force criteria and the FMVSS table's neck and femur
             ! loads, with the memory the step was taken with (the point
             ! forces once for both)
-            if (os%force_checked .or. os%channels%neck_kept) call occupant_point_forces(occ, st, y, this%forces)
+            if (os%force_checked) then
+               call occupant_point_forces(occ, st, y, this%forces)
+            else if (os%channels%neck_kept) then
+               call occupant_point_forces(occ, st, y, this%forces, loads_segments)
+            end if
             if (os%force_checked) &
                call force_criteria(this, occ, o, t, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
             if (os%channels%neck_kept) &
@@ -346,7 +353,7 @@ contains
             call sample_criteria(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), t, os)
             ! the loads' second sample, with the new memory's forces
             if (os%channels%neck_kept) then
-               call occupant_point_forces(occ, st, y, this%forces)
+               call occupant_point_forces(occ, st, y, this%forces, loads_segments)
                call sample_loads(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), this%forces, t, os)
             end if
             if (os%channels%deflection_kept) &
