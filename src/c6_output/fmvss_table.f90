@@ -58,6 +58,8 @@ module fmvss_table
 
    !> An occupant's channels, sampled at its accepted steps.
    type :: fmvss_channels_t
+      !> the table is made (a run whose outputs go somewhere: run_loop)
+      logical :: kept = .false.
       type(channel_record_t) :: head, chest          !< acceleration vectors (g)
       logical :: neck_kept = .false., femur_kept = .false., deflection_kept = .false.
       type(channel_record_t) :: neck                 !< axial force (N, + tension), moment (N m, + flexion)

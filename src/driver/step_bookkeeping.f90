@@ -98,7 +98,8 @@ contains
       type(vehicle_section_t), intent(in) :: vehicle
       type(run_summary_t), intent(inout) :: summary
       logical, intent(in), optional :: head_excursion   !< keep the head's excursion (C.8's HEADX)
-      type(fmvss_limits_t), intent(in), optional :: fmvss   !< the FMVSS 208 table's limits (*FMVSS208)
+      !> the FMVSS 208 table's limits (*FMVSS208): its channels are kept (absent: no table)
+      type(fmvss_limits_t), intent(in), optional :: fmvss
       real(wp), intent(in), optional :: duration            !< the run's length (s): the channels' room
       real(wp) :: room
       integer :: o, i, n_occ
@@ -118,14 +119,15 @@ contains
          summary%occ(o)%head_criteria = criteria_new()
          summary%occ(o)%chest_criteria = criteria_new(with_hic=.false.)   ! GSI and the 3 ms clip
          ! the channels of the FMVSS 208 table (fmvss_table), with room for the run
+         ! (a run without it, whose outputs go nowhere, a study's: none)
          room = 0.0_wp
          if (present(duration)) room = duration
-         if (present(fmvss)) summary%occ(o)%fmvss_limits = fmvss
-         call summary%occ(o)%channels%head%reserve(2, room)
-         call summary%occ(o)%channels%chest%reserve(2, room)
-         ! the neck's and femur's loads from the joint reactions, which the
-         ! table reads (a run without it, a library caller's: none)
          if (present(fmvss)) then
+            summary%occ(o)%fmvss_limits = fmvss
+            summary%occ(o)%channels%kept = .true.
+            call summary%occ(o)%channels%head%reserve(2, room)
+            call summary%occ(o)%channels%chest%reserve(2, room)
+            ! the neck's and femur's loads from the joint reactions
             summary%occ(o)%channels%neck_kept = .true.
             summary%occ(o)%channels%femur_kept = .true.
             call summary%occ(o)%channels%neck%reserve(2, room)
@@ -374,8 +376,10 @@ contains
       call head_chest_motion(occ%body, st%c, st%s, st%zdot, zdd, a_head, a_chest, v_head, v_chest)
       call os%head_criteria%add_motion(t, a_head/g_std, v_head/g_std)
       call os%chest_criteria%add_motion(t, a_chest/g_std, v_chest/g_std)
-      call os%channels%head%add_motion(t, a_head/g_std, v_head/g_std)
-      call os%channels%chest%add_motion(t, a_chest/g_std, v_chest/g_std)
+      if (os%channels%kept) then
+         call os%channels%head%add_motion(t, a_head/g_std, v_head/g_std)
+         call os%channels%chest%add_motion(t, a_chest/g_std, v_chest/g_std)
+      end if
       call raise(os%head_max, g_std*os%head_criteria%peak, os%head_criteria%t_peak)
       call raise(os%chest_max, g_std*os%chest_criteria%peak, os%chest_criteria%t_peak)
    end subroutine sample_criteria
