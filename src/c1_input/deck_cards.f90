@@ -31,7 +31,7 @@ module deck_cards
    public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
    public :: g_belts, g_beltoptions
    public :: g_study, g_vary, g_values, g_criteria, study_methods, max_study_variables
-   public :: g_pulsemme, g_analog
+   public :: g_fmvss, g_pulsemme, g_analog
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -65,6 +65,8 @@ module deck_cards
    integer, parameter :: g_surfaces = 31, g_interior = 32, g_contactoff = 33
    !> A study: the program varies its own inputs (C.8; docs/modification.md).
    integer, parameter :: g_study = 34, g_vary = 35, g_values = 36, g_criteria = 37
+   !> FMVSS 208's limits for the summary's table (issue 18; docs/injury.md).
+   integer, parameter :: g_fmvss = 38
    !> The pulse from an ISO-MME data set (ISO/TS 13499; docs/pulse.md).
    integer, parameter :: g_pulsemme = 39
    !> Section D's two-occupant analog, a deck of its own (docs/analog.md).
@@ -489,6 +491,22 @@ contains
       t(g_numerics)%field(1)%default = real(1, wp)
       t(g_numerics)%field(2)%default = real(1, wp)
       t(g_numerics)%field(4)%default = real(1, wp)
+
+      t(g_fmvss)%name = 'FMVSS208'
+      t(g_fmvss)%title = 'FMVSS 208 limits of the summary''s table (50th male; beyond the report)'
+      t(g_fmvss)%note = 'The limits the table "FMVSS 208 (50th male)" of the summary judges the run by, in SI as ' &
+         //'FMVSS 208 (49 CFR 571.208, S6) states them; the defaults are its 50th-percentile male''s. The values ' &
+         //'come from the filtered channels (SAE J211-1: head CFC 1000, chest CFC 180, neck and femur CFC 600): ' &
+         //'HIC15, the chest''s 3 ms clip, its deflection, Nij, the neck''s tension and compression, the femur''s ' &
+         //'compression (docs/injury.md).'
+      call set_fields(t(g_fmvss), [ &
+         real_field('HIC15', '-', one, blank_default, 700.0_wp, zero, big, 'HIC15 limit', .true.), &
+         real_field('CLIP3MS', 'g', one, blank_default, 60.0_wp, zero, big, 'chest 3 ms clip limit', .true.), &
+         real_field('CHESTD', 'mm', one, blank_default, 63.0_wp, zero, big, 'chest deflection limit', .true.), &
+         real_field('NIJ', '-', one, blank_default, 1.0_wp, zero, big, 'Nij limit', .true.), &
+         real_field('NECKT', 'N', one, blank_default, 4170.0_wp, zero, big, 'neck tension limit', .true.), &
+         real_field('NECKC', 'N', one, blank_default, 4000.0_wp, zero, big, 'neck compression limit', .true.), &
+         real_field('FEMUR', 'N', one, blank_default, 10008.0_wp, zero, big, 'femur compression limit', .true.)])
 
       t(g_materials)%name = 'MATERIALS'
       t(g_materials)%title = 'Materials, Table 4'

@@ -16,6 +16,7 @@ module model
    public :: nend_time, nend_contact, nend_injury, nend_rest, end_option_name
    public :: stop_curve_t, restraint_t, model_t, pulse_table_t
    public :: options_section_t, time_section_t, numerics_section_t, body_section_t, joints_section_t
+   public :: fmvss_limits_t
    public :: injury_section_t, vehicle_section_t, environment_section_t, end_tests_section_t
    public :: interior_section_t
    public :: materials_section_t, loading_section_t, max_curves, n_belt_section
@@ -133,6 +134,18 @@ module model
       real(wp) :: energy_tol = 0.0_wp       !< allowed energy-balance error / largest body kinetic energy
       logical :: energy_continue = .false.  !< go on when the balance fails
    end type numerics_section_t
+
+   !> *FMVSS208: the limits of the summary's FMVSS 208 table, in SI as
+   !! FMVSS 208 S6 states them (defaults: its 50th-percentile male's).
+   type :: fmvss_limits_t
+      real(wp) :: hic15 = 700.0_wp
+      real(wp) :: clip3ms = 60.0_wp              !< g
+      real(wp) :: chest_deflection = 63.0_wp     !< mm
+      real(wp) :: nij = 1.0_wp
+      real(wp) :: neck_tension = 4170.0_wp       !< N
+      real(wp) :: neck_compression = 4000.0_wp   !< N
+      real(wp) :: femur = 10008.0_wp             !< N, compression
+   end type fmvss_limits_t
 
    !> The occupant's body (Table 1 segments and contact arcs) and its initial
    !! position (C.1): angles and rates relative to the interior.
@@ -303,6 +316,7 @@ module model
       type(end_tests_section_t) :: end_tests
       type(seat_section_t) :: seat
       type(interior_section_t) :: interior
+      type(fmvss_limits_t) :: fmvss
       !> Things worth a user's attention that are not errors (listing and stderr).
       type(string_t), allocatable :: warnings(:)
    end type model_t

@@ -24,6 +24,7 @@ module model_builder
    use seat_input, only: build_seat, check_seat, rigid_beam_problem
    use interior_input, only: build_interior, check_interior, check_scene
    use seat_beam_statics, only: rigid_beam_statics
+   use fmvss_input, only: build_fmvss
    implicit none
    private
 
@@ -56,6 +57,7 @@ contains
       m%end_tests = build_end_tests(deck)
       call build_seat(deck, m%body, m%materials, m%seat)
       call build_interior(deck, m%interior)
+      call build_fmvss(deck, m%fmvss)
       call check_model(m, deck_origin(deck), err, vehicle_problems)
    end subroutine build_model
 

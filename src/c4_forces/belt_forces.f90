@@ -98,6 +98,7 @@ module belt_forces
    contains
       procedure :: add_forces => belt_add_forces
       procedure :: add_forces_kept => belt_add_forces_kept
+      procedure :: chest_deflection => belt_chest_deflection
       procedure :: accept => belt_accept
       procedure :: switches => belt_switches
       procedure :: energy => belt_energy
@@ -171,6 +172,11 @@ contains
          end select
       end associate
       e%last_segment = maxval(e%geom(1:e%n_sections)%segment)
+      ! its sections' forces act on their segments only (lower and centre torso, upper torso)
+      e%acts_on = .false.
+      do k = 1, e%n_sections
+         e%acts_on(e%geom(k)%segment) = .true.
+      end do
       e%needs_vehicle = .true.
       e%external = .true.
       e%has_energy = .true.
@@ -251,6 +257,7 @@ contains
                if (j == belt_card_lap2) jl = 1          ! the lap belt's second side: the lap law
                law(n) = scaled_law(belt_law(m%loading, jl), factor)
                l = merge(material_abdomen, material_chest, j == 1 .or. j == belt_card_lap2)
+               if (l == material_chest .and. m%loading%material_curve(l) > 0) e%deflects_chest = .true.
                if (m%loading%material_curve(l) > 0) then       ! else the body is rigid (D-B6)
                   n = n + 1
                   ch%body(q) = n
@@ -288,6 +295,29 @@ contains
          end associate
       end do
    end function belt_section_state
+
+   !> The chest's deflection under the torso belt (issue 18): the largest
+   !! share of the shared deflection (D-B2) that the chest's material (12)
+   !! takes under a torso section at st (in; 0 for a rigid chest).
+   pure real(wp) function belt_chest_deflection(this, st, extra, aux) result(d)
+      class(belt_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(belt_state_t) :: bs
+      integer :: k, q
+      associate (u1 => size(extra))
+      end associate
+      d = 0.0_wp
+      if (.not. this%deflects_chest) return
+      bs = belt_section_state(this, st, aux)
+      do k = 1, this%n_sections
+         if (this%card(k) == 1 .or. this%card(k) == belt_card_lap2) cycle      ! the lap belt's: the abdomen
+         q = this%position(k)
+         associate (ch => this%chain(this%chain_of(k)))
+            if (ch%body(q) > 0) d = max(d, bs%split(this%chain_of(k))%x(ch%body(q)))
+         end associate
+      end do
+   end function belt_chest_deflection
 
    !> Each section's tension on the body (its chain's F) as a force -F e
    !! at the point where it acts (belt_kinematics_t), turned from the

@@ -133,6 +133,7 @@ module contact_forces
       procedure :: energy => pair_energy
       procedure :: outputs => pair_outputs
       procedure :: output_values => pair_output_values
+      procedure :: chest_deflection => pair_chest_deflection
       procedure :: frame_values => pair_frame_values
       procedure :: point_forces => pair_point_forces
       procedure :: describe => pair_describe
@@ -174,6 +175,8 @@ contains
       integer :: q
       e%name = 'contact_'//itoa(i)//'_'//itoa(k)
       e%title = 'contact '//itoa(i)//' on '//itoa(k)//' (C.4.f)'
+      e%acts_on = .false.
+      e%acts_on(arc_segment(i)) = .true.     ! its force acts on the body point's segment
       e%i = i
       e%k = k
       e%body = body
@@ -185,6 +188,7 @@ contains
          q = q + 1
          laws(q) = body_law
          e%has_body = .true.
+         e%deflects_chest = i == 3          ! the chest's material, 12 (Table 11)
       end if
       q = q + 1
       laws(q) = law
@@ -1015,6 +1019,22 @@ contains
                              //'backing, or the column''s stroke)', 3)
       series(3)%col = [column('body', 'in'), column('surface', 'in'), column('backing', 'in')]
    end function pair_outputs
+
+   !> The chest's deflection on this surface (issue 18): the share of the
+   !! shared deflection (figure 23, Table 11) the chest's material (12)
+   !! takes at st (in), for the chest's body point (i = 3) only.
+   pure real(wp) function pair_chest_deflection(this, st, extra, aux) result(d)
+      class(contact_pair_effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      type(pair_state_t) :: ps
+      associate (u1 => size(extra))
+      end associate
+      d = 0.0_wp
+      if (.not. this%deflects_chest) return
+      call pair_eval(this, st, aux, ps)
+      d = max(ps%split%x(1), 0.0_wp)
+   end function pair_chest_deflection
 
    pure subroutine pair_output_values(this, item, st, extra, aux, values)
       class(contact_pair_effect_t), intent(in) :: this

@@ -46,7 +46,7 @@
 !! proximity_guard, output_series; effect_slots holds effects in a list.
 module effect_base
    use kinds, only: wp, i8
-   use model, only: n_dof
+   use model, only: n_dof, n_seg
    use body_state, only: body_state_t
    use effect_energies, only: n_energy_kinds
    use effect_events, only: accept_result_t
@@ -89,6 +89,13 @@ module effect_base
       logical :: has_energy(n_energy_kinds) = .false.
       !> applies forces from outside the body, which `point_forces` reports
       logical :: external = .false.
+      !> deflects the chest's body material (material 12), which
+      !! `chest_deflection` reports (issue 18: the FMVSS 208 table)
+      logical :: deflects_chest = .false.
+      !> the segments its point forces may act on (all unless it says):
+      !! the FMVSS 208 table's neck and femur loads ask only the effects
+      !! that can load the head or the legs (occupant_point_forces)
+      logical :: acts_on(n_seg) = .true.
       !> where the effect is inert for certain, tested before each dispatch (D-C29)
       type(proximity_guard_t) :: guard
       !> the evaluation that ends a step goes through add_forces_kept, which
@@ -112,6 +119,7 @@ module effect_base
       procedure :: initial_extra => effect_initial_extra
       procedure :: failure_text => effect_failure_text
       procedure :: point_forces => effect_point_forces
+      procedure :: chest_deflection => effect_chest_deflection
       procedure :: peaks => effect_peaks
       procedure :: study_peaks => effect_study_peaks
       procedure :: switches => effect_switches
@@ -232,6 +240,18 @@ contains
       associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux), u4 => list%n)
       end associate
    end subroutine effect_point_forces
+
+   !> The largest deflection (in) of the chest's body material (material 12)
+   !! that the effect's chains share at st (issue 18): 0 for the default
+   !! effect, which deflects no chest (deflects_chest).
+   pure real(wp) function effect_chest_deflection(this, st, extra, aux) result(d)
+      class(effect_t), intent(in) :: this
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: extra(:), aux(:)
+      associate (unused => this%name, u2 => st%t, u3 => size(extra) + size(aux))
+      end associate
+      d = 0.0_wp
+   end function effect_chest_deflection
 
    !> After an accepted step: update memory, report events and jumps. The
    !! default effect has no memory.

@@ -21,12 +21,12 @@ module joint_reactions
    use kinds, only: wp
    use model, only: body_section_t, n_seg, n_dof, n_joint
    use point_forces, only: point_force_list_t
-   use body_kinematics, only: point_state_t, segment_cg_state
+   use body_kinematics, only: point_state_t, segment_cg_state, joint_state
    implicit none
    private
 
    public :: joint_reaction_forces, body_imbalance, bone_components, distal_segment
-   public :: segment_cg_states, joint_reactions_at, bone_components_at
+   public :: segment_cg_states, joint_reactions_at, bone_components_at, joint_moment_at
 
    !> distal(s, j): segment s lies on the distal side of joint j.
    logical, parameter :: distal(n_seg, n_joint) = reshape([ &
@@ -106,6 +106,45 @@ contains
          end do
       end do
    end function joint_reactions_at
+
+   !> The moment (lb in, counter-clockwise positive) the proximal side
+   !! exerts on the distal side D(j) through joint j (issue 18: the neck's
+   !! flexion/extension moment), from the distal side's angular momentum
+   !! about the joint's point P at this instant (A-INJ's Newton-Euler, for
+   !! moments):
+   !!
+   !!     M_j = sum over s in D(j) of [I_s alpha_s'' + (r_s - P) x m_s a_s]
+   !!           - sum over the point forces F on D(j) of (r_F - P) x F,
+   !!
+   !! the joint's elastic, friction and stop torques and the pin's force R_j
+   !! (which acts at P) among what M_j and R_j carry; cg from
+   !! segment_cg_states.
+   pure real(wp) function joint_moment_at(body, z, zdot, zdd, cg, forces, j) result(m)
+      type(body_section_t), intent(in) :: body
+      real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
+      type(point_state_t), intent(in) :: cg(n_seg)
+      type(point_force_list_t), intent(in) :: forces
+      integer, intent(in) :: j
+      type(point_state_t) :: p
+      integer :: s, k
+      p = joint_state(body, z, zdot, zdd, j)
+      m = 0.0_wp
+      do s = 1, n_seg
+         if (.not. distal(s, j)) cycle
+         m = m + body%inertia(s)*zdd(s) + body%mass(s)*cross(cg(s)%x - p%x, cg(s)%y - p%y, cg(s)%ax, cg(s)%ay)
+      end do
+      do k = 1, forces%n
+         associate (f => forces%f(k))
+            if (.not. distal(f%segment, j)) cycle
+            m = m - cross(f%point(1) - p%x, f%point(2) - p%y, f%force(1), f%force(2))
+         end associate
+      end do
+   contains
+      pure real(wp) function cross(rx, ry, fx, fy)
+         real(wp), intent(in) :: rx, ry, fx, fy
+         cross = rx*fy - ry*fx
+      end function cross
+   end function joint_moment_at
 
    !> sum over the whole body of m_s a_s - F_s: zero when every force from
    !! outside is among the point forces and the accelerations solve C.5.

@@ -25,7 +25,7 @@ module occupant
    public :: occupant_t, occupant_build, occupant_state, occupant_rhs, occupant_forces, occupant_frame
    public :: occupant_rhs_kept
    public :: occupant_vehicle
-   public :: occupant_initial_y, occupant_add_effect, occupant_point_forces
+   public :: occupant_initial_y, occupant_add_effect, occupant_point_forces, occupant_chest_deflection
    public :: occupant_slide_switches, occupant_settle, occupant_slide_forces
    public :: slide_set_t, occupant_active_slides, occupant_add_slide_forces
    public :: slides_overflow
@@ -244,23 +244,53 @@ contains
    end subroutine occupant_frame
 
    !> The forces from outside the body that the occupant's effects apply at
-   !! st (for the joint reactions, A-INJ).
-   pure subroutine occupant_point_forces(occ, st, y, list)
+   !! st (for the joint reactions, A-INJ); with segments, only those of the
+   !! effects that may act on one of them (effect_t%acts_on: the joint
+   !! reactions of a distal side need only its own forces).
+   pure subroutine occupant_point_forces(occ, st, y, list, segments)
       type(occupant_t), intent(in) :: occ
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: y(:)
       type(point_force_list_t), intent(inout) :: list
+      logical, intent(in), optional :: segments(n_seg)
       integer :: k, xo, ao
       list%n = 0      ! (its storage kept: nothing allocated once it is large enough)
       do k = 1, size(occ%effects)
          associate (e => occ%effects(k)%e)
             if (.not. e%external) cycle
+            if (present(segments)) then
+               if (.not. any(e%acts_on .and. segments)) cycle
+            end if
+            ! an effect inert for certain at st applies no force (its proximity
+            ! guard, D-C29: a far contact pair), so it is not asked
+            if (e%guard%kind /= guard_none) then
+               if (guard_holds(e%guard, st)) cycle
+            end if
             xo = occ%extra_offset(k)
             ao = occ%aux_offset(k)
             call e%point_forces(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), list)
          end associate
       end do
    end subroutine occupant_point_forces
+
+   !> The chest's deflection at st (in; issue 18): the largest that any
+   !! effect deflecting the chest's material reports (the torso belt's
+   !! sections, the chest's contacts); 0 when none does.
+   pure real(wp) function occupant_chest_deflection(occ, st, y) result(d)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: y(:)
+      integer :: k, xo, ao
+      d = 0.0_wp
+      do k = 1, size(occ%effects)
+         associate (e => occ%effects(k)%e)
+            if (.not. e%deflects_chest) cycle
+            xo = occ%extra_offset(k)
+            ao = occ%aux_offset(k)
+            d = max(d, e%chest_deflection(st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux)))
+         end associate
+      end do
+   end function occupant_chest_deflection
 
    !> b = C - G + J + S + B + Q (C.4): the sum of the evaluated effects'
    !! generalized forces, and the rates of their own quantities into dydt.

@@ -42,6 +42,7 @@
 !! - The peak: the largest |a(t)| and its time.
 module acceleration_criteria
    use kinds, only: wp
+   use channel_record, only: hermite_acceleration
    implicit none
    private
 
@@ -224,9 +225,7 @@ contains
          else
             ! a(s) = c0 + c1 s + c2 s^2, s = (t' - t_last)/dt: the derivative
             ! of v's cubic Hermite interpolant on the step
-            c(:, 0) = this%a_vec
-            c(:, 1) = 6.0_wp*(v_vec - this%v_vec)/dt - 4.0_wp*this%a_vec - 2.0_wp*a_vec
-            c(:, 2) = -6.0_wp*(v_vec - this%v_vec)/dt + 3.0_wp*this%a_vec + 3.0_wp*a_vec
+            c = hermite_acceleration(this%a_vec, this%v_vec, a_vec, v_vec, dt)
             ! |a| at the step's Gauss nodes, for the GSI and for V at the step's end
             ! (quadrature's with x = 1, where x*node and r*x are exact: the
             ! magnitudes taken once for both)

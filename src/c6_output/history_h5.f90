@@ -143,6 +143,8 @@ module history_h5
       procedure :: add_series => history_file_add_series
       !> Append one row to a series.
       procedure :: append => history_file_append
+      !> One more string attribute of a series, one string per column.
+      procedure :: add_attribute => history_file_add_attribute
       !> Append one event.
       procedure :: add_event => history_file_add_event
       !> Write pending rows and flush the file to the operating system.
@@ -390,6 +392,43 @@ contains
          if (s%nbuf == block_rows) call write_block(this, s, err)
       end associate
    end subroutine history_file_append
+
+   !> A string attribute `name` of series `id`, one of `values` per column
+   !! (beside its columns and units: a criterion's filter class), or, with
+   !! per_column false, a list of its own (the names of its rows).
+   subroutine history_file_add_attribute(this, id, name, values, err, per_column)
+      class(history_file_t), intent(inout) :: this
+      integer, intent(in) :: id
+      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: values(:)
+      type(error_t), intent(inout) :: err
+      logical, intent(in), optional :: per_column
+      type(error_t) :: local
+      logical :: each
+      each = .true.
+      if (present(per_column)) each = per_column
+      if (.not. this%is_open()) then
+         call error_set(err, exit_io, 'cannot add attribute '//name//': no HDF5 file is open')
+         return
+      end if
+      if (id < 1 .or. id > this%nseries) then
+         call error_set(err, exit_io, 'cannot add attribute '//name//' in '//this%path//': no such series')
+         return
+      end if
+      if (this%failure%failed()) then
+         err = this%failure
+         return
+      end if
+      associate (s => this%series(id))
+         if (size(values) < 1 .or. (each .and. size(values) /= s%ncols)) then
+            call error_set(err, exit_io, 'cannot add attribute '//name//' to dataset '//s%name//' in ' &
+                           //this%path//': it needs one value per column')
+            return
+         end if
+         call write_string_attribute(s%dset, this%path, s%name, name, values, .false., local)
+      end associate
+      if (local%failed()) call error_set(err, local%code, local%message)
+   end subroutine history_file_add_attribute
 
    !> Append one event: its time, kind, index (e.g. the joint) and a text
    !! of up to 120 characters (longer text is cut). Written at once.

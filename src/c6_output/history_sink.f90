@@ -4,6 +4,7 @@
 !! stopped midway leaves a readable file; at the end, the summary's maxima
 !! and their times.
 module history_sink
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: wp
    use error_handling, only: error_t, error_set, exit_io
    use model, only: n_joint, n_injury
@@ -15,6 +16,7 @@ module history_sink
    use event_text, only: event_description
    use force_injuries, only: fc_defined, fs_defined
    use run_summary, only: run_summary_t
+   use channel_record, only: channel_record_t
    use acceleration_criteria, only: hic_result_t
    use history_h5, only: history_file_t, event_text_len
    implicit none
@@ -172,6 +174,8 @@ contains
       if (.not. err%failed()) call this%file%append(id_v, values(1:n), err)
       if (.not. err%failed()) call this%file%append(id_t, times(1:n), err)
       if (.not. err%failed()) call put_criteria()
+      if (.not. err%failed()) call put_fmvss()
+      if (.not. err%failed()) call put_channels()
       ! written at close
    contains
       !> /summary/injury_criteria: one row, a column per criterion (docs/injury.md).
@@ -201,6 +205,110 @@ contains
                                    //'cumulative 3 ms clip; from the accelerations in g at accepted steps', id, err)
          if (.not. err%failed()) call this%file%append(id, cv, err)
       end subroutine put_criteria
+
+      !> /summary/criteria: the FMVSS 208 table (fmvss_table), a column per
+      !! criterion and a row each for its value, limit, time, window's end,
+      !! pass (1) or fail (0), and the unfiltered value; NaN where there is
+      !! none (a quantity the model does not give, a criterion without a
+      !! limit). Attributes: units (SI, as FMVSS 208 states its limits),
+      !! filter_class (SAE J211-1), rows.
+      subroutine put_fmvss()
+         character(len=24), allocatable :: cn(:), cu(:), cf(:)
+         real(wp), allocatable :: cv(:, :)
+         real(wp) :: nan
+         integer :: id, k, i
+         nan = ieee_value(0.0_wp, ieee_quiet_nan)
+         allocate (cn(0), cu(0), cf(0), cv(6, 0))
+         do o = 1, size(summary%occ)
+            prefix = ''
+            if (size(summary%occ) > 1) write (prefix, '(a,i0,a)') 'occ', o, '_'
+            if (.not. allocated(summary%occ(o)%fmvss)) cycle
+            associate (rows => summary%occ(o)%fmvss)
+               do i = 1, size(rows)
+                  associate (r => rows(i))
+                     cn = [character(len=24) :: cn, trim(prefix)//r%name]
+                     cu = [character(len=24) :: cu, r%unit]
+                     cf = [character(len=24) :: cf, r%channel]
+                     cv = reshape([cv, merge(r%value, nan, r%available), merge(r%limit, nan, r%has_limit), &
+                                   merge(r%t, nan, r%available), merge(r%t_end, nan, r%available), &
+                                   merge(merge(1.0_wp, 0.0_wp, r%value <= r%limit), nan, &
+                                         r%available .and. r%has_limit), &
+                                   merge(r%unfiltered, nan, r%has_unfiltered)], [6, size(cn)])
+                  end associate
+               end do
+            end associate
+         end do
+         if (size(cn) == 0) return
+         call this%file%add_series('summary/criteria', cn, cu, 'FMVSS 208 (50th male): each criterion from its ' &
+                                   //'channel filtered as SAE J211-1 specifies (attribute filter_class), sampled ' &
+                                   //'at 10 kHz, in SI as FMVSS 208 states its limits; rows: value, limit, time, ' &
+                                   //'end of the window (HIC), pass (1) or fail (0), unfiltered value; NaN: none', &
+                                   id, err)
+         if (.not. err%failed()) call this%file%add_attribute(id, 'filter_class', cf, err)
+         if (.not. err%failed()) call this%file%add_attribute(id, 'rows', [character(len=24) :: 'value', 'limit', &
+                                                              'time', 'time_end', 'pass', 'unfiltered'], err, per_column=.false.)
+         do k = 1, 6
+            if (.not. err%failed()) call this%file%append(id, cv(k, :), err)
+         end do
+      end subroutine put_fmvss
+
+      !> /channels: each occupant's channels as the FMVSS 208 table read
+      !! them (fmvss_table), unfiltered, on their 10 kHz grid (/channels/time),
+      !! each with the SAE J211 class the table filters it at (attribute
+      !! filter_class): for a reader's own filtering, plots, ISO-MME.
+      subroutine put_channels()
+         logical :: timed
+         timed = .false.
+         do o = 1, size(summary%occ)
+            prefix = ''
+            if (size(summary%occ) > 1) write (prefix, '(a,i0,a)') 'occ', o, '_'
+            associate (ch => summary%occ(o)%channels)
+               if (.not. timed .and. ch%head%n > 0) then
+                  call channel('time', ch%head, [character(len=8) :: 't'], [character(len=8) :: 's'], ' ', .true.)
+                  timed = .true.
+               end if
+               call channel(trim(prefix)//'head_acceleration', ch%head, [character(len=8) :: 'x', 'y'], &
+                            [character(len=8) :: 'g', 'g'], 'CFC 1000', .false.)
+               call channel(trim(prefix)//'chest_acceleration', ch%chest, [character(len=8) :: 'x', 'y'], &
+                            [character(len=8) :: 'g', 'g'], 'CFC 180', .false.)
+               if (ch%neck_kept) call channel(trim(prefix)//'neck_loads', ch%neck, &
+                                              [character(len=8) :: 'axial', 'moment'], &
+                                              [character(len=8) :: 'N', 'N m'], 'CFC 600', .false.)
+               if (ch%femur_kept) call channel(trim(prefix)//'femur_force', ch%femur, [character(len=8) :: 'axial'], &
+                                               [character(len=8) :: 'N'], 'CFC 600', .false.)
+               if (ch%deflection_kept) call channel(trim(prefix)//'chest_deflection', ch%deflection, &
+                                                    [character(len=10) :: 'deflection'], [character(len=8) :: 'mm'], &
+                                                    'CFC 180', .false.)
+            end associate
+         end do
+      end subroutine put_channels
+
+      !> One channel of put_channels (times: the grid's /channels/time).
+      subroutine channel(name, rec, cols, col_units, cfc, times)
+            character(len=*), intent(in) :: name, cols(:), col_units(:), cfc
+            type(channel_record_t), intent(in) :: rec
+            logical, intent(in) :: times
+            integer :: id, k
+            if (err%failed() .or. rec%n == 0) return
+            if (times) then
+               call this%file%add_series('channels/time', cols, col_units, 'the channels'' grid: t0 + k h, ' &
+                                         //'10 kHz (channel_record)', id, err, flush=.false.)
+            else
+               call this%file%add_series('channels/'//name, cols, col_units, 'unfiltered samples on ' &
+                                         //'/channels/time (the FMVSS 208 table filters them at filter_class)', &
+                                         id, err, flush=.false.)
+               if (.not. err%failed()) call this%file%add_attribute(id, 'filter_class', [cfc], err, &
+                                                                    per_column=.false.)
+            end if
+            do k = 0, rec%n - 1
+               if (err%failed()) return
+               if (times) then
+                  call this%file%append(id, [rec%t0 + real(k, wp)*rec%h], err)
+               else
+                  call this%file%append(id, rec%values(:, k), err)
+               end if
+            end do
+      end subroutine channel
 
       subroutine put(name, unit, value, t)
          character(len=*), intent(in) :: name, unit

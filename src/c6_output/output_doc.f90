@@ -53,6 +53,19 @@ contains
                          //'summary | HIC15 and HIC36 of the head with their windows (s), the Gadd Severity Index ' &
                          //'of head and chest, the chest''s cumulative 3 ms clip; from the accelerations at ' &
                          //'accepted steps (docs/injury.md) |')
+      call append_string(lines, '| `/summary/criteria` | (6, 11) | head_hic15, head_hic36, head_gsi, chest_clip3ms (g), ' &
+                         //'chest_gsi, chest_deflection (mm), chest_vc (m/s), neck_nij, neck_tension (N), ' &
+                         //'neck_compression (N), femur_compression (N); rows value, limit, time, time_end, pass, ' &
+                         //'unfiltered; attributes filter_class, rows | summary | the table FMVSS 208 (50th male): ' &
+                         //'each criterion from its channel filtered as SAE J211-1 specifies, in SI, its limit ' &
+                         //'(*FMVSS208), when, pass (1) or fail (0), the unfiltered value beside it; NaN: none ' &
+                         //'(docs/injury.md) |')
+      call append_string(lines, '| `/channels/time`, `/channels/head_acceleration`, `/channels/chest_acceleration`, ' &
+                         //'`/channels/neck_loads`, `/channels/femur_force`, `/channels/chest_deflection` | (k, c) | ' &
+                         //'t (s); x, y (g); x, y (g); axial (N), moment (N m); axial (N); deflection (mm) | summary | ' &
+                         //'the channels the FMVSS 208 table reads, unfiltered, on their 10 kHz grid, each with the ' &
+                         //'SAE J211 class it is filtered at (attribute filter_class); the chest''s deflection where ' &
+                         //'an effect deflects it |')
       call append_string(lines, '| `/events/time`, `/events/kind`, `/events/index`, `/events/text` | (k) | - | summary | ' &
                          //'the events as they happened, by kind (a code never renumbered; a new kind takes the next): ' &
                          //event_kinds(.false.)//'; and notes, not injuries ' &

@@ -7,6 +7,7 @@
 !! DTPRINT are); the summary at the end (maxima and when they occurred,
 !! injuries, the end of the run, the energy balance, the cost).
 module run_report
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use kinds, only: wp, deg, g_std, i8
    use strings, only: itoa, num
    use model, only: model_t, n_joint, n_injury, joint_name, integrator_name, nint_adams
@@ -25,6 +26,7 @@ module run_report
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t
    use force_injuries, only: fc_defined, fs_defined, fc_name, fs_name
    use acceleration_criteria, only: hic_result_t
+   use fmvss_table, only: fmvss_row_t
    use event_text, only: event_description
    use end_tests, only: end_reason_text, end_failure, end_energy
    use accuracy_estimate, only: accuracy_warnings, corrector_warning, angle_threshold, head_threshold, &
@@ -377,6 +379,7 @@ contains
             call lst%put('  chest acceleration '//fixed(os%chest_max%value/g_std, 10, 3)//' g   at t ='// &
                          fixed(os%chest_max%t, 10, 5)//' s')
             call put_injury_criteria(lst, os)
+            if (allocated(os%fmvss)) call put_fmvss(lst, os%fmvss)
             call put_peaks(lst, os)
 
             call lst%heading('JOINT ANGLE RANGES, ALPHA(I) - ALPHA(M) (deg)', 10)
@@ -557,7 +560,7 @@ contains
       type(listing_t), intent(inout) :: lst
       type(occupant_summary_t), intent(in) :: os
       type(hic_result_t) :: r
-      call lst%heading('ACCELERATION CRITERIA OF HEAD AND CHEST (ACCEPTED STEPS)', 6)
+      call lst%heading('ACCELERATION CRITERIA OF HEAD AND CHEST, UNFILTERED (ACCEPTED STEPS)', 6)
       r = os%head_criteria%hic15()
       call lst%put('  head HIC15         '//fixed(r%value, 10, 1)//'     from t ='//fixed(r%t1, 10, 5) &
                    //' s to'//fixed(r%t2, 10, 5)//' s')
@@ -568,6 +571,48 @@ contains
       call lst%put('  chest GSI          '//fixed(os%chest_criteria%gsi, 10, 1))
       call lst%put('  chest 3 ms clip    '//fixed(os%chest_criteria%clip3ms(), 10, 3)//' g')
    end subroutine put_injury_criteria
+
+   !> The table "FMVSS 208 (50th male)" (fmvss_table, docs/injury.md): each
+   !! criterion from its channel filtered at its SAE J211 class, in SI as
+   !! FMVSS 208 S6 states its limits, its limit, when, pass or fail, and the
+   !! unfiltered value of the accepted steps beside it where there is one;
+   !! "n/a" where the model does not give the quantity.
+   subroutine put_fmvss(lst, rows)
+      type(listing_t), intent(inout) :: lst
+      type(fmvss_row_t), intent(in) :: rows(:)
+      character(len=132) :: line
+      integer :: i
+      call lst%heading('FMVSS 208 (50TH MALE): FILTERED CHANNELS (SAE J211-1, 10 KHZ), SI UNITS', size(rows) + 2)
+      call lst%put('  CRITERION                    CHANNEL        VALUE  UNIT        LIMIT   AT t (s)   TO t (s)' &
+                   //'  RESULT   UNFILTERED')
+      do i = 1, size(rows)
+         associate (r => rows(i))
+            line = ' '
+            line(3:30) = r%label
+            line(32:39) = r%channel
+            if (r%available) then
+               line(40:51) = fixed(r%value, 12, 3)
+            else
+               line(40:51) = '         n/a'
+            end if
+            line(54:57) = r%unit
+            if (r%has_limit) line(58:68) = fixed(r%limit, 11, 1)
+            if (r%available .and. .not. ieee_is_nan(r%t)) line(69:79) = fixed(r%t, 11, 5)
+            if (r%available .and. r%window) line(80:90) = fixed(r%t_end, 11, 5)
+            if (r%has_limit) then
+               if (.not. r%available) then
+                  line(93:98) = '-'
+               else if (r%value <= r%limit) then
+                  line(93:98) = 'pass'
+               else
+                  line(93:98) = 'FAIL'
+               end if
+            end if
+            if (r%has_unfiltered) line(99:110) = fixed(r%unfiltered, 12, 3)
+            call lst%put(line)
+         end associate
+      end do
+   end subroutine put_fmvss
 
    !> The largest values the effects kept over the accepted steps (the
    !! contact pairs' largest force, where and how deep it acted), an effect's

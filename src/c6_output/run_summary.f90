@@ -5,12 +5,13 @@
 module run_summary
    use kinds, only: wp, i8
    use error_handling, only: error_t
-   use model, only: n_joint, n_injury, injury_section_t
+   use model, only: n_joint, n_injury, injury_section_t, fmvss_limits_t
    use ode_system, only: step_stats_t
    use effect_events, only: event_t
    use effect_peaks, only: effect_peak_t
    use acceleration_criteria, only: acceleration_criteria_t
    use accuracy_estimate, only: accuracy_t
+   use fmvss_table, only: fmvss_channels_t, fmvss_row_t
    implicit none
    private
 
@@ -34,6 +35,12 @@ module run_summary
       real(wp) :: head_x0 = 0.0_wp
       !> HIC, GSI, 3 ms clip of the head and chest accelerations (g), accepted steps
       type(acceleration_criteria_t) :: head_criteria, chest_criteria
+      !> issue 18: the channels sampled at 10 kHz for SAE J211's filters
+      !! (fmvss_table), the limits of *FMVSS208, and the table of FMVSS 208
+      !! the run's end computes from them
+      type(fmvss_channels_t) :: channels
+      type(fmvss_limits_t) :: fmvss_limits
+      type(fmvss_row_t), allocatable :: fmvss(:)
       !> Table 5's force criteria when the deck gives limits (force_injuries):
       !! the largest tension, compression and shear, and which were reported
       logical :: force_checked = .false.

@@ -30,6 +30,7 @@ module run_loop
    use step_bookkeeping, only: step_books_t, record_failure
    use print_schedule, only: print_schedule_t
    use switch_location, only: switch_locator_t
+   use fmvss_table, only: fmvss_rows
    implicit none
    private
 
@@ -90,8 +91,15 @@ contains
       end if
       tr = stepper_traits(this%stepper)
       this%t = 0.0_wp
-      call this%books%init(this%sys, this%t, this%y, m%numerics, m%vehicle, this%summary, &
-                           head_excursion=m%options%head_excursion)
+      ! the FMVSS 208 table where the run's outputs go somewhere (a listing,
+      ! HDF5, a collector); a study's runs, the refinement's, read none of it
+      if (this%sinks%size() > 0) then
+         call this%books%init(this%sys, this%t, this%y, m%numerics, m%vehicle, this%summary, &
+                              head_excursion=m%options%head_excursion, fmvss=m%fmvss, duration=m%time%t_max)
+      else
+         call this%books%init(this%sys, this%t, this%y, m%numerics, m%vehicle, this%summary, &
+                              head_excursion=m%options%head_excursion)
+      end if
       total0 = this%summary%occ%e_total0    ! (the energy totals the balances are measured from)
       call this%schedule%init(m%time, tr, m%vehicle, this%sys, total0, m%options%locate_switches)
       call this%stepper%init(this%sys, this%t, this%y, why)
@@ -252,6 +260,11 @@ contains
                   s%occ(o)%peaks = [s%occ(o)%peaks, sys%occupants(o)%effects(i)%e%peaks()]
                   s%occ(o)%study_peaks = [s%occ(o)%study_peaks, sys%occupants(o)%effects(i)%e%study_peaks()]
                end do
+               ! the FMVSS 208 table from the filtered channels (fmvss_table)
+               associate (os => s%occ(o))
+                  if (os%channels%kept) &
+                     os%fmvss = fmvss_rows(os%channels, os%fmvss_limits, os%head_criteria, os%chest_criteria)
+               end associate
             end do
             s%evaluations = sys%evaluations
             call this%sinks%finish(s)

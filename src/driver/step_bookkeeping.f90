@@ -12,13 +12,16 @@ module step_bookkeeping
    use acceleration_criteria, only: criteria_new
    use error_handling, only: error_t, error_set, error_prefix, exit_numerical
    use strings, only: num
-   use model, only: n_dof, n_seg, n_joint, n_injury, joint_partner, nend_rest, numerics_section_t, vehicle_section_t
+   use model, only: n_dof, n_seg, n_joint, n_injury, joint_partner, nend_rest, numerics_section_t, vehicle_section_t, &
+      fmvss_limits_t
    use equations_of_motion, only: crash_system_t, system_body_state, system_settle
-   use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle
+   use occupant, only: occupant_t, occupant_state, occupant_point_forces, occupant_vehicle, occupant_chest_deflection
    use ode_system, only: stepper_t, evaluate_outside_step
    use effect_base, only: body_state_t
    use effect_events, only: accept_result_t, event_t
    use point_forces, only: point_force_list_t, point_force_reserve
+   use joint_reactions, only: segment_cg_states, joint_reactions_at, joint_moment_at
+   use body_kinematics, only: point_state_t
    use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined, force_injury_event, event_tension, &
       event_compression, event_shear
    use joint_coupling, only: relative_angle
@@ -36,6 +39,9 @@ module step_bookkeeping
 
    !> A balance error below this fraction of its scale is rounding.
    real(wp), parameter :: rounding = 1.0e-9_wp
+   !> The distal sides of the neck (the head) and the hip (thigh, shank):
+   !! the segments whose forces the FMVSS 208 table's loads need (sample_loads)
+   logical, parameter :: loads_segments(n_seg) = [.false., .false., .false., .true., .false., .false., .true., .true.]
 
    type :: step_books_t
       type(end_state_t), allocatable :: end_state(:)   !< each occupant's rest timer (C.7)
@@ -84,7 +90,7 @@ contains
    !! summary (the energy totals the balance is measured from, the initial
    !! joint angles the ranges start from, the criteria), and the room the
    !! accepted steps need.
-   subroutine books_init(this, sys, t, y, numerics, vehicle, summary, head_excursion)
+   subroutine books_init(this, sys, t, y, numerics, vehicle, summary, head_excursion, fmvss, duration)
       class(step_books_t), intent(out) :: this
       type(crash_system_t), intent(in) :: sys
       real(wp), intent(in) :: t, y(:)
@@ -92,6 +98,10 @@ contains
       type(vehicle_section_t), intent(in) :: vehicle
       type(run_summary_t), intent(inout) :: summary
       logical, intent(in), optional :: head_excursion   !< keep the head's excursion (C.8's HEADX)
+      !> the FMVSS 208 table's limits (*FMVSS208): its channels are kept (absent: no table)
+      type(fmvss_limits_t), intent(in), optional :: fmvss
+      real(wp), intent(in), optional :: duration            !< the run's length (s): the channels' room
+      real(wp) :: room
       integer :: o, i, n_occ
       n_occ = size(sys%occupants)
       this%numerics = numerics
@@ -108,6 +118,25 @@ contains
          end associate
          summary%occ(o)%head_criteria = criteria_new()
          summary%occ(o)%chest_criteria = criteria_new(with_hic=.false.)   ! GSI and the 3 ms clip
+         ! the channels of the FMVSS 208 table (fmvss_table), with room for the run
+         ! (a run without it, whose outputs go nowhere, a study's: none)
+         room = 0.0_wp
+         if (present(duration)) room = duration
+         if (present(fmvss)) then
+            summary%occ(o)%fmvss_limits = fmvss
+            summary%occ(o)%channels%kept = .true.
+            call summary%occ(o)%channels%head%reserve(2, room)
+            call summary%occ(o)%channels%chest%reserve(2, room)
+            ! the neck's and femur's loads from the joint reactions
+            summary%occ(o)%channels%neck_kept = .true.
+            summary%occ(o)%channels%femur_kept = .true.
+            call summary%occ(o)%channels%neck%reserve(2, room)
+            call summary%occ(o)%channels%femur%reserve(1, room)
+            ! the chest's deflection where an effect deflects its material
+            summary%occ(o)%channels%deflection_kept = &
+               any([(sys%occupants(o)%effects(i)%e%deflects_chest, i=1, size(sys%occupants(o)%effects))])
+            if (summary%occ(o)%channels%deflection_kept) call summary%occ(o)%channels%deflection%reserve(1, room)
+         end if
          ! Table 5's force criteria only when the occupant's deck gives a limit
          ! (they cost the point forces and the joint reactions at every
          ! accepted step)
@@ -130,7 +159,7 @@ contains
       ! Nothing allocated in the step loop (docs/architecture.md): room for
       ! the point forces, one per segment of each effect from outside (the
       ! most any reports: gravity's)
-      if (any([(summary%occ(o)%force_checked, o=1, n_occ)])) &
+      if (any([(summary%occ(o)%force_checked .or. summary%occ(o)%channels%neck_kept, o=1, n_occ)])) &
          call point_force_reserve(this%forces, n_seg*maxval([(count([(sys%occupants(o)%effects(i)%e%external, &
                                                                   i=1, size(sys%occupants(o)%effects))]), o=1, n_occ)]))
    end subroutine books_init
@@ -201,9 +230,21 @@ contains
             ! HEADX), only where a study asks for it
             if (this%head_excursion) call raise(os%head_excursion, &
                head_interior_x(occ%body, st%z, st%c, st%s, st%vehicle%pos) - os%head_x0, t)
-            ! Table 5's force criteria, with the memory the step was taken with
+            ! Table 5's force criteria and the FMVSS table's neck and femur
+            ! loads, with the memory the step was taken with (the point
+            ! forces once for both)
+            if (os%force_checked) then
+               call occupant_point_forces(occ, st, y, this%forces)
+            else if (os%channels%neck_kept) then
+               call occupant_point_forces(occ, st, y, this%forces, loads_segments)
+            end if
             if (os%force_checked) &
-               call force_criteria(this, occ, o, t, y, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
+               call force_criteria(this, occ, o, t, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), summary, sinks)
+            if (os%channels%neck_kept) &
+               call sample_loads(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), this%forces, t, os)
+            ! the chest's deflection (mm) under the torso belt and its contacts
+            if (os%channels%deflection_kept) &
+               call os%channels%deflection%add(t, [25.4_wp*occupant_chest_deflection(occ, st, y)])
             if (estimated) then
                call os%accuracy%add_step(t, stepper%local_error(occ%z_offset + 1:occ%z_offset + n_dof), &
                                          stepper%local_error(occ%zdot_offset + 1:occ%zdot_offset + n_dof))
@@ -312,6 +353,13 @@ contains
          associate (occ => sys%occupants(o), os => summary%occ(o), st => this%st)
             call occupant_state(occ, t, y, st)
             call sample_criteria(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), t, os)
+            ! the loads' second sample, with the new memory's forces
+            if (os%channels%neck_kept) then
+               call occupant_point_forces(occ, st, y, this%forces, loads_segments)
+               call sample_loads(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), this%forces, t, os)
+            end if
+            if (os%channels%deflection_kept) &
+               call os%channels%deflection%add(t, [25.4_wp*occupant_chest_deflection(occ, st, y)])
          end associate
       end do
    end subroutine sample_after_jump
@@ -328,6 +376,10 @@ contains
       call head_chest_motion(occ%body, st%c, st%s, st%zdot, zdd, a_head, a_chest, v_head, v_chest)
       call os%head_criteria%add_motion(t, a_head/g_std, v_head/g_std)
       call os%chest_criteria%add_motion(t, a_chest/g_std, v_chest/g_std)
+      if (os%channels%kept) then
+         call os%channels%head%add_motion(t, a_head/g_std, v_head/g_std)
+         call os%channels%chest%add_motion(t, a_chest/g_std, v_chest/g_std)
+      end if
       call raise(os%head_max, g_std*os%head_criteria%peak, os%head_criteria%t_peak)
       call raise(os%chest_max, g_std*os%chest_criteria%peak, os%chest_criteria%t_peak)
    end subroutine sample_criteria
@@ -367,16 +419,15 @@ contains
    !> Table 5's criteria of occupant o at the step accepted at (t, y),
    !! where its z'' is zdd: the bone loads against its limits, an event the
    !! first time each is passed, the maxima kept.
-   subroutine force_criteria(this, occ, o, t, y, zdd, summary, sinks)
+   subroutine force_criteria(this, occ, o, t, zdd, summary, sinks)
       class(step_books_t), intent(inout) :: this
       type(occupant_t), intent(in) :: occ
       integer, intent(in) :: o
-      real(wp), intent(in) :: t, y(:), zdd(n_dof)
+      real(wp), intent(in) :: t, zdd(n_dof)
       type(run_summary_t), intent(inout) :: summary
       type(sink_list_t), intent(inout) :: sinks
       type(bone_loads_t) :: bl
       integer :: i
-      call occupant_point_forces(occ, this%st, y, this%forces)
       bl = bone_loads(occ%body, this%st%z, this%st%zdot, zdd, this%forces)
       do i = 1, n_joint
          call raise(summary%occ(o)%ft_max(i), bl%ft(i), t)
@@ -393,6 +444,36 @@ contains
          end if
       end do
    end subroutine force_criteria
+
+   !> The neck's and femur's loads at the accepted point t for the FMVSS 208
+   !! table (fmvss_table), in SI: from the joint reactions (A-INJ) with the
+   !! point forces at hand, the neck's axial force (FT_4 on the head's axis,
+   !! + tension) and its flexion/extension moment (the moment the torso
+   !! exerts on the head about the neck joint, counter-clockwise: flexion
+   !! lowers the neck's relative angle, docs/anthropometry.md, so the torso
+   !! holding a head that pitches forward is + flexion), and one femur's
+   !! axial compression (the hip's reaction on the thigh's axis, Table 5's
+   !! FC_7, halved: segment 7 is both thighs). docs/injury.md.
+   pure subroutine sample_loads(occ, st, zdd, forces, t, os)
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: zdd(n_dof), t
+      type(point_force_list_t), intent(in) :: forces
+      type(occupant_summary_t), intent(inout) :: os
+      real(wp), parameter :: newton = 4.4482216152605_wp       ! N per lbf
+      real(wp), parameter :: newton_metre = newton*0.0254_wp   ! N m per lbf in
+      real(wp), parameter :: thighs = 2.0_wp                  ! femurs in segment 7
+      integer, parameter :: hip = 1, neck = 4, head = 4, thigh = 7
+      type(point_state_t) :: cg(n_seg)
+      real(wp) :: r(2, n_joint), axial, moment, femur
+      cg = segment_cg_states(occ%body, st%z, st%zdot, zdd)
+      r = joint_reactions_at(occ%body, cg, forces)
+      axial = -(r(1, neck)*st%c(head) + r(2, neck)*st%s(head))
+      moment = joint_moment_at(occ%body, st%z, st%zdot, zdd, cg, forces, neck)
+      femur = r(1, hip)*st%c(thigh) + r(2, hip)*st%s(thigh)
+      call os%channels%neck%add(t, [newton*axial, newton_metre*moment])
+      call os%channels%femur%add(t, [newton*femur/thighs])
+   end subroutine sample_loads
 
    !> Criterion c (1 tension, 2 compression, 3 shear) of occupant o's joint
    !! or bone index at time t: an event the first time value passes a
