@@ -18,7 +18,7 @@ module pulse_mme
    use text_io, only: string_t, read_text_file, append_string
    use deck_cards, only: group_spec_t
    use model, only: pulse_table_t
-   use cfc_filter, only: cfc_filtered
+   use channel_filter, only: cfc_filter
    implicit none
    private
 
@@ -94,7 +94,11 @@ contains
                //num(min_samples_per_class_period*real(cfc, wp))//' samples a second')
             return
          end if
-         samples = cfc_filtered(samples, dt, real(cfc, wp))
+         block
+            real(wp) :: filtered(size(samples))
+            call cfc_filter(samples, real(cfc, wp), dt, filtered)
+            samples = filtered
+         end block
       end if
       call make_table()
       if (err%failed()) return
