@@ -68,7 +68,7 @@ def main():
             description = d.attrs.get("description")
             if not isinstance(description, str) or not description:
                 fail(f"/{name} attribute description is {description!r}, expected a non-empty str")
-            if d.ndim == 2 and not name.startswith("summary/") and d.shape[0] != n:
+            if d.ndim == 2 and not name.startswith(("summary/", "scene/")) and d.shape[0] != n:
                 fail(f"/{name} has {d.shape[0]} rows, /time {n}")
 
         # every effect's contribution to b, and the summary's maxima with their times
