@@ -31,6 +31,7 @@ module deck_cards
    public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
    public :: g_belts, g_beltoptions
    public :: g_study, g_vary, g_values, g_criteria, study_methods, max_study_variables
+   public :: g_printerplot, max_printer_plot_times
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -64,7 +65,11 @@ module deck_cards
    integer, parameter :: g_surfaces = 31, g_interior = 32, g_contactoff = 33
    !> A study: the program varies its own inputs (C.8; docs/modification.md).
    integer, parameter :: g_study = 34, g_vary = 35, g_values = 36, g_criteria = 37
-   integer, parameter :: n_groups = 37
+   !> The listing's printer plots (C.6; issue 18: the lead numbers this group 41 at the merge).
+   integer, parameter :: g_printerplot = 38
+   integer, parameter :: n_groups = 38
+   !> Times of the occupant's printer plots on *PRINTERPLOT (its fields T1..T7).
+   integer, parameter :: max_printer_plot_times = 7
 
    !> C.8's methods, in the order of *STUDY's METHOD words.
    character(len=*), parameter :: study_methods = 'OAT|GRID|RANDOM|LHS|ENSEMBLE|OPTIMIZE'
@@ -502,6 +507,7 @@ contains
       call belt_groups(t)
 
       call seat_groups(t)
+      call output_groups(t)
       call study_groups(t)
 
       block
@@ -756,6 +762,23 @@ contains
          int_field('I', blank_required, 0, 1, 10, 'body point i'), &
          int_field('K', blank_required, 0, 1, 32, 'surface k')])
    end subroutine contact_groups
+
+   !> The listing's printer plots (C.6; issue 18; docs/usage.md, "The listing").
+   pure subroutine output_groups(t)
+      type(group_spec_t), intent(inout) :: t(:)
+      real(wp), parameter :: zero = 0.0_wp, one = 1.0_wp, most = 1000.0_wp
+      integer :: k
+      t(g_printerplot)%name = 'PRINTERPLOT'
+      t(g_printerplot)%title = 'Printer plots in the listing (C.6)'
+      t(g_printerplot)%note = 'With this group the listing ends its time histories with printer plots, as ' &
+         //'programs of the report''s era drew them on the 132-column page: the occupant over the interior ' &
+         //'(surfaces, seat, belts, the body''s segments and head) at each time T1..T7 given, drawn at the first ' &
+         //'print time at or after it, and the head''s and chest''s resultant accelerations against time (in ' &
+         //'each of the plot''s 100 columns of time, the largest at a print time within it). Times in ' &
+         //'increasing order, at most TMAX; blank: no picture of the occupant, the acceleration plots only.'
+      call set_fields(t(g_printerplot), [(real_field('T'//achar(48 + k), 's', one, blank_absent, zero, zero, most, &
+                                                     'time of a picture of the occupant'), k=1, max_printer_plot_times)])
+   end subroutine output_groups
 
    !> C.8: a study of the deck (docs/modification.md).
    pure subroutine study_groups(t)

@@ -7,10 +7,20 @@
 # Debug build.
 # The deck is named relative to its directory so that the listing, which
 # names its decks, does not depend on where the source tree lies.
+# OVERRIDE (optional): a deck read after DECK (tests/listings/printer_plot.deck), the run made
+# in its directory with DECK named relative to it, as tools/regenerate-listings runs it.
 file(MAKE_DIRECTORY ${WORK})
-get_filename_component(deck_dir ${DECK} DIRECTORY)
-get_filename_component(deck_name ${DECK} NAME)
-execute_process(COMMAND ${EXE} ${deck_name} -o ${WORK}/actual.lst WORKING_DIRECTORY ${deck_dir}
+if(DEFINED OVERRIDE AND NOT OVERRIDE STREQUAL "")
+  get_filename_component(deck_dir ${OVERRIDE} DIRECTORY)
+  file(RELATIVE_PATH deck_name ${deck_dir} ${DECK})
+  get_filename_component(override_name ${OVERRIDE} NAME)
+  set(decks ${deck_name} ${override_name})
+else()
+  get_filename_component(deck_dir ${DECK} DIRECTORY)
+  get_filename_component(deck_name ${DECK} NAME)
+  set(decks ${deck_name})
+endif()
+execute_process(COMMAND ${EXE} ${decks} -o ${WORK}/actual.lst WORKING_DIRECTORY ${deck_dir}
                 RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "hsri2d ${DECK} failed with status ${rc}:\n${err}")
