@@ -12,6 +12,7 @@
 !! run ends. The geometry is the scene's (scene_geometry, the HDF5 file's
 !! /scene), so the listing's picture and tools/plot's draw the same scene.
 module printer_plot
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use kinds, only: wp, g_std
    use strings, only: itoa
    use number_format, only: fixed
@@ -111,6 +112,7 @@ contains
       end do
       c = min(acc_columns, 1 + int(frame%t/this%t_max*acc_columns))
       a = frame%v(this%at_acc + 1:this%at_acc + 2)/g_std
+      if (.not. all(ieee_is_finite(a))) return        ! (a failing run's last values)
       if (this%has(c)) then
          this%acc(:, c) = max(this%acc(:, c), a)
       else
@@ -134,7 +136,7 @@ contains
          call lst%new_page('PRINTER PLOTS (C.6)')
          if (.not. this%taken(k)) then
             call lst%put(' THE OCCUPANT AT T'//itoa(k)//' ='//fixed(this%sec%times(k), 9, 5)//' S: not drawn, ' &
-                         //'the run ended at t ='//fixed(this%t_last, 9, 5)//' s')
+                         //'the run''s last print time is t ='//fixed(this%t_last, 9, 5)//' s')
             cycle
          end if
          call occupant_picture(this, lst, k, box, scale)
@@ -185,6 +187,7 @@ contains
    contains
       pure subroutine take(q)
          real(wp), intent(in) :: q(2)
+         if (.not. all(ieee_is_finite(q))) return
          box = [min(box(1), q(1)), max(box(2), q(1)), min(box(3), q(2)), max(box(4), q(2))]
       end subroutine take
    end function picture_box
@@ -307,6 +310,9 @@ contains
          real(wp), intent(in) :: pt(2)
          character(len=1), intent(in) :: c
          integer :: cc, rr
+         if (.not. all(ieee_is_finite(pt))) return
+         if (abs(pt(1) - centre(1)) > 2.0_wp*pic_width*scale .or. &
+             abs(pt(2) - centre(2)) > 2.0_wp*pic_lines*scale*line_aspect) return
          cc = nint((pt(1) - centre(1))/scale + (pic_width + 1)*0.5_wp)
          rr = nint((pic_lines + 1)*0.5_wp - (pt(2) - centre(2))/(scale*line_aspect))
          if (cc >= 1 .and. cc <= pic_width .and. rr >= 1 .and. rr <= pic_lines) grid(rr)(cc:cc) = c
@@ -317,7 +323,8 @@ contains
          real(wp), intent(in) :: a(2), b(2)
          character(len=1), intent(in) :: c
          integer :: n, m
-         n = max(1, min(100000, ceiling(2.0_wp*norm2(b - a)/scale)))
+         if (.not. (all(ieee_is_finite(a)) .and. all(ieee_is_finite(b)))) return
+         n = max(1, min(100000, ceiling(min(1.0e6_wp, 2.0_wp*norm2(b - a)/scale))))
          do m = 0, n
             call mark(a + (b - a)*real(m, wp)/n, c)
          end do
@@ -328,7 +335,8 @@ contains
          character(len=1), intent(in) :: c
          integer :: n, m
          real(wp) :: a
-         n = max(12, ceiling(4.0_wp*acos(-1.0_wp)*radius/scale))
+         if (.not. (all(ieee_is_finite(ctr)) .and. ieee_is_finite(radius))) return
+         n = max(12, min(100000, ceiling(min(1.0e6_wp, 4.0_wp*acos(-1.0_wp)*radius/scale))))
          do m = 0, n - 1
             a = 2.0_wp*acos(-1.0_wp)*m/n
             call mark(ctr + radius*[cos(a), sin(a)], c)
