@@ -13,7 +13,7 @@
 module deck_cards
    use kinds, only: wp, deg, g_std
    use loading_parameters, only: max_order
-   use model, only: max_curves, n_belt_section, n_belt_card
+   use model, only: max_curves, n_belt_section, n_belt_card, max_plot_times
    implicit none
    private
 
@@ -31,7 +31,7 @@ module deck_cards
    public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
    public :: g_belts, g_beltoptions
    public :: g_study, g_vary, g_values, g_criteria, study_methods, max_study_variables
-   public :: g_printerplot, max_printer_plot_times
+   public :: g_printerplot
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -68,8 +68,6 @@ module deck_cards
    !> The listing's printer plots (C.6; issue 18: the lead numbers this group 41 at the merge).
    integer, parameter :: g_printerplot = 38
    integer, parameter :: n_groups = 38
-   !> Times of the occupant's printer plots on *PRINTERPLOT (its fields T1..T7).
-   integer, parameter :: max_printer_plot_times = 7
 
    !> C.8's methods, in the order of *STUDY's METHOD words.
    character(len=*), parameter :: study_methods = 'OAT|GRID|RANDOM|LHS|ENSEMBLE|OPTIMIZE'
@@ -777,7 +775,7 @@ contains
          //'each of the plot''s 100 columns of time, the largest at a print time within it). Times in ' &
          //'increasing order, at most TMAX; blank: no picture of the occupant, the acceleration plots only.'
       call set_fields(t(g_printerplot), [(real_field('T'//achar(48 + k), 's', one, blank_absent, zero, zero, most, &
-                                                     'time of a picture of the occupant'), k=1, max_printer_plot_times)])
+                                                     'time of a picture of the occupant'), k=1, max_plot_times)])
    end subroutine output_groups
 
    !> C.8: a study of the deck (docs/modification.md).

@@ -6,7 +6,6 @@ module model
    use kinds, only: wp
    use text_io, only: string_t
    use loading_parameters, only: loading_curve_t
-   use deck_cards, only: max_printer_plot_times
    implicit none
    private
 
@@ -286,7 +285,7 @@ module model
    !> The listing's printer plots (C.6, *PRINTERPLOT; issue 18): asked for or
    !! not, and the times of the occupant's pictures, field k of the card
    !! (s, increasing; none given: the acceleration plots only).
-   integer, parameter :: max_plot_times = max_printer_plot_times
+   integer, parameter :: max_plot_times = 7
    type :: printer_plot_section_t
       logical :: wanted = .false.
       logical :: given(max_plot_times) = .false.
