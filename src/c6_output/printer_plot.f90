@@ -264,16 +264,17 @@ contains
             call mark(bl(5:6, r), 'A')
          end do
       end associate
-      ! the body: segments '*', the hand and the ankle at their segments' ends, the head 'O', joints '@'
+      ! the body: segments 'X' (never '*': asterisks in a listing mean a number
+      ! too wide), the hand and the ankle at their segments' ends, the head 'O', joints '@'
       associate (j => this%joints(:, :, k), t => this%theta(:, k), len => this%scene(t_segments)%values(2, :))
-         call segment(j(:, 1), j(:, 2), '*')
-         call segment(j(:, 2), j(:, 3), '*')
-         call segment(j(:, 3), j(:, 4), '*')
-         call segment(j(:, 3), j(:, 5), '*')
-         call segment(j(:, 5), j(:, 6), '*')
-         call segment(j(:, 6), j(:, 6) + len(6)*[cos(t(6)), sin(t(6))], '*')
-         call segment(j(:, 1), j(:, 7), '*')
-         call segment(j(:, 7), j(:, 7) + len(8)*[cos(t(8)), sin(t(8))], '*')
+         call segment(j(:, 1), j(:, 2), 'X')
+         call segment(j(:, 2), j(:, 3), 'X')
+         call segment(j(:, 3), j(:, 4), 'X')
+         call segment(j(:, 3), j(:, 5), 'X')
+         call segment(j(:, 5), j(:, 6), 'X')
+         call segment(j(:, 6), j(:, 6) + len(6)*[cos(t(6)), sin(t(6))], 'X')
+         call segment(j(:, 1), j(:, 7), 'X')
+         call segment(j(:, 7), j(:, 7) + len(8)*[cos(t(8)), sin(t(8))], 'X')
          call circle(point_centre(this, k, 4), this%scene(t_points)%values(5, 4), 'O')
          do i = 1, n_joint
             call mark(j(:, i), '@')
@@ -284,7 +285,7 @@ contains
                    fixed(this%sec%times(k), 9, 5)//' S), INTERIOR FRAME: X FORWARD, Y UP, INCHES; ' &
                    //'ONE COLUMN'//fixed(scale, 7, 3)//' IN, ONE LINE'//fixed(scale*line_aspect, 7, 3)//' IN')
       call lst%put(' # SURFACE   - ROOF, FLOOR   o HEAD REST   + PANEL EDGE   = SEAT   A BELT ANCHOR   : BELT   ' &
-                   //'* SEGMENT   @ JOINT   O HEAD')
+                   //'X SEGMENT   @ JOINT   O HEAD')
       call lst%put(repeat(' ', 8)//'+'//repeat('-', pic_width)//'+')
       do row = 1, pic_lines
          y = centre(2) + ((pic_lines + 1)*0.5_wp - row)*scale*line_aspect
@@ -350,6 +351,8 @@ contains
       type(printer_plot_t), intent(in) :: this
       type(listing_t), intent(inout) :: lst
       character(len=*), parameter :: names(2) = ['HEAD ', 'CHEST']
+      !> the points: the plot's initial (never '*', which means a number too wide)
+      character(len=1), parameter :: marks(2) = ['H', 'C']
       character(len=132) :: line
       character(len=acc_columns) :: grid(acc_lines)
       real(wp) :: top, step, v
@@ -363,7 +366,7 @@ contains
             if (.not. this%has(c)) cycle
             row = acc_lines - nint(this%acc(which, c)/step) + 1
             row = min(acc_lines, max(1, row))
-            grid(row)(c:c) = '*'
+            grid(row)(c:c) = marks(which)
          end do
          call lst%heading(trim(names(which))//' RESULTANT ACCELERATION (G) AGAINST TIME (S): THE LARGEST AT A ' &
                           //'PRINT TIME IN EACH COLUMN OF'//fixed(this%t_max/acc_columns, 9, 5)//' S', acc_lines + 5)
