@@ -67,8 +67,8 @@ contains
                       //'/joints/x, 1 hip .. 7 knee) and lies along e(theta_i) of /body/theta; L_i its ' &
                       //'length, except L_4, the upper spine to the shoulder along segment 3 (the neck is ' &
                       //'L_3 along it); rho_i its centre of gravity'
-      t%columns = [character(len=16) :: 'joint', 'length', 'cg']
-      t%units = [character(len=16) :: '-', 'in', 'in']
+      call set_columns(t, [character(len=16) :: 'joint', 'length', 'cg'], &
+                       [character(len=16) :: '-', 'in', 'in'])
       allocate (t%values(3, n_seg), t%labels(n_seg))
       do i = 1, n_seg
          t%values(:, i) = [real(proximal_joint(i), wp), occ%body%length(i), occ%body%rho(i)]
@@ -88,8 +88,8 @@ contains
                       //'at joint + along e(theta) + across e(theta + 90 deg), joint (a column of /joints/x) ' &
                       //'and theta (of /body/theta) those of the segment carrying it; row 9, the shin, is the ' &
                       //'capsule tangent to its circle (the knee''s, r_7) and row 11''s (the ankle''s, r_A)'
-      t%columns = [character(len=16) :: 'segment', 'joint', 'along', 'across', 'r']
-      t%units = [character(len=16) :: '-', '-', 'in', 'in', 'in']
+      call set_columns(t, [character(len=16) :: 'segment', 'joint', 'along', 'across', 'r'], &
+                       [character(len=16) :: '-', '-', 'in', 'in', 'in'])
       allocate (t%values(5, n_arc + 1), t%labels(n_arc + 1))
       do i = 1, n_arc
          seg = arc_segment(i)
@@ -129,8 +129,8 @@ contains
                       //'of e(psi + 90 deg); 2 line: through (x, y) at psi; 3 circle: of diameter d centred at ' &
                       //'(x, y); 4 point: the lower panel''s edge), an opening from open_from to open_to along ' &
                       //'a flat surface when open_to > open_from'
-      t%columns = [character(len=16) :: 'k', 'kind', 'x', 'y', 'psi', 'd', 'open_from', 'open_to']
-      t%units = [character(len=16) :: '-', '-', 'in', 'in', 'rad', 'in', 'in', 'in']
+      call set_columns(t, [character(len=16) :: 'k', 'kind', 'x', 'y', 'psi', 'd', 'open_from', 'open_to'], &
+                       [character(len=16) :: '-', '-', 'in', 'in', 'rad', 'in', 'in', 'in'])
       allocate (v(8, 0), names(0), seen(0))
       do n = 1, size(occ%effects)
          select type (e => occ%effects(n)%e)
@@ -172,8 +172,8 @@ contains
                       //'then clockwise over the top to the hip + h e(theta_1), straight where that wrap would be ' &
                       //'negative; 2 torso: straight to joint + h e(theta) of its segment), segment, joint (a ' &
                       //'column of /joints/x)'
-      t%columns = [character(len=16) :: 'section', 'kind', 'segment', 'joint', 'anchor_x', 'anchor_y', 'h']
-      t%units = [character(len=16) :: '-', '-', '-', '-', 'in', 'in', 'in']
+      call set_columns(t, [character(len=16) :: 'section', 'kind', 'segment', 'joint', 'anchor_x', 'anchor_y', 'h'], &
+                       [character(len=16) :: '-', '-', '-', '-', 'in', 'in', 'in'])
       allocate (v(7, 0), names(0))
       do n = 1, size(occ%effects)
          select type (e => occ%effects(n)%e)
@@ -203,8 +203,8 @@ contains
       t%description = 'the seat (C.4.d, figure 11): form (1 springs, 2 rigid beam, 3 non-rigid beams), the ' &
                       //'front edge at x = z_o, the undeflected cushion line through the initial hip (the ' &
                       //'origin) at gamma_o (a beam seat''s at t = 0; its motion is not drawn); no row without a seat'
-      t%columns = [character(len=16) :: 'form', 'z_o', 'gamma_o']
-      t%units = [character(len=16) :: '-', 'in', 'rad']
+      call set_columns(t, [character(len=16) :: 'form', 'z_o', 'gamma_o'], &
+                       [character(len=16) :: '-', 'in', 'rad'])
       form = seat_none
       z0 = 0.0_wp
       gamma0 = 0.0_wp
@@ -231,4 +231,15 @@ contains
          t%labels = [character(len=32) :: seat_form_name(form)]
       end if
    end function seat
+
+   !> A table's column names and units (allocated first: gfortran 12's
+   !! -Wuninitialized takes an assignment to an unallocated component for a
+   !! read of its descriptor).
+   pure subroutine set_columns(t, columns, units)
+      type(scene_table_t), intent(inout) :: t
+      character(len=*), intent(in) :: columns(:), units(:)
+      allocate (t%columns(size(columns)), t%units(size(units)))
+      t%columns(:) = columns
+      t%units(:) = units
+   end subroutine set_columns
 end module scene_geometry
