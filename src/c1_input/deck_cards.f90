@@ -13,7 +13,7 @@
 module deck_cards
    use kinds, only: wp, deg, g_std
    use loading_parameters, only: max_order
-   use model, only: max_curves, n_belt_section, n_belt_card
+   use model, only: max_curves, n_belt_section, n_belt_card, max_plot_times
    implicit none
    private
 
@@ -31,7 +31,7 @@ module deck_cards
    public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
    public :: g_belts, g_beltoptions
    public :: g_study, g_vary, g_values, g_criteria, study_methods, max_study_variables
-   public :: g_fmvss, g_pulsemme, g_analog
+   public :: g_fmvss, g_pulsemme, g_analog, g_printerplot
 
    integer, parameter :: max_fields = 7
    integer, parameter :: card_width = 80
@@ -71,7 +71,9 @@ module deck_cards
    integer, parameter :: g_pulsemme = 39
    !> Section D's two-occupant analog, a deck of its own (docs/analog.md).
    integer, parameter :: g_analog = 40
-   integer, parameter :: n_groups = 40
+   !> The listing's printer plots (C.6; issue 18).
+   integer, parameter :: g_printerplot = 41
+   integer, parameter :: n_groups = 41
 
    !> C.8's methods, in the order of *STUDY's METHOD words.
    character(len=*), parameter :: study_methods = 'OAT|GRID|RANDOM|LHS|ENSEMBLE|OPTIMIZE'
@@ -543,6 +545,7 @@ contains
       call belt_groups(t)
 
       call seat_groups(t)
+      call output_groups(t)
       call study_groups(t)
       call analog_groups(t)
 
@@ -798,6 +801,23 @@ contains
          int_field('I', blank_required, 0, 1, 10, 'body point i'), &
          int_field('K', blank_required, 0, 1, 32, 'surface k')])
    end subroutine contact_groups
+
+   !> The listing's printer plots (C.6; issue 18; docs/usage.md, "The listing").
+   pure subroutine output_groups(t)
+      type(group_spec_t), intent(inout) :: t(:)
+      real(wp), parameter :: zero = 0.0_wp, one = 1.0_wp, most = 1000.0_wp
+      integer :: k
+      t(g_printerplot)%name = 'PRINTERPLOT'
+      t(g_printerplot)%title = 'Printer plots in the listing (C.6)'
+      t(g_printerplot)%note = 'With this group the listing ends its time histories with printer plots, as ' &
+         //'programs of the report''s era drew them on the 132-column page: the occupant over the interior ' &
+         //'(surfaces, seat, belts, the body''s segments and head) at each time T1..T7 given, drawn at the first ' &
+         //'print time at or after it, and the head''s and chest''s resultant accelerations against time (in ' &
+         //'each of the plot''s 100 columns of time, the largest at a print time within it). Times in ' &
+         //'increasing order, at most TMAX; blank: no picture of the occupant, the acceleration plots only.'
+      call set_fields(t(g_printerplot), [(real_field('T'//achar(48 + k), 's', one, blank_absent, zero, zero, most, &
+                                                     'time of a picture of the occupant'), k=1, max_plot_times)])
+   end subroutine output_groups
 
    !> C.8: a study of the deck (docs/modification.md).
    pure subroutine study_groups(t)

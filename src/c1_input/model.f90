@@ -18,7 +18,7 @@ module model
    public :: options_section_t, time_section_t, numerics_section_t, body_section_t, joints_section_t
    public :: fmvss_limits_t
    public :: injury_section_t, vehicle_section_t, environment_section_t, end_tests_section_t
-   public :: interior_section_t
+   public :: interior_section_t, printer_plot_section_t, max_plot_times
    public :: materials_section_t, loading_section_t, max_curves, n_belt_section
    public :: seat_section_t, n_beam_quantities, beam_quantity_name
    public :: bq_a, bq_ap, bq_w0, bq_fhps0, bq_fs0, bq_fps0, bq_ds0, bq_dz0, bq_yg0, bq_gamma0
@@ -296,6 +296,16 @@ module model
       real(wp) :: rest_speed = 0.0_wp, rest_rate = 0.0_wp, rest_hold = 0.0_wp
    end type end_tests_section_t
 
+   !> The listing's printer plots (C.6, *PRINTERPLOT; issue 18): asked for or
+   !! not, and the times of the occupant's pictures, field k of the card
+   !! (s, increasing; none given: the acceleration plots only).
+   integer, parameter :: max_plot_times = 7
+   type :: printer_plot_section_t
+      logical :: wanted = .false.
+      logical :: given(max_plot_times) = .false.
+      real(wp) :: times(max_plot_times) = 0.0_wp
+   end type printer_plot_section_t
+
    !> Everything a run needs, as read from the deck: one section per kind of
    !! card group, each filled by its own builder (model_builder). Defaults
    !! live in the card table (deck_cards), not here: the zeros above are
@@ -317,6 +327,7 @@ module model
       type(seat_section_t) :: seat
       type(interior_section_t) :: interior
       type(fmvss_limits_t) :: fmvss
+      type(printer_plot_section_t) :: printer_plot
       !> Things worth a user's attention that are not errors (listing and stderr).
       type(string_t), allocatable :: warnings(:)
    end type model_t

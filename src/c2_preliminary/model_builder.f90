@@ -23,6 +23,7 @@ module model_builder
    use vehicle_input, only: build_vehicle, check_vehicle, check_vehicle_tables, build_environment
    use seat_input, only: build_seat, check_seat, rigid_beam_problem
    use interior_input, only: build_interior, check_interior, check_scene
+   use printer_plot_input, only: build_printer_plot, check_printer_plot
    use seat_beam_statics, only: rigid_beam_statics
    use fmvss_input, only: build_fmvss
    implicit none
@@ -58,6 +59,7 @@ contains
       call build_seat(deck, m%body, m%materials, m%seat)
       call build_interior(deck, m%interior)
       call build_fmvss(deck, m%fmvss)
+      call build_printer_plot(deck, m%printer_plot)
       call check_model(m, deck_origin(deck), err, vehicle_problems)
    end subroutine build_model
 
@@ -95,5 +97,6 @@ contains
       end if
       call check_interior(m%interior, m%options%nbody, orig, err)
       call check_scene(m, orig, err)
+      call check_printer_plot(m%printer_plot, m%time, orig, err)
    end subroutine check_model
 end module model_builder

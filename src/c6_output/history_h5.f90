@@ -9,6 +9,8 @@
 !!   rows, chunked; 1-D, (rows), for a series of one column such as
 !!   `/time`, otherwise 2-D, (rows, ncols) (`add_series`'s `rank` can make
 !!   a one-column series 2-D);
+!! - tables of fixed rows (`add_table`, e.g. `/scene/surfaces`): float64,
+!!   2-D (rows, ncols), with a `rows` attribute naming each row when given;
 !! - `/events/time` (float64), `/events/kind` (int32), `/events/index`
 !!   (int32), `/events/text` (120-character strings): 1-D, one entry per
 !!   event, present (empty) even when no event happens.
@@ -145,6 +147,8 @@ module history_h5
       procedure :: append => history_file_append
       !> One more string attribute of a series, one string per column.
       procedure :: add_attribute => history_file_add_attribute
+      !> Add a table of fixed rows (the scene's geometry), written at once.
+      procedure :: add_table => history_file_add_table
       !> Append one event.
       procedure :: add_event => history_file_add_event
       !> Write pending rows and flush the file to the operating system.
@@ -429,6 +433,46 @@ contains
       end associate
       if (local%failed()) call error_set(err, local%code, local%message)
    end subroutine history_file_add_attribute
+   !> A table of fixed rows, `values(ncols, nrows)` (h5py: (nrows, ncols)),
+   !! added as a 2-D series of those rows and written at once, with the
+   !! series' attributes and, when `labels` is given, `rows` (a string per
+   !! row). A table of no rows is a dataset of shape (0, ncols).
+   subroutine history_file_add_table(this, name, columns, units, description, values, err, labels)
+      class(history_file_t), intent(inout) :: this
+      character(len=*), intent(in) :: name
+      character(len=*), intent(in) :: columns(:)
+      character(len=*), intent(in) :: units(:)
+      character(len=*), intent(in) :: description
+      real(wp), intent(in) :: values(:, :)
+      type(error_t), intent(inout) :: err
+      character(len=*), intent(in), optional :: labels(:)
+      type(error_t) :: local
+      integer :: id, r
+
+      if (size(values, 1) /= size(columns)) then
+         call error_set(err, exit_io, 'cannot add table '//trim(name)//' to '//this%path// &
+                        ': its rows do not have one value per column')
+         return
+      end if
+      if (present(labels)) then
+         if (size(labels) /= size(values, 2)) then
+            call error_set(err, exit_io, 'cannot add table '//trim(name)//' to '//this%path// &
+                           ': it needs one label per row')
+            return
+         end if
+      end if
+      call this%add_series(name, columns, units, description, id, local, rank=2, flush=.false.)
+      do r = 1, size(values, 2)
+         if (local%failed()) exit
+         call this%append(id, values(:, r), local)
+      end do
+      if (.not. local%failed() .and. present(labels)) then
+         call write_string_attribute(this%series(id)%dset, this%path, trim(name), 'rows', labels, .false., local)
+         if (local%failed()) this%failure = local   ! abandoned, as after any failed write
+      end if
+      if (.not. local%failed()) call write_block(this, this%series(id), local)
+      if (local%failed()) call error_set(err, local%code, local%message)
+   end subroutine history_file_add_table
 
    !> Append one event: its time, kind, index (e.g. the joint) and a text
    !! of up to 120 characters (longer text is cut). Written at once.

@@ -2,7 +2,8 @@
 !! output registry at every print time, with its columns, units and
 !! description, written as the run goes and flushed regularly, so a run
 !! stopped midway leaves a readable file; at the end, the summary's maxima
-!! and their times.
+!! and their times; at the start, the scene's fixed geometry (/scene,
+!! scene_geometry).
 module history_sink
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use kinds, only: wp
@@ -19,6 +20,7 @@ module history_sink
    use channel_record, only: channel_record_t
    use acceleration_criteria, only: hic_result_t
    use history_h5, only: history_file_t, event_text_len
+   use scene_geometry, only: scene_table_t, occupant_scene
    implicit none
    private
 
@@ -59,8 +61,10 @@ contains
       type(output_registry_t), intent(in) :: reg
       type(output_frame_t), intent(in) :: first
       type(error_t), intent(inout) :: err
-      integer :: k, c
-      associate (u1 => size(sys%occupants), u2 => first%t)
+      type(scene_table_t) :: scene(5)
+      character(len=:), allocatable :: prefix
+      integer :: k, c, o
+      associate (u1 => first%t)
       end associate
       this%reg = reg
       allocate (this%id(size(reg%series)))
@@ -74,6 +78,17 @@ contains
             call add_one(s%name, [(s%col(c)%name, c=1, size(s%col))], [(s%col(c)%unit, c=1, size(s%col))], &
                          s%description, this%id(k))
          end associate
+      end do
+      ! the scene's fixed geometry, for pictures of the motion (tools/plot)
+      do o = 1, size(sys%occupants)
+         prefix = ''
+         if (size(sys%occupants) > 1) prefix = 'occupant_'//itoa(o)//'/'
+         scene = occupant_scene(sys%occupants(o))
+         do k = 1, size(scene)
+            if (err%failed()) return
+            call this%file%add_table(prefix//scene(k)%name, scene(k)%columns, scene(k)%units, &
+                                     scene(k)%description, scene(k)%values, err, labels=scene(k)%labels)
+         end do
       end do
       ! one flush for the whole structure, after its last series (one per series
       ! costs little more, some 1.5 M instructions for the default deck's file)

@@ -4,7 +4,8 @@
 !! them) and the preliminary constants of C.2 when the run begins; the
 !! time-history tables of the output registry chosen by NOUT, a page of
 !! rows at a time for every table (so memory stays bounded whatever TMAX and
-!! DTPRINT are); the summary at the end (maxima and when they occurred,
+!! DTPRINT are); the printer plots *PRINTERPLOT asks for (printer_plot);
+!! the summary at the end (maxima and when they occurred,
 !! injuries, the end of the run, the energy balance, the cost).
 module run_report
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
@@ -32,6 +33,7 @@ module run_report
    use accuracy_estimate, only: accuracy_warnings, corrector_warning, angle_threshold, head_threshold, &
       widened_ramp_warning
    use text_io, only: string_t, append_string
+   use printer_plot, only: printer_plot_t
    implicit none
    private
 
@@ -54,6 +56,7 @@ module run_report
       integer :: n_rows = 0
       logical :: begun = .false.
       character(len=:), allocatable :: effect_lines
+      type(printer_plot_t) :: plots              !< *PRINTERPLOT's pictures (issue 18)
    contains
       procedure :: begin => sink_begin
       procedure :: record => sink_record
@@ -94,6 +97,7 @@ contains
       this%tables = pack([(k, k=1, size(reg%series))], printed)
       allocate (this%t(rows_per_page), this%rows(reg%n_values, rows_per_page))
       this%begun = .true.
+      call this%plots%begin(this%m%printer_plot, this%m%time%t_max, sys, reg)
       call write_head(this)
       call write_preliminary(this%lst, sys, reg, first)
    end subroutine sink_begin
@@ -114,6 +118,7 @@ contains
          call error_set(err, exit_io, 'the listing received a record before the run began')
          return
       end if
+      call this%plots%record(frame)
       if (size(this%tables) == 0) return
       this%n_rows = this%n_rows + 1
       this%t(this%n_rows) = frame%t
@@ -138,6 +143,7 @@ contains
       end associate
       if (.not. this%begun) call write_head(this)     ! a run that never began still says why
       if (this%n_rows > 0) call write_page_of_tables(this)
+      call this%plots%write(this%lst)
       call write_summary(this%lst, this%m, this%reg, summary)
    end subroutine sink_finish
 

@@ -34,3 +34,34 @@ function(hsri2d_add_h5py_test)
   endif()
   set_tests_properties(${arg_NAME} PROPERTIES LABELS "python;${arg_LABELS}" TIMEOUT 120)
 endfunction()
+
+# HSRI2D_PLOT_PYTHON: an interpreter that can import h5py and matplotlib, for
+# tools/plot's tests (issue 18). tools/setup installs python3-matplotlib, so a
+# machine without it fails those tests, saying what to install.
+set(HSRI2D_PLOT_PYTHON "" CACHE FILEPATH "Python interpreter with h5py and matplotlib (found when empty)")
+if(NOT HSRI2D_PLOT_PYTHON)
+  foreach(candidate IN ITEMS "${Python3_EXECUTABLE}" /usr/bin/python3)
+    if(candidate AND EXISTS "${candidate}")
+      execute_process(COMMAND "${candidate}" -c "import h5py, matplotlib, numpy"
+                      RESULT_VARIABLE no_plot OUTPUT_QUIET ERROR_QUIET)
+      if(no_plot EQUAL 0)
+        set(HSRI2D_PLOT_PYTHON "${candidate}" CACHE FILEPATH "Python interpreter with h5py and matplotlib (found when empty)" FORCE)
+        break()
+      endif()
+    endif()
+  endforeach()
+endif()
+
+# hsri2d_add_plot_test(NAME name SCRIPT file ARGS ...): a test run by that interpreter,
+# or one that fails saying python3-matplotlib is missing.
+function(hsri2d_add_plot_test)
+  cmake_parse_arguments(PARSE_ARGV 0 arg "" "NAME;SCRIPT" "ARGS;LABELS")
+  if(HSRI2D_PLOT_PYTHON)
+    add_test(NAME ${arg_NAME} COMMAND "${HSRI2D_PLOT_PYTHON}" "${arg_SCRIPT}" ${arg_ARGS})
+  else()
+    add_test(NAME ${arg_NAME} COMMAND ${CMAKE_COMMAND} -E false)
+    message(STATUS "Tests: no Python with h5py and matplotlib (Debian: python3-h5py python3-matplotlib; "
+                   "tools/setup installs them): ${arg_NAME} will fail")
+  endif()
+  set_tests_properties(${arg_NAME} PROPERTIES LABELS "python;${arg_LABELS}" TIMEOUT 300)
+endfunction()

@@ -72,7 +72,7 @@ def main():
                 # the FMVSS 208 table's channels: their own 10 kHz grid, /channels/time
                 if d.shape[0] != f["channels/time"].shape[0]:
                     fail(f"/{name} has {d.shape[0]} rows, /channels/time {f['channels/time'].shape[0]}")
-            elif d.ndim == 2 and not name.startswith("summary/") and d.shape[0] != n:
+            elif d.ndim == 2 and not name.startswith(("summary/", "scene/")) and d.shape[0] != n:
                 fail(f"/{name} has {d.shape[0]} rows, /time {n}")
 
         # every effect's contribution to b, and the summary's maxima with their times
