@@ -92,18 +92,24 @@ check(status == 0 and open(target, "rb").read() != before, "--force replaces it"
 status, err = tool("history", h5, "-o", h5)
 check(status == 1 and "refusing" in err, "the run's own file is never the output")
 
-# a filtered series (J211, issue 18 section 1) is plotted when the file has one
-filtered = os.path.join(work, "filtered.h5")
-shutil.copy(h5, filtered)
-with h5py.File(filtered, "a") as f:
-    t = np.arange(0.0, f["time"][-1], 1e-4)
-    f["filtered/time"] = t
-    d = f.create_dataset("filtered/acceleration", data=np.stack([20 * np.sin(30 * t), 10 * np.sin(30 * t)], 1))
-    d.attrs["columns"], d.attrs["units"], d.attrs["filter_class"] = ["head", "chest"], ["g", "g"], ["CFC 1000", "CFC 180"]
-status, err = tool("history", filtered, "--dpi", "60")
-check(status == 0 and "head filtered (CFC 1000): /filtered/acceleration" in err
-      and "chest filtered (CFC 180)" in err and picture(os.path.join(work, "filtered-history.png"), PNG),
-      "a filtered head and chest series is plotted beside the raw")
+# the 10 kHz channels (issue 18 section 1) are plotted raw and J211-filtered; the
+# filter is the program's: a CFC 180 chest channel of a step, filtered, is met half
+# way at the step and ends at its level (the forward-backward pass: no phase)
+status, err = tool("history", h5, "--dpi", "60", "-o", os.path.join(work, "channels-history.png"), "--force")
+check(status == 0 and "head filtered (CFC 1000): /channels/head_acceleration" in err
+      and "chest filtered (CFC 180): /channels/chest_acceleration" in err
+      and picture(os.path.join(work, "channels-history.png"), PNG),
+      "the head's and chest's 10 kHz channels are plotted raw and filtered")
+import importlib.machinery, importlib.util
+loader = importlib.machinery.SourceFileLoader("hsri2d_plot", plot)
+spec = importlib.util.spec_from_loader("hsri2d_plot", loader)
+module = importlib.util.module_from_spec(spec)
+loader.exec_module(module)
+step = np.where(np.arange(2001) >= 1000, 1.0, 0.0)
+y = module.j211(step, 180.0, 1e-4)
+check(abs(y[1000] - 0.5) < 0.05 and abs(y[0]) < 1e-9 and abs(y[-1] - 1.0) < 1e-9
+      and abs(y[1000 + 30] + y[999 - 30] - 1.0) < 1e-9,
+      "J211 in tools/plot: a step met half way at its time, antisymmetric about it, settled at its ends")
 
 # errors: one line each, status 1, never a traceback
 with open(os.path.join(work, "text.h5"), "w") as f:
