@@ -9,7 +9,7 @@ module gravity
    use effect_base, only: effect_t, body_state_t
    use effect_energies, only: energy_stored, n_energy_kinds
    use point_forces, only: point_force_list_t, point_force_add
-   use body_kinematics, only: point_state_t, segment_cg_state, link_cos_sin, cg_positions
+   use body_kinematics, only: link_cos_sin, cg_positions
    implicit none
    private
 
@@ -75,15 +75,18 @@ contains
       type(body_state_t), intent(in) :: st
       real(wp), intent(in) :: extra(:), aux(:)
       type(point_force_list_t), intent(inout) :: list
-      type(point_state_t) :: p
-      real(wp) :: zero(n_dof)
+      real(wp) :: c(n_seg), s(n_seg), p(2, n_seg)
       integer :: i
       associate (u1 => size(extra) + size(aux))
       end associate
-      zero = 0.0_wp
+      ! (each angle's cosine and sine taken once and the chain walked once:
+      ! the bits of segment_cg_state's, as gravity_frame_values; the FMVSS
+      ! table's loads ask for these at every accepted step)
+      call link_cos_sin(st%z(1:n_seg), c, s)
+      p = cg_positions(this%body, st%z, c, s)
+      ! C.4.b: the weight m_i g of each segment at its centre of gravity
       do i = 1, n_seg
-         p = segment_cg_state(this%body, st%z, zero, zero, i)
-         call point_force_add(list, i, [p%x, p%y], [0.0_wp, -this%body%mass(i)*this%g], across_bone=.false.)
+         call point_force_add(list, i, p(:, i), [0.0_wp, -this%body%mass(i)*this%g], across_bone=.false.)
       end do
    end subroutine gravity_point_forces
 

@@ -21,7 +21,7 @@ module joint_reactions
    use kinds, only: wp
    use model, only: body_section_t, n_seg, n_dof, n_joint
    use point_forces, only: point_force_list_t
-   use body_kinematics, only: point_state_t, segment_cg_state, joint_state
+   use body_kinematics, only: point_state_t, joint_state, link_cos_sin, body_points
    implicit none
    private
 
@@ -48,10 +48,13 @@ contains
       type(body_section_t), intent(in) :: body
       real(wp), intent(in) :: z(n_dof), zdot(n_dof), zdd(n_dof)
       type(point_state_t) :: p(n_seg)
-      integer :: s
-      do s = 1, n_seg
-         p(s) = segment_cg_state(body, z, zdot, zdd, s)
-      end do
+      type(point_state_t) :: joint(n_seg)
+      real(wp) :: c(n_seg), s(n_seg)
+      ! (each angle's cosine and sine once, each chain's prefix walked once:
+      ! body_points gives segment_cg_state's bits; the FMVSS table's loads
+      ! ask for these at every accepted step)
+      call link_cos_sin(z(1:n_seg), c, s)
+      call body_points(body, z, zdot, zdd, c, s, joint, p)
    end function segment_cg_states
 
    !> m_s a_s - F_s for every segment (inertial, lb).
