@@ -75,6 +75,7 @@ module dormand_prince
       procedure :: has_dense => dopri_has_dense
       procedure :: dense => dopri_dense
       procedure :: within_tolerance => dopri_within_tolerance
+      procedure :: next_step => dopri_next_step
    end type dopri_stepper_t
 
 contains
@@ -134,6 +135,13 @@ contains
       class(dopri_stepper_t), intent(in) :: this
       dopri_has_dense = this%dense_output .and. this%dense_ready
    end function dopri_has_dense
+
+   !> See stepper_t: the controller's proposal for the next step (0 without
+   !! the continuous extension, on which a switch predicted is reached).
+   pure real(wp) function dopri_next_step(this) result(h)
+      class(dopri_stepper_t), intent(in) :: this
+      h = merge(this%h, 0.0_wp, this%dense_output)
+   end function dopri_next_step
 
    !> See stepper_t: y at t on the last step's continuous extension (order
    !! 4, Hairer's DOPRI5 dense output; exact at the step's ends).

@@ -64,6 +64,10 @@ module ode_system
       !> switches reached on the continuous extension of a step taken again
       !! that ended just short of them, not by taking it once more (issue 16)
       integer(i8) :: gaps_crossed = 0
+      !> switches predicted before the step that would have crossed them,
+      !! which was cut just short of them and crossed the rest on its own
+      !! extension (issue 16; switch_location's predict)
+      integer(i8) :: switches_predicted = 0
       !> accepted states on a kink of the vehicle's motion inside a step (issue 15; print_schedule)
       integer(i8) :: kinks = 0
       !> switches found at once after the last, taken at the step's end (chatter)
@@ -119,6 +123,7 @@ module ode_system
       procedure :: has_dense => stepper_has_dense
       procedure :: dense => stepper_dense
       procedure :: within_tolerance => stepper_within_tolerance
+      procedure :: next_step => stepper_next_step
       procedure, non_overridable :: evaluate => stepper_evaluate
       procedure, non_overridable :: evaluate_end => stepper_evaluate_end
       procedure, non_overridable :: restartable => stepper_restartable
@@ -204,6 +209,16 @@ contains
       call this%restart(sys, t, y, err)
       if (.not. err%failed()) this%stats%restarts = this%stats%restarts - 1
    end subroutine stepper_resume
+
+   !> The size of the step the next advance will try (an adaptive
+   !! stepper's proposal; 0: none known, a fixed-step method's steps are
+   !! the grid's).
+   pure real(wp) function stepper_next_step(this) result(h)
+      class(stepper_t), intent(in) :: this
+      associate (unused => this%stats%steps)
+      end associate
+      h = 0.0_wp
+   end function stepper_next_step
 
    !> Whether dense can give the state anywhere in the step the last
    !! advance (or retake) took: its continuous extension (issue 15, the

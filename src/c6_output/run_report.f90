@@ -457,6 +457,7 @@ contains
             call count_line('  switches located           ', st%switches_located)
             call count_line('  steps taken again to them  ', st%retaken)
             if (st%gaps_crossed > 0) call count_line('  reached on their extension', st%gaps_crossed)
+            if (st%switches_predicted > 0) call count_line('  predicted and stepped onto ', st%switches_predicted)
             call count_line('  switches not located (chatter)', st%switches_unlocated)
             call count_line('  switch-function evaluations', st%switch_evaluations)
          end if

@@ -50,6 +50,9 @@ module run_loop
       type(error_t) :: err                   !< a numerical failure (the summary's failure at finish)
       integer :: reason = end_none           !< why the run ended (end_none: it goes on)
       logical :: finished = .false.
+      !> switches predicted before the step that would cross them (issue 16:
+      !! an adaptive stepper with a continuous extension, unless init says not)
+      logical :: predicts = .false.
    contains
       procedure :: init => run_init
       procedure :: advance => run_advance
@@ -67,13 +70,16 @@ contains
    !! m's NINT and settings, or `stepper`, copied with its settings), C.2's
    !! initial outputs, the first frame to the sinks (which begin), and the
    !! books of t = 0. A first evaluation that fails ends the run at once
-   !! (is_done), the sinks given a frame marked invalid.
-   subroutine run_init(this, m, system, stepper, sinks)
+   !! (is_done), the sinks given a frame marked invalid. predict: switches
+   !! predicted before the step that would cross them (issue 16; the
+   !! default), or false: only found after it (tests compare the two).
+   subroutine run_init(this, m, system, stepper, sinks, predict)
       class(run_t), intent(out) :: this
       type(model_t), intent(in) :: m
       type(crash_system_t), intent(in), optional :: system
       class(stepper_t), intent(in), optional :: stepper
       type(sink_list_t), intent(in), optional :: sinks
+      logical, intent(in), optional :: predict
       type(stepper_traits_t) :: tr
       real(wp), allocatable :: total0(:)
       type(error_t) :: why
@@ -118,6 +124,8 @@ contains
                              this%err)
       call this%switches%init(this%sys, tr%relocates .and. m%options%locate_switches, this%t, this%y, &
                              this%stepper%stats)
+      this%predicts = this%switches%on .and. this%stepper%next_step() > 0.0_wp
+      if (present(predict)) this%predicts = this%predicts .and. predict
       ! a trial step an adaptive stepper rejects is cut at a switch it
       ! crosses (run_advance), not shortened blindly
       this%stepper%offers_trials = this%switches%on
@@ -129,7 +137,7 @@ contains
    !! the end. Nothing when the run is done.
    subroutine run_advance(this)
       class(run_t), intent(inout) :: this
-      real(wp) :: t_limit, t_step_end
+      real(wp) :: t_limit, t_step_end, t_step_limit
       real(wp), allocatable :: f_here(:)
       logical :: located, at_end, print_now
       integer :: reason
@@ -148,7 +156,10 @@ contains
          end if
       end if
       if (this%switches%on) call this%switches%mark(this%t, this%y, this%stepper%f, this%stepper%stats)
-      call this%stepper%advance(this%sys, this%t, this%y, t_limit, why)
+      ! (the step cut just short of a switch predicted inside it, issue 16)
+      t_step_limit = t_limit
+      if (this%predicts) t_step_limit = this%switches%predict(this%t, this%stepper%next_step(), t_limit)
+      call this%stepper%advance(this%sys, this%t, this%y, t_step_limit, why)
       located = .false.
       ! a trial the stepper rejected: when it crossed a switch, its error
       ! was the switch's, and it is cut there as an accepted step would be;
@@ -160,7 +171,7 @@ contains
          ! (a switch there that could not be located: the stepper's own
          ! shorter steps, as without trials offered)
          this%stepper%offers_trials = .not. this%switches%trial_given_up
-         call this%stepper%advance(this%sys, this%t, this%y, t_limit, why)
+         call this%stepper%advance(this%sys, this%t, this%y, t_step_limit, why)
          this%stepper%offers_trials = .true.
       end do
       t_step_end = this%t

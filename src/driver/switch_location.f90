@@ -75,6 +75,12 @@ module switch_location
    real(wp), parameter :: gap_safety = 1.0_wp
    !> ... and the gap at most this fraction of the step taken again
    real(wp), parameter :: gap_fraction = 0.1_wp
+   !> A step is cut this fraction short of the switch predicted inside it
+   !! (locator_predict), so that it ends short of it unless the prediction
+   !! erred by more (then the step crosses and is searched as any other)
+   real(wp), parameter :: predict_margin = 0.01_wp
+   !> ... and only where that switch lies at least this fraction of the step ahead
+   real(wp), parameter :: predict_least = 0.01_wp
 
    type :: switch_locator_t
       !> some effect of the scene has switching functions and the stepper
@@ -116,6 +122,17 @@ module switch_location
       integer, allocatable :: idx(:)
       integer :: n_searched = 0
       real(wp) :: t_prev = 0.0_wp          !< the last accepted state before the step
+      !> locator_predict's history: the switching functions at the two
+      !! accepted states before the last (g_h1 at t_h1, g_h2 at t_h2), and
+      !! the last one's time t_acc (its functions are g_prev); n_hist of
+      !! them known since predicting began (predicts)
+      logical :: predicts = .false.
+      integer :: n_hist = 0
+      real(wp), allocatable :: g_h1(:), g_h2(:)
+      real(wp) :: t_h1 = 0.0_wp, t_h2 = 0.0_wp, t_acc = 0.0_wp
+      !> the step was cut at t_aim, short of a predicted switch
+      logical :: aimed = .false.
+      real(wp) :: t_aim = 0.0_wp
       !> a step taken again with the stepper's continuous extension stops
       !! this much short of its end and crosses the rest on the slope there
       !! (locator_locate; 0: not)
@@ -139,6 +156,7 @@ module switch_location
       procedure :: accepted => locator_accepted
       procedure :: mark => locator_mark
       procedure :: locate => locator_locate
+      procedure :: predict => locator_predict
    end type switch_locator_t
 
 contains
@@ -167,6 +185,7 @@ contains
       if (.not. this%on) return
       allocate (this%g_prev(n), this%g_lo(n), this%g_hi(n), this%g_try(n), this%live(n), this%idx(n))
       allocate (this%g_da(n), this%g_db(n), this%g_dt(n), this%g_shift(n), this%g_end(n))
+      allocate (this%g_h1(n), this%g_h2(n))
       allocate (this%y_prev(size(y)), this%y_hi(size(y)), this%y_end(size(y)), this%y_lo(size(y)), this%f_lo(size(y)))
       allocate (this%f_prev(size(y)), this%f_end(size(y)), this%y_work(size(y)), this%rates(size(y)), &
                 this%dy_gap(size(y)))
@@ -191,6 +210,15 @@ contains
       integer :: grp, o, n_eff, i
       logical :: reuse
       if (.not. this%on) return
+      ! (predict's history: g_prev is about to become this state's)
+      if (this%predicts) then
+         this%g_h2 = this%g_h1
+         this%t_h2 = this%t_h1
+         this%g_h1 = this%g_prev
+         this%t_h1 = this%t_acc
+         this%n_hist = min(this%n_hist + 1, 3)
+      end if
+      this%t_acc = t
       reuse = .false.
       if (present(unchanged) .and. this%may_keep) then
          this%keeps_end = .false.
@@ -293,6 +321,12 @@ contains
       this%full_at_end = .false.
       if (.not. any(this%live .and. crossed(this%g_prev, this%g_hi))) then
          if (.not. is_trial) then
+            ! a step cut short of a predicted switch: the rest on its extension
+            if (this%aimed .and. t >= this%t_aim) then
+               this%aimed = .false.
+               call cross_predicted(this, sys, stepper, t, y, located, err, t_limit)
+               if (located) return
+            end if
             this%n_run = 0
             ! (every function at the state the run accepts next)
             if (this%keeps_end) then
@@ -556,6 +590,213 @@ contains
          call stepper%resume(sys, t, y, this%y_work, err)
       end subroutine give_up_trial
    end subroutine locator_locate
+
+   !> Issue 16: the end of the next step (of size h from the accepted state
+   !! at t), cut predict_margin short of the first switch the switching
+   !! functions of the last three accepted states predict inside it; t_limit
+   !! when none is (or no history is known yet). A function predicts a
+   !! switch where it approaches zero monotonically over those states (one
+   !! sign, |g| falling) and the quadratic through them reaches zero within
+   !! the step. Such a step ends just short of the switch, and locate
+   !! crosses the rest on its extension (cross_predicted): the step that
+   !! would have crossed the switch is not taken only to be taken again to
+   !! it (twelve evaluations then, six now). A wrong prediction costs a
+   !! shorter step, never accuracy: a step that crosses anyway is searched
+   !! as any other. Evaluates nothing.
+   function locator_predict(this, t, h, t_limit) result(t_step)
+      class(switch_locator_t), intent(inout) :: this
+      real(wp), intent(in) :: t, h, t_limit
+      real(wp) :: t_step
+      real(wp) :: s1, s2, d1, d0, c2, r, r_min
+      integer :: k
+      logical :: found
+      t_step = t_limit
+      this%aimed = .false.
+      if (.not. (this%on .and. h > 0.0_wp)) return
+      if (.not. this%predicts) then
+         ! (the history starts at the accepted state g_prev holds)
+         this%predicts = .true.
+         this%n_hist = 1
+         return
+      end if
+      if (this%n_hist < 3) return
+      ! the two states before, in the time from t (s2 < s1 < 0)
+      s1 = this%t_h1 - t
+      s2 = this%t_h2 - t
+      if (.not. (s2 < s1 .and. s1 < 0.0_wp .and. this%t_acc >= t)) return
+      r_min = min(h, t_limit - t)
+      found = .false.
+      do k = 1, this%n_g
+         associate (g0 => this%g_prev(k), g1 => this%g_h1(k), g2 => this%g_h2(k))
+            if (.not. (abs(g0) < abs(g1) .and. abs(g1) < abs(g2))) cycle
+            if (.not. ((g0 > 0.0_wp .and. g1 > 0.0_wp .and. g2 > 0.0_wp) .or. &
+                       (g0 < 0.0_wp .and. g1 < 0.0_wp .and. g2 < 0.0_wp))) cycle
+            ! the quadratic through (s2, g2), (s1, g1), (0, g0) in Newton's
+            ! form g0 + d1 s + c2 s (s - s1): c2 s^2 + (d1 - c2 s1) s + g0
+            d1 = (g0 - g1)/(-s1)
+            d0 = (g1 - g2)/(s1 - s2)
+            c2 = (d1 - d0)/(-s2)
+            r = least_positive_root(c2, d1 - c2*s1, g0)
+         end associate
+         if (r < r_min) then
+            r_min = r
+            found = .true.
+         end if
+      end do
+      ! (a switch predicted within a hundredth of the step: the step that
+      ! crosses it is searched as any other, no step that short is taken)
+      if (.not. found .or. r_min < predict_least*h) return
+      t_step = t + (1.0_wp - predict_margin)*r_min
+      this%aimed = t_step > t
+      this%t_aim = t_step
+      if (.not. this%aimed) t_step = t_limit
+   end function locator_predict
+
+   !> The least positive root of a s^2 + b s + c (c /= 0), huge when none
+   !! (the stable quadratic formula: no cancellation in either root).
+   pure real(wp) function least_positive_root(a, b, c) result(r)
+      real(wp), intent(in) :: a, b, c
+      real(wp) :: disc, q, r1, r2
+      r = huge(1.0_wp)
+      if (.not. abs(a) > 0.0_wp) then
+         if (abs(b) > 0.0_wp) r1 = -c/b
+         if (abs(b) > 0.0_wp .and. r1 > 0.0_wp) r = r1
+         return
+      end if
+      disc = b*b - 4.0_wp*a*c
+      if (.not. disc >= 0.0_wp) return
+      q = -0.5_wp*(b + sign(sqrt(disc), b))
+      if (.not. abs(q) > 0.0_wp) return
+      r1 = q/a
+      r2 = c/q
+      if (r1 > 0.0_wp) r = r1
+      if (r2 > 0.0_wp .and. r2 < r) r = r2
+   end function least_positive_root
+
+   !> The step from the marked state ended at t, where locator_predict cut
+   !! it short of a switch: when the functions it neared reach zero within
+   !! gap_fraction of the step past its end, on the step's own extension
+   !! carried on, within the step's tolerance (estimated below),
+   !! and no other function changes sign on the way, (t, y) becomes the
+   !! state just past that switch (located) and the stepper restarts there;
+   !! otherwise nothing changes (the next step crosses it and is searched).
+   subroutine cross_predicted(this, sys, stepper, t, y, located, err, t_limit)
+      type(switch_locator_t), intent(inout) :: this
+      type(crash_system_t), intent(inout) :: sys
+      class(stepper_t), intent(inout) :: stepper
+      real(wp), intent(inout) :: t
+      real(wp), intent(inout), contiguous :: y(:)
+      logical, intent(out) :: located
+      type(error_t), intent(inout) :: err
+      real(wp), intent(in), optional :: t_limit
+      real(wp) :: span, t_b, t_to, tol_t, sig
+      integer :: k
+      located = .false.
+      span = t - this%t_prev
+      if (.not. (stepper%has_dense() .and. span > 0.0_wp)) return
+      t_b = t + gap_fraction*span
+      if (present(t_limit)) then
+         if (.not. t_b < t_limit) return
+      end if
+      ! the groups with a function that, carried on along the step's
+      ! secant, reaches zero within twice the gap
+      this%searched = .false.
+      do k = 1, this%n_g
+         if (.not. (this%live(k) .and. abs(this%g_hi(k)) < abs(this%g_prev(k)))) cycle
+         if (abs(this%g_hi(k)) <= 2.0_wp*gap_fraction*abs(this%g_prev(k) - this%g_hi(k))) &
+            this%searched(this%group_of(k)) = .true.
+      end do
+      this%n_searched = 0
+      do k = 1, this%n_g
+         if (.not. this%searched(this%group_of(k))) cycle
+         this%n_searched = this%n_searched + 1
+         this%idx(this%n_searched) = k
+      end do
+      if (this%n_searched == 0) return
+      associate (ix => this%idx(:this%n_searched))
+         call stepper%dense(t_b, this%y_work)
+         call search_values(this, sys, t_b, this%y_work, this%g_try, stepper%stats)
+         if (.not. any_change(this%g_hi, this%g_try, this%live, ix, .false.)) return
+         ! the root on the extension carried on (the step's end's values kept)
+         tol_t = max(relative_tol*span, 8.0_wp*spacing(t))
+         this%g_end = this%g_hi
+         call copy_on(this%g_lo, this%g_hi, ix)
+         call copy_on(this%g_hi, this%g_try, ix)
+         this%g_shift = 0.0_wp
+         t_to = interpolant_crossing(this, sys, stepper, t, t_b, tol_t, stepper%stats, .true.) + 0.5_wp*tol_t
+         this%g_hi = this%g_end
+         if (.not. (t_to > t .and. t_to < t_b)) return
+         ! the extension carried on over the gap, against the cubic through
+         ! the step's ends' values and slopes carried on with it: both leave
+         ! the end on y and y' there, and the cubic's error over the gap,
+         ! about y''''(h gap)**2/24, is the larger (order 3 against the
+         ! extension's 4): their difference, within the step's tolerance,
+         ! estimates the extension's error from above
+         call stepper%dense(t_to, this%y_work)
+         sig = (t_to - this%t_prev)/span
+         this%dy_gap = this%y_work - ((2.0_wp*sig**3 - 3.0_wp*sig**2 + 1.0_wp)*this%y_prev &
+                                      + (sig**3 - 2.0_wp*sig**2 + sig)*span*this%f_prev &
+                                      + (-2.0_wp*sig**3 + 3.0_wp*sig**2)*y + (sig**3 - sig**2)*span*stepper%f)
+         if (.not. stepper%within_tolerance(y, gap_safety*this%dy_gap)) return
+         ! every function there: past the switch, and no other one crossed
+         ! on the way (that one would be the step's to search)
+         call switch_values(sys, t_to, this%y_work, this%g_try, stepper%stats, this%rates, this%counts)
+         if (.not. any_change(this%g_prev, this%g_try, this%live, ix, .true.)) return
+      end associate
+      do k = 1, this%n_g
+         if (this%live(k) .and. .not. this%searched(this%group_of(k)) .and. crossed(this%g_prev(k), this%g_try(k))) return
+      end do
+      call merge_after(t_to)
+      this%y_hi = this%y_work
+      call keep(this, sys, stepper, t_to, this%y_hi, .false., t, y, err)
+      located = .true.
+      this%n_run = this%n_run + 1
+      stepper%stats%switches_located = stepper%stats%switches_located + 1
+      stepper%stats%switches_predicted = stepper%stats%switches_predicted + 1
+   contains
+      !> As merge_near: the switches within merge_window after the one
+      !! crossed at t_at taken with it (t_at and y_work moved past them on
+      !! the extension), or the print time t_limit when that close. Only
+      !! the functions that their rate over the gap brings to zero within
+      !! ten times that are evaluated again.
+      subroutine merge_after(t_at)
+         real(wp), intent(inout) :: t_at
+         real(wp) :: t_w, rate
+         integer :: j
+         logical :: near
+         t_w = t_at + merge_window + 8.0_wp*spacing(t_at)
+         this%searched = .false.
+         near = .false.
+         do j = 1, this%n_g
+            if (.not. this%live(j) .or. passed(this%g_prev(j), this%g_try(j))) cycle
+            rate = abs(this%g_try(j) - this%g_hi(j))/(t_at - t)
+            if (abs(this%g_try(j)) <= 10.0_wp*rate*(t_w - t_at)) then
+               this%searched(this%group_of(j)) = .true.
+               near = .true.
+            end if
+         end do
+         if (near) then
+            this%n_searched = 0
+            do j = 1, this%n_g
+               if (.not. this%searched(this%group_of(j))) cycle
+               this%n_searched = this%n_searched + 1
+               this%idx(this%n_searched) = j
+            end do
+            call stepper%dense(t_w, this%y_lo)
+            call search_values(this, sys, t_w, this%y_lo, this%g_dt, stepper%stats)
+            if (any_change(this%g_try, this%g_dt, this%live, this%idx(:this%n_searched), .true.)) then
+               t_at = t_w
+               this%y_work = this%y_lo
+            end if
+         end if
+         if (present(t_limit)) then
+            if (t_limit > t_at .and. t_limit - t_at < merge_window) then
+               t_at = t_limit
+               call stepper%dense(t_at, this%y_work)
+            end if
+         end if
+      end subroutine merge_after
+   end subroutine cross_predicted
 
    !> The earliest time in (t_a, t_b) - the step from the marked state to
    !! its end, where y_end, f_end - at which a switching function that
