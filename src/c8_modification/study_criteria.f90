@@ -30,6 +30,7 @@ module study_criteria
    use end_tests, only: end_injury, end_contact, end_rest
    use joint_dislocation, only: event_dislocation_low, event_dislocation_high
    use force_injuries, only: event_tension, fc_defined, fs_defined
+   use analog_model, only: analog_solution_t
    implicit none
    private
 
@@ -38,6 +39,8 @@ module study_criteria
    public :: crit_hic15, crit_hic36, crit_headg, crit_headgsi, crit_chestg, crit_chestgsi, crit_clip3ms, crit_headx, &
              crit_beltf, crit_lapf, crit_torsof, crit_neckf, crit_neckinj, crit_torsoinj, crit_unwanted, crit_injury, &
              crit_disloc, crit_ended
+   public :: n_analog_criteria, analog_criterion_words, analog_criterion_index, analog_criterion_value
+   public :: acrit_meet, acrit_tmeet, acrit_sepmin
 
    !> The criteria's indices (their order in every table).
    integer, parameter :: crit_hic15 = 1, crit_hic36 = 2, crit_headg = 3, crit_headgsi = 4, crit_chestg = 5, &
@@ -45,6 +48,17 @@ module study_criteria
                          crit_torsof = 11, crit_neckf = 12, crit_neckinj = 13, crit_torsoinj = 14, &
                          crit_unwanted = 15, crit_injury = 16, crit_disloc = 17, crit_ended = 18
    integer, parameter :: n_criteria = 18
+
+   !> Section D's analog (docs/analog.md): the criteria of a run that is an
+   !! analog case, a list of their own (an analog run has no occupant model:
+   !! none of the 18 above applies to it). MEET: 1 when the occupants meet
+   !! before TMAX, else 0; TMEET: s, when they first meet (NaN when they
+   !! never do); SEPMIN: in, their least separation over the run (0 or less
+   !! once they meet: the scan's overlap).
+   integer, parameter :: acrit_meet = 1, acrit_tmeet = 2, acrit_sepmin = 3
+   integer, parameter :: n_analog_criteria = 3
+   character(len=*), parameter :: analog_criterion_words = 'MEET|TMEET|SEPMIN'
+   character(len=8), parameter :: analog_words(n_analog_criteria) = [character(len=8) :: 'MEET', 'TMEET', 'SEPMIN']
 
    !> The deck words in the list's order, '|' between them (for a card
    !! field's word list; test_study_criteria checks it against criterion_word).
@@ -290,4 +304,35 @@ contains
          end associate
       end do
    end function count_events
+
+   !> The analog criterion's index of a deck word (0: not one).
+   pure integer function analog_criterion_index(word) result(code)
+      character(len=*), intent(in) :: word
+      integer :: k
+      code = 0
+      do k = 1, n_analog_criteria
+         if (trim(analog_words(k)) == upper(trim(word))) code = k
+      end do
+   end function analog_criterion_index
+
+   !> The value of analog criterion `code` of a solved analog case (Section
+   !! D: find_contacts' first contact and least separation).
+   real(wp) function analog_criterion_value(sol, code) result(v)
+      type(analog_solution_t), intent(in) :: sol
+      integer, intent(in) :: code
+      select case (code)
+      case (acrit_meet)
+         v = merge(1.0_wp, 0.0_wp, sol%n_contact > 0)
+      case (acrit_tmeet)
+         if (sol%n_contact > 0) then
+            v = sol%contact(1)%t_begin
+         else
+            v = ieee_value(v, ieee_quiet_nan)
+         end if
+      case (acrit_sepmin)
+         v = sol%min_gap
+      case default
+         v = ieee_value(v, ieee_quiet_nan)
+      end select
+   end function analog_criterion_value
 end module study_criteria
