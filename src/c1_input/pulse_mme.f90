@@ -12,7 +12,7 @@
 !! content is wrong, or a channel the data set does not hold, is a deck
 !! error (2), each with the file and line.
 module pulse_mme
-   use kinds, only: wp, g_std
+   use kinds, only: wp, g_std, inch_m
    use error_handling, only: error_t, error_append, exit_deck, exit_io
    use strings, only: itoa, num, read_real, read_int, escaped, upper
    use text_io, only: string_t, read_text_file, append_string
@@ -354,7 +354,7 @@ contains
          case ('G')
             scale = g_std
          case ('M/S2')
-            scale = 1.0_wp/0.0254_wp
+            scale = 1.0_wp/inch_m
          case ('FT/S2')
             scale = 12.0_wp
          case ('IN/S2')

@@ -11,7 +11,7 @@
 !! new; one that exists is an input/output error before the run starts)
 !! and every write is checked.
 module mme_sink
-   use kinds, only: wp, g_std
+   use kinds, only: wp, g_std, pound_force_n
    use error_handling, only: error_t, error_set, exit_io
    use strings, only: itoa, escaped
    use output_registry, only: output_registry_t, output_frame_t
@@ -26,7 +26,7 @@ module mme_sink
    public :: mme_sink_t, mme_sink_open, mme_check_dir, mme_lb_to_n
 
    !> One pound force in newtons (the international avoirdupois pound and g_n).
-   real(wp), parameter :: mme_lb_to_n = 4.4482216152605_wp
+   real(wp), parameter :: mme_lb_to_n = pound_force_n
    !> Samples kept before the arrays grow.
    integer, parameter :: first_capacity = 256
 

@@ -6,7 +6,7 @@ module kinds
    implicit none
    private
 
-   public :: wp, i8, pi, deg, g_std
+   public :: wp, i8, pi, deg, g_std, inch_m, inch_mm, pound_force_n
 
    !> Working precision: IEEE double.
    integer, parameter :: wp = real64
@@ -18,4 +18,8 @@ module kinds
    real(wp), parameter :: deg = pi/180.0_wp
    !> Standard gravity in in/s^2 (9.80665 m/s^2 / 0.0254 m/in).
    real(wp), parameter :: g_std = 9.80665_wp/0.0254_wp
+   !> The inch in metres and in millimetres, and the pound-force in newtons
+   !! (exact by definition: the SI figures of the FMVSS table and ISO-MME).
+   real(wp), parameter :: inch_m = 0.0254_wp, inch_mm = 25.4_wp
+   real(wp), parameter :: pound_force_n = 4.4482216152605_wp
 end module kinds

@@ -8,7 +8,7 @@
 !! step: the room it needs is reserved by books_init.
 module step_bookkeeping
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-   use kinds, only: wp, i8, g_std
+   use kinds, only: wp, i8, g_std, inch_m, inch_mm, pound_force_n
    use acceleration_criteria, only: criteria_new
    use error_handling, only: error_t, error_set, error_prefix, exit_numerical
    use strings, only: num
@@ -244,7 +244,7 @@ contains
                call sample_loads(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), this%forces, t, os)
             ! the chest's deflection (mm) under the torso belt and its contacts
             if (os%channels%deflection_kept) &
-               call os%channels%deflection%add(t, [25.4_wp*occupant_chest_deflection(occ, st, y)])
+               call os%channels%deflection%add(t, [inch_mm*occupant_chest_deflection(occ, st, y)])
             if (estimated) then
                call os%accuracy%add_step(t, stepper%local_error(occ%z_offset + 1:occ%z_offset + n_dof), &
                                          stepper%local_error(occ%zdot_offset + 1:occ%zdot_offset + n_dof))
@@ -359,7 +359,7 @@ contains
                call sample_loads(occ, st, stepper%f(occ%zdot_offset + 1:occ%zdot_offset + n_dof), this%forces, t, os)
             end if
             if (os%channels%deflection_kept) &
-               call os%channels%deflection%add(t, [25.4_wp*occupant_chest_deflection(occ, st, y)])
+               call os%channels%deflection%add(t, [inch_mm*occupant_chest_deflection(occ, st, y)])
          end associate
       end do
    end subroutine sample_after_jump
@@ -460,8 +460,8 @@ contains
       real(wp), intent(in) :: zdd(n_dof), t
       type(point_force_list_t), intent(in) :: forces
       type(occupant_summary_t), intent(inout) :: os
-      real(wp), parameter :: newton = 4.4482216152605_wp       ! N per lbf
-      real(wp), parameter :: newton_metre = newton*0.0254_wp   ! N m per lbf in
+      real(wp), parameter :: newton = pound_force_n             ! N per lbf
+      real(wp), parameter :: newton_metre = newton*inch_m        ! N m per lbf in
       real(wp), parameter :: thighs = 2.0_wp                  ! femurs in segment 7
       integer, parameter :: hip = 1, neck = 4, head = 4, thigh = 7
       type(point_state_t) :: cg(n_seg)

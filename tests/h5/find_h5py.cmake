@@ -3,19 +3,27 @@
 # find_package(Python3) found may lack h5py (a pyenv, for instance) while
 # the system's has it (Debian: python3-h5py); empty when none has it.
 include_guard(GLOBAL)
-set(HSRI2D_H5PY_PYTHON "" CACHE FILEPATH "Python interpreter with h5py (found when empty)")
-if(NOT HSRI2D_H5PY_PYTHON)
+# hsri2d_find_python(VAR MODULES DOC): VAR (a cache entry) set to the first of
+# the Python found by find_package and the system's that imports MODULES
+# (a comma-separated list), unless it is set already.
+function(hsri2d_find_python var modules doc)
+  set(${var} "" CACHE FILEPATH "${doc}")
+  if(${var})
+    return()
+  endif()
   foreach(candidate IN ITEMS "${Python3_EXECUTABLE}" /usr/bin/python3)
     if(candidate AND EXISTS "${candidate}")
-      execute_process(COMMAND "${candidate}" -c "import h5py"
-                      RESULT_VARIABLE no_h5py OUTPUT_QUIET ERROR_QUIET)
-      if(no_h5py EQUAL 0)
-        set(HSRI2D_H5PY_PYTHON "${candidate}" CACHE FILEPATH "Python interpreter with h5py (found when empty)" FORCE)
-        break()
+      execute_process(COMMAND "${candidate}" -c "import ${modules}"
+                      RESULT_VARIABLE missing OUTPUT_QUIET ERROR_QUIET)
+      if(missing EQUAL 0)
+        set(${var} "${candidate}" CACHE FILEPATH "${doc}" FORCE)
+        return()
       endif()
     endif()
   endforeach()
-endif()
+endfunction()
+
+hsri2d_find_python(HSRI2D_H5PY_PYTHON "h5py" "Python interpreter with h5py (found when empty)")
 if(HSRI2D_H5PY_PYTHON)
   message(STATUS "Tests: h5py found with ${HSRI2D_H5PY_PYTHON}")
 else()
@@ -38,19 +46,8 @@ endfunction()
 # HSRI2D_PLOT_PYTHON: an interpreter that can import h5py and matplotlib, for
 # tools/plot's tests (issue 18). tools/setup installs python3-matplotlib, so a
 # machine without it fails those tests, saying what to install.
-set(HSRI2D_PLOT_PYTHON "" CACHE FILEPATH "Python interpreter with h5py and matplotlib (found when empty)")
-if(NOT HSRI2D_PLOT_PYTHON)
-  foreach(candidate IN ITEMS "${Python3_EXECUTABLE}" /usr/bin/python3)
-    if(candidate AND EXISTS "${candidate}")
-      execute_process(COMMAND "${candidate}" -c "import h5py, matplotlib, numpy"
-                      RESULT_VARIABLE no_plot OUTPUT_QUIET ERROR_QUIET)
-      if(no_plot EQUAL 0)
-        set(HSRI2D_PLOT_PYTHON "${candidate}" CACHE FILEPATH "Python interpreter with h5py and matplotlib (found when empty)" FORCE)
-        break()
-      endif()
-    endif()
-  endforeach()
-endif()
+hsri2d_find_python(HSRI2D_PLOT_PYTHON "h5py, matplotlib, numpy"
+                   "Python interpreter with h5py and matplotlib (found when empty)")
 
 # hsri2d_add_plot_test(NAME name SCRIPT file ARGS ...): a test run by that interpreter,
 # or one that fails saying python3-matplotlib is missing.
