@@ -924,7 +924,8 @@ contains
       t(g_analog)%layout = layout_list
       t(g_analog)%max_cards = 100
       t(g_analog)%note = 'A deck with this group runs Section D''s analog instead of the occupant simulation, ' &
-         //'and holds no other group but *TITLE. Each card is one case: a front occupant held by a shoulder ' &
+         //'and holds no other group but *TITLE (and a study of it: *STUDY, *VARY, *VALUES, *CRITERIA, with one ' &
+         //'case). Each card is one case: a front occupant held by a shoulder ' &
          //'harness (spring K1 at L1 from the hip, damping ratio ZETA: 0 undamped, 1 critical) and a hip ' &
          //'torque T; a rear occupant pivoting freely until the front seat back stops him at 60 deg; both the ' &
          //'95th-percentile upper body of the report (110 lb, 38 in, CG 17 in from the hip, I0 = 117 ' &
