@@ -137,7 +137,7 @@ contains
       type(run_row_t), intent(inout) :: row
       type(error_t), intent(inout) :: err
       type(analog_case_t), allocatable :: cases(:)
-      type(analog_solution_t) :: sol
+      type(analog_solution_t), allocatable :: sols(:)
       integer :: k
       if (err%failed()) then
          row%status = status_invalid
@@ -145,21 +145,22 @@ contains
          return
       end if
       if (len(listing_file) > 0 .or. len(h5_file) > 0) then
-         call run_analog(deck, deck_text(deck), listing_file, h5_file, err)
+         call run_analog(deck, deck_text(deck), listing_file, h5_file, err, sols)
          if (err%failed()) then
             row%status = status_failed
             row%reason = message_of(err, 'the run''s outputs could not be written')
             return
          end if
+      else
+         cases = analog_cases(deck)   ! (read_study: one case)
+         sols = [analog_solve(cases(1))]
       end if
-      cases = analog_cases(deck)   ! (read_study: one case)
-      sol = analog_solve(cases(1))
       row%status = status_completed
-      row%t_end = cases(1)%t_max
+      row%t_end = sols(1)%c%t_max
       allocate (row%crit(size(st%crits)))
       row%meets = .true.
       do k = 1, size(st%crits)
-         row%crit(k) = analog_criterion_value(sol, analog_criterion_index(st%crits(k)%word))
+         row%crit(k) = analog_criterion_value(sols(1), analog_criterion_index(st%crits(k)%word))
          if (st%crits(k)%has_limit) row%meets = row%meets .and. row%crit(k) <= st%crits(k)%limit
       end do
    end subroutine analog_run
