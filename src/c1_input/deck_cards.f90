@@ -30,7 +30,7 @@ module deck_cards
    public :: g_loadpoly, g_loadrate, g_loadtable, g_beltloading
    public :: g_seat, g_seatsprings, g_seatbeam, g_seatbeaminit, g_seatbeams
    public :: g_belts, g_beltoptions
-   public :: g_study, g_vary, g_values, g_criteria, study_methods, max_study_variables
+   public :: g_study, g_vary, g_values, g_criteria, study_methods, max_study_variables, criterion_word_list
    public :: g_fmvss, g_pulsemme, g_analog, g_printerplot
 
    integer, parameter :: max_fields = 7
@@ -77,11 +77,12 @@ module deck_cards
 
    !> C.8's methods, in the order of *STUDY's METHOD words.
    character(len=*), parameter :: study_methods = 'OAT|GRID|RANDOM|LHS|ENSEMBLE|OPTIMIZE'
-   !> The evaluation criteria a study may judge a run by (c8_modification's
-   !! study_criteria holds each one's meaning; test_study checks the two agree).
+   !> The evaluation criteria a study may judge a run by: the occupant
+   !! simulation's, then Section D analog's (c8_modification's study_criteria
+   !! holds each one's meaning; test_study_criteria checks the two agree).
    character(len=*), parameter :: criterion_word_list = &
       'HIC15|HIC36|HEADG|HEADGSI|CHESTG|CHESTGSI|CLIP3MS|HEADX|BELTF|LAPF|TORSOF|NECKF|NECKINJ|TORSOINJ|' &
-      //'UNWANTED|INJURY|DISLOC|ENDED'
+      //'UNWANTED|INJURY|DISLOC|ENDED|MEET|TMEET|SEPMIN|OVERLAP|CDAMP'
    integer, parameter :: max_study_variables = 20
 
    !> One field of a card.
@@ -95,7 +96,7 @@ module deck_cards
       real(wp) :: default = 0.0_wp          !< in deck units
       real(wp) :: low = -huge(1.0_wp), high = huge(1.0_wp) !< valid range, deck units
       logical :: low_open = .false.         !< the range excludes low
-      character(len=320) :: words = ' '     !< allowed words, separated by '|'
+      character(len=400) :: words = ' '     !< allowed words, separated by '|' (*VARY GROUP: every group's name)
       character(len=72) :: meaning = ' '
    end type field_spec_t
 
@@ -546,8 +547,9 @@ contains
 
       call seat_groups(t)
       call output_groups(t)
-      call study_groups(t)
+      ! (the analog before the study: *VARY's GROUP words are the groups named before it)
       call analog_groups(t)
+      call study_groups(t)
 
       block
          integer :: i
@@ -832,7 +834,8 @@ contains
          //'GRID every combination, RANDOM and LHS (Latin hypercube) RUNS draws (SEED required), ENSEMBLE RUNS ' &
          //'small perturbations (SPREAD) about the deck (SEED required), OPTIMIZE minimises criterion OBJECT ' &
          //'of occupant OCC within the limits of *CRITERIA (Nelder-Mead within LOW-HIGH, at most RUNS runs, ' &
-         //'to TOL). KEEP: also each run''s own listing and HDF5 file. docs/modification.md.'
+         //'to TOL). KEEP: also each run''s own listing and HDF5 file. A deck with *ANALOG (one case) may ' &
+         //'hold a study too: each run solves the analog (docs/analog.md). docs/modification.md.'
       call set_fields(t(g_study), [ &
          word_field('METHOD', study_methods, blank_required, 'how the fields vary'), &
          int_field('RUNS', blank_absent, 0, 1, 1000000, 'runs (RANDOM, LHS, ENSEMBLE; OPTIMIZE: budget)'), &
@@ -902,7 +905,8 @@ contains
       t(g_criteria)%max_cards = 40
       t(g_criteria)%note = 'One card per criterion reported for each run (docs/modification.md lists them); a ' &
          //'run meets the study''s limits when every criterion with a LIMIT is at most its LIMIT (a count ' &
-         //'such as UNWANTED with LIMIT 0: no such event).'
+         //'such as UNWANTED with LIMIT 0: no such event). A deck with *ANALOG is judged by MEET, TMEET, ' &
+         //'SEPMIN, OVERLAP and CDAMP only, of both occupants together (OCC blank); any other deck by the rest.'
       call set_fields(t(g_criteria), [ &
          word_field('CRIT', criterion_word_list, blank_required, 'the criterion'), &
          int_field('OCC', blank_default, 1, 1, 2, 'of occupant'), &
@@ -920,7 +924,8 @@ contains
       t(g_analog)%layout = layout_list
       t(g_analog)%max_cards = 100
       t(g_analog)%note = 'A deck with this group runs Section D''s analog instead of the occupant simulation, ' &
-         //'and holds no other group but *TITLE. Each card is one case: a front occupant held by a shoulder ' &
+         //'and holds no other group but *TITLE (and a study of it: *STUDY, *VARY, *VALUES, *CRITERIA, with one ' &
+         //'case). Each card is one case: a front occupant held by a shoulder ' &
          //'harness (spring K1 at L1 from the hip, damping ratio ZETA: 0 undamped, 1 critical) and a hip ' &
          //'torque T; a rear occupant pivoting freely until the front seat back stops him at 60 deg; both the ' &
          //'95th-percentile upper body of the report (110 lb, 38 in, CG 17 in from the hip, I0 = 117 ' &

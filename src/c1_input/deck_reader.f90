@@ -15,7 +15,8 @@ module deck_reader
    use deck_cards, only: group_spec_t, field_spec_t, card_table, max_fields, card_width, &
       index_first_col, index_last_col, data_last_col, field_first_col, field_last_col, &
       kind_real, kind_int, kind_word, kind_text, blank_default, blank_required, blank_absent, &
-      layout_single, layout_indexed, layout_list, layout_multi, n_groups, g_analog, g_title
+      layout_single, layout_indexed, layout_list, layout_multi, n_groups, g_analog, g_title, g_study, g_vary, &
+      g_values, g_criteria
    implicit none
    private
 
@@ -215,14 +216,16 @@ contains
       integer :: gid, k
       logical :: analog
 
-      ! Section D's analog is a deck of its own: *TITLE and *ANALOG alone
+      ! Section D's analog is a deck of its own: *TITLE and *ANALOG alone, and
+      ! a study's groups (C.8: a study of the analog, docs/analog.md)
       analog = deck%group(g_analog)%present .or. deck%header_rejected(g_analog)
       do gid = 1, n_groups
-         if (analog .and. deck%group(gid)%present .and. gid /= g_analog .and. gid /= g_title) &
+         if (analog .and. deck%group(gid)%present .and. .not. any(gid == [g_analog, g_title, g_study, g_vary, &
+                                                                            g_values, g_criteria])) &
             call report(deck, err, deck%group(gid)%source, deck%group(gid)%line, 'card group *' &
             //trim(deck%spec(gid)%name)//' in a deck with *ANALOG (line '//itoa(deck%group(g_analog)%line) &
             //' of '//deck%source_name(deck%group(g_analog)%source)%s//'): an analog deck (report Section D, ' &
-            //'docs/analog.md) holds *TITLE and *ANALOG only')
+            //'docs/analog.md) holds *TITLE and *ANALOG only, and a study''s *STUDY, *VARY, *VALUES and *CRITERIA')
       end do
       do gid = 1, n_groups
          associate (g => deck%group(gid), s => deck%spec(gid))

@@ -30,6 +30,7 @@ module study_criteria
    use end_tests, only: end_injury, end_contact, end_rest
    use joint_dislocation, only: event_dislocation_low, event_dislocation_high
    use force_injuries, only: event_tension, fc_defined, fs_defined
+   use analog_model, only: analog_solution_t, critical_damping
    implicit none
    private
 
@@ -38,6 +39,10 @@ module study_criteria
    public :: crit_hic15, crit_hic36, crit_headg, crit_headgsi, crit_chestg, crit_chestgsi, crit_clip3ms, crit_headx, &
              crit_beltf, crit_lapf, crit_torsof, crit_neckf, crit_neckinj, crit_torsoinj, crit_unwanted, crit_injury, &
              crit_disloc, crit_ended
+   public :: n_analog_criteria, analog_criterion_words, analog_criterion_index, analog_criterion_value
+   public :: analog_criterion_word, analog_criterion_column, analog_criterion_unit, analog_criterion_meaning
+   public :: acrit_meet, acrit_tmeet, acrit_sepmin, acrit_overlap, acrit_cdamp
+   public :: word_column, word_unit
 
    !> The criteria's indices (their order in every table).
    integer, parameter :: crit_hic15 = 1, crit_hic36 = 2, crit_headg = 3, crit_headgsi = 4, crit_chestg = 5, &
@@ -45,6 +50,34 @@ module study_criteria
                          crit_torsof = 11, crit_neckf = 12, crit_neckinj = 13, crit_torsoinj = 14, &
                          crit_unwanted = 15, crit_injury = 16, crit_disloc = 17, crit_ended = 18
    integer, parameter :: n_criteria = 18
+
+   !> Section D's analog (docs/analog.md): the criteria of a run that is an
+   !! analog case, a list of their own (an analog run has no occupant model:
+   !! none of the 18 above applies to it). MEET: 1 when the occupants meet
+   !! before TMAX, else 0; TMEET: s, when they first meet (NaN when they
+   !! never do); SEPMIN: in, their least separation over the run (0 or less
+   !! once they meet: the scan's overlap); OVERLAP: in, how deep they pass
+   !! into each other, max(0, -SEPMIN) (a limit is "at most": OVERLAP LIMIT
+   !! 0 keeps them apart, a limit that grows with the overlap, as OPTIMIZE's
+   !! penalty needs, where MEET's steps from 0 to 1); CDAMP: lb*s/in, the
+   !! harness's damper c of the run (ZETA times critical, SD-2: an input, a
+   !! criterion so that OPTIMIZE can minimise it: the least damping that
+   !! keeps the occupants apart).
+   integer, parameter :: acrit_meet = 1, acrit_tmeet = 2, acrit_sepmin = 3, acrit_overlap = 4, acrit_cdamp = 5
+   integer, parameter :: n_analog_criteria = 5
+   character(len=*), parameter :: analog_criterion_words = 'MEET|TMEET|SEPMIN|OVERLAP|CDAMP'
+   character(len=8), parameter :: analog_words(n_analog_criteria) = [character(len=8) :: 'MEET', 'TMEET', 'SEPMIN', &
+      'OVERLAP', 'CDAMP']
+   character(len=9), parameter :: analog_columns(n_analog_criteria) = [character(len=9) :: 'meet', 't_meet', &
+      'sep_min', 'overlap', 'c_damp']
+   character(len=7), parameter :: analog_units(n_analog_criteria) = [character(len=7) :: '0/1', 's', 'in', 'in', &
+      'lb*s/in']
+   character(len=100), parameter :: analog_meanings(n_analog_criteria) = [character(len=100) :: &
+      '1 when the occupants meet before TMAX, else 0', &
+      'when the occupants first meet (NaN: never)', &
+      'least separation of the occupants (0 or less: they meet)', &
+      'how deep the occupants pass into each other, max(0, -SEPMIN)', &
+      'the harness''s damper c of the run (ZETA times critical)']
 
    !> The deck words in the list's order, '|' between them (for a card
    !! field's word list; test_study_criteria checks it against criterion_word).
@@ -290,4 +323,95 @@ contains
          end associate
       end do
    end function count_events
+
+   !> The analog criterion's index of a deck word (any case, blanks around
+   !! it ignored; 0: not one).
+   pure integer function analog_criterion_index(word) result(code)
+      character(len=*), intent(in) :: word
+      integer :: k
+      code = 0
+      do k = 1, n_analog_criteria
+         if (trim(analog_words(k)) == upper(trim(adjustl(word)))) code = k
+      end do
+   end function analog_criterion_index
+
+   !> Analog criterion i's deck word.
+   pure function analog_criterion_word(i) result(w)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: w
+      w = trim(analog_words(i))
+   end function analog_criterion_word
+
+   !> Analog criterion i's column in a results table.
+   pure function analog_criterion_column(i) result(c)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: c
+      c = trim(analog_columns(i))
+   end function analog_criterion_column
+
+   !> Analog criterion i's unit.
+   pure function analog_criterion_unit(i) result(u)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: u
+      u = trim(analog_units(i))
+   end function analog_criterion_unit
+
+   !> What analog criterion i means, in one line.
+   pure function analog_criterion_meaning(i) result(m)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: m
+      m = trim(analog_meanings(i))
+   end function analog_criterion_meaning
+
+   !> The table's column of a criterion's deck word, of either list ('' for
+   !! a word of neither).
+   pure function word_column(word) result(c)
+      character(len=*), intent(in) :: word
+      character(len=:), allocatable :: c
+      c = ''
+      if (criterion_index(word) > 0) then
+         c = criterion_column(criterion_index(word))
+      else if (analog_criterion_index(word) > 0) then
+         c = analog_criterion_column(analog_criterion_index(word))
+      end if
+   end function word_column
+
+   !> The unit of a criterion's deck word, of either list ('' for a word of
+   !! neither).
+   pure function word_unit(word) result(u)
+      character(len=*), intent(in) :: word
+      character(len=:), allocatable :: u
+      u = ''
+      if (criterion_index(word) > 0) then
+         u = criterion_unit(criterion_index(word))
+      else if (analog_criterion_index(word) > 0) then
+         u = analog_criterion_unit(analog_criterion_index(word))
+      end if
+   end function word_unit
+
+   !> The value of analog criterion `code` of a solved analog case (Section
+   !! D: find_contacts' first contact and least separation; the damper c as
+   !! the case's parameter table gives it, SD-2).
+   real(wp) function analog_criterion_value(sol, code) result(v)
+      type(analog_solution_t), intent(in) :: sol
+      integer, intent(in) :: code
+      select case (code)
+      case (acrit_meet)
+         v = merge(1.0_wp, 0.0_wp, sol%n_contact > 0)
+      case (acrit_tmeet)
+         if (sol%n_contact > 0) then
+            v = sol%contact(1)%t_begin
+         else
+            v = ieee_value(v, ieee_quiet_nan)
+         end if
+      case (acrit_sepmin)
+         v = sol%min_gap
+      case (acrit_overlap)
+         v = max(0.0_wp, -sol%min_gap)
+      case (acrit_cdamp)
+         v = sol%c%zeta*critical_damping(sol%c)
+      case default
+         v = ieee_value(v, ieee_quiet_nan)
+      end select
+   end function analog_criterion_value
 end module study_criteria

@@ -9,6 +9,7 @@
 module study_driver
    use, intrinsic :: iso_c_binding, only: c_long
    use, intrinsic :: iso_fortran_env, only: int64
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use kinds, only: wp
    use error_handling, only: error_t, error_set, exit_usage, exit_io, exit_study
    use strings, only: itoa, num, upper
@@ -20,13 +21,14 @@ module study_driver
    use run_case_mod, only: builtin_deck_name, deck_text, pulse_file
    use model, only: model_t
    use model_builder, only: build_model
+   use analog_input, only: deck_is_analog
    use equations_of_motion, only: crash_system_t, system_build
    use model_origin, only: deck_origin, problem
    use output_files, only: output_file_t, check_output_paths
    use study_h5, only: study_h5_t
    use version_info, only: hsri2d_version
    use study_input, only: study_t, read_study, has_study, method_optimize, method_ensemble, method_word
-   use study_criteria, only: criterion_column, criterion_unit, criterion_index
+   use study_criteria, only: word_column, word_unit
    use study_runs, only: study_run
    use study_table, only: run_row_t, row_csv, row_from_csv, table_header, status_word, &
       status_completed, status_ended, status_failed, status_invalid
@@ -212,22 +214,28 @@ contains
                         '--jobs, --shard, --collect, --study-size) need one (docs/modification.md)')
          return
       end if
-      call build_model(sc%deck, m, err)
+      ! Section D's analog has no occupant model: each run solves its closed
+      ! form (study_runs), and its deck reads no pulse
+      if (.not. deck_is_analog(sc%deck)) call build_model(sc%deck, m, err)
       call read_study(sc%deck, sc%st, err)
       if (err%failed()) return
-      ! a deck's model has one occupant (NBODY is its position, not a count)
-      n_occ = occupants_of(m)
-      do k = 1, size(sc%st%crits)
-         if (sc%st%crits(k)%occupant > n_occ) call problem(deck_origin(sc%deck), err, sc%st%crits(k)%card, &
-            'the deck''s model has '//itoa(n_occ)//' occupant(s); there is no occupant '// &
-            itoa(sc%st%crits(k)%occupant), 'OCC')
-      end do
-      if (sc%st%objective_occupant > n_occ .and. len_trim(sc%st%objective) > 0) &
-         call problem(deck_origin(sc%deck), err, sc%st%card, 'the deck''s model has '//itoa(n_occ)// &
-                      ' occupant(s); there is no occupant '//itoa(sc%st%objective_occupant), 'OCC')
-      if (err%failed()) return
+      if (sc%st%analog) then
+         allocate (sc%pulse_file(0))
+      else
+         ! a deck's model has one occupant (NBODY is its position, not a count)
+         n_occ = occupants_of(m)
+         do k = 1, size(sc%st%crits)
+            if (sc%st%crits(k)%occupant > n_occ) call problem(deck_origin(sc%deck), err, sc%st%crits(k)%card, &
+               'the deck''s model has '//itoa(n_occ)//' occupant(s); there is no occupant '// &
+               itoa(sc%st%crits(k)%occupant), 'OCC')
+         end do
+         if (sc%st%objective_occupant > n_occ .and. len_trim(sc%st%objective) > 0) &
+            call problem(deck_origin(sc%deck), err, sc%st%card, 'the deck''s model has '//itoa(n_occ)// &
+                         ' occupant(s); there is no occupant '//itoa(sc%st%objective_occupant), 'OCC')
+         if (err%failed()) return
+         sc%pulse_file = pulse_file(sc%deck, m)
+      end if
       sc%identity = study_text(sc%deck)
-      sc%pulse_file = pulse_file(sc%deck, m)
       if (sc%st%method == method_optimize) then
          sc%n_runs = sc%st%runs
          allocate (sc%points(size(sc%st%vars), 0))
@@ -597,6 +605,7 @@ contains
       integer :: k
       f = huge(1.0_wp)
       if (.not. allocated(row%crit) .or. ko == 0) return
+      if (ieee_is_nan(row%crit(ko))) return   ! (an objective without a value: the worst)
       f = row%crit(ko)
       do k = 1, size(st%crits)
          if (.not. st%crits(k)%has_limit) cycle
@@ -674,7 +683,7 @@ contains
       integer :: k
       allocate (u(0))
       do k = 1, size(st%crits)
-         call append_string(u, criterion_unit(criterion_index(st%crits(k)%word)))
+         call append_string(u, word_unit(st%crits(k)%word))
       end do
    end function crit_units
 
@@ -685,10 +694,9 @@ contains
       allocate (c(0))
       do k = 1, size(st%crits)
          if (st%crits(k)%occupant > 1) then
-            call append_string(c, trim(criterion_column(criterion_index(st%crits(k)%word)))//'_occ'// &
-                               itoa(st%crits(k)%occupant))
+            call append_string(c, word_column(st%crits(k)%word)//'_occ'//itoa(st%crits(k)%occupant))
          else
-            call append_string(c, trim(criterion_column(criterion_index(st%crits(k)%word))))
+            call append_string(c, word_column(st%crits(k)%word))
          end if
       end do
    end function crit_columns
@@ -707,7 +715,12 @@ contains
       type(string_t), allocatable :: vc(:), cc(:)
       !> the line printer's width; a column's least width
       integer, parameter :: line_width = 132, column_width = 13
-      call lst%put_line(' hsri2d '//hsri2d_version//'   STUDY (report C.8: the program varies its own inputs)')
+      if (sc%st%analog) then
+         call lst%put_line(' hsri2d '//hsri2d_version//'   STUDY (report C.8: the program varies its own inputs) '// &
+                           'of the analog of section D')
+      else
+         call lst%put_line(' hsri2d '//hsri2d_version//'   STUDY (report C.8: the program varies its own inputs)')
+      end if
       call lst%put_line(' TITLE   '//trim(title_of(sc%deck)))
       call lst%put_line(' METHOD  '//method_word(sc%st%method)//';  runs '//itoa(sc%n_runs))
       call lst%put_line('')
@@ -719,8 +732,13 @@ contains
       call lst%put_line('')
       call lst%put_line(' CRITERIA (a run meets the study''s limits when each is at most its limit)')
       do k = 1, size(sc%st%crits)
-         line = '   '//pad(trim(sc%st%crits(k)%word), 9)//' occupant '//itoa(sc%st%crits(k)%occupant)//'  '// &
-                trim(criterion_unit(criterion_index(sc%st%crits(k)%word)))
+         if (sc%st%analog) then
+            ! (Section D's criteria are of the two occupants together)
+            line = '   '//pad(trim(sc%st%crits(k)%word), 9)//' both occupants  '//word_unit(sc%st%crits(k)%word)
+         else
+            line = '   '//pad(trim(sc%st%crits(k)%word), 9)//' occupant '//itoa(sc%st%crits(k)%occupant)//'  '// &
+                   word_unit(sc%st%crits(k)%word)
+         end if
          if (sc%st%crits(k)%has_limit) line = line//'   limit '//num(sc%st%crits(k)%limit)
          call lst%put_line(line)
       end do
@@ -831,14 +849,18 @@ contains
             text = num(row%x(k), 6)
          else if (allocated(row%crit)) then
             text = num(row%crit(k - size(vc)), 6)
+            ! a criterion without a value (TMEET of an analog run whose
+            ! occupants never meet)
+            if (ieee_is_nan(row%crit(k - size(vc)))) text = 'none'
          end if
       end function cell
 
    end subroutine write_listing
 
    !> Each criterion's count, mean, standard deviation and range over the
-   !! runs that have criteria (completed, or ended by an end test): with
-   !! ENSEMBLE, how robust each output is to the inputs' small changes.
+   !! runs that have criteria (completed, or ended by an end test) and a
+   !! value of it (TMEET has none where the analog's occupants never meet):
+   !! with ENSEMBLE, how robust each output is to the inputs' small changes.
    subroutine statistics_lines(lst, sc, store, cc)
       type(output_file_t), intent(inout) :: lst
       type(study_case_t), intent(in) :: sc
@@ -847,7 +869,7 @@ contains
       type(run_row_t) :: row
       logical :: ok
       real(wp) :: mean(size(cc)), m2(size(cc)), lo(size(cc)), hi(size(cc)), delta
-      integer :: k, r, n
+      integer :: k, r, n(size(cc))
       if (size(cc) == 0) return
       ! one pass over the rows (Welford's running mean and sum of squares)
       n = 0
@@ -859,10 +881,11 @@ contains
          call store_get(store, sc, r, row, ok)
          if (.not. ok) cycle
          if (.not. allocated(row%crit)) cycle
-         n = n + 1
          do k = 1, size(cc)
+            if (ieee_is_nan(row%crit(k))) cycle
+            n(k) = n(k) + 1
             delta = row%crit(k) - mean(k)
-            mean(k) = mean(k) + delta/n
+            mean(k) = mean(k) + delta/n(k)
             m2(k) = m2(k) + delta*(row%crit(k) - mean(k))
             lo(k) = min(lo(k), row%crit(k))
             hi(k) = max(hi(k), row%crit(k))
@@ -872,12 +895,12 @@ contains
                         'with n - 1)')
       call lst%put_line('   criterion          runs          mean     std. dev.       least     largest')
       do k = 1, size(cc)
-         if (n == 0) then
+         if (n(k) == 0) then
             call lst%put_line('   '//pad(cc(k)%s, 13)//rpad('0', 9))
             cycle
          end if
-         call lst%put_line('   '//pad(cc(k)%s, 13)//rpad(itoa(n), 9)//' '//rpad(num(mean(k), 6), 13)//' '// &
-                           rpad(num(sqrt(m2(k)/max(n - 1, 1)), 6), 13)//' '//rpad(num(lo(k), 6), 11)//' '// &
+         call lst%put_line('   '//pad(cc(k)%s, 13)//rpad(itoa(n(k)), 9)//' '//rpad(num(mean(k), 6), 13)//' '// &
+                           rpad(num(sqrt(m2(k)/max(n(k) - 1, 1)), 6), 13)//' '//rpad(num(lo(k), 6), 11)//' '// &
                            rpad(num(hi(k), 6), 11))
       end do
    end subroutine statistics_lines

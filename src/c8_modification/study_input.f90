@@ -10,10 +10,12 @@ module study_input
    use error_handling, only: error_t
    use strings, only: itoa, num
    use deck_reader, only: deck_t, card_t, deck_field_address
-   use deck_cards, only: g_study, g_vary, g_values, g_criteria, study_methods, kind_int
+   use deck_cards, only: g_study, g_vary, g_values, g_criteria, g_analog, study_methods, kind_int
    use field_values, only: field_expectation
    use model_origin, only: model_origin_t, deck_origin, problem, problem_at
    use study_sampling, only: method_oat, method_grid, method_random, method_lhs, method_ensemble
+   use study_criteria, only: criterion_index, analog_criterion_index, analog_criterion_words
+   use analog_input, only: deck_is_analog
    implicit none
    private
 
@@ -60,6 +62,9 @@ module study_input
       character(len=8) :: objective = ' '    !< OPTIMIZE: the criterion minimised
       integer :: objective_occupant = 1
       integer :: keep = keep_none
+      !> the deck is Section D's analog (*ANALOG, one case): each run solves
+      !! it, judged by the analog's criteria (docs/analog.md)
+      logical :: analog = .false.
       type(card_t) :: card                   !< the *STUDY card, for messages
       type(study_var_t), allocatable :: vars(:)
       type(study_crit_t), allocatable :: crits(:)
@@ -71,6 +76,8 @@ module study_input
    !> The criteria reported when the deck gives no *CRITERIA.
    character(len=8), parameter :: default_criteria(5) = &
       [character(len=8) :: 'HIC15', 'CLIP3MS', 'BELTF', 'UNWANTED', 'INJURY']
+   !> ... and an analog deck's (Section D: whether, when, how near).
+   character(len=8), parameter :: default_analog_criteria(3) = [character(len=8) :: 'MEET', 'TMEET', 'SEPMIN']
 
 contains
 
@@ -96,6 +103,11 @@ contains
       end if
       c = deck%group(g_study)%card(1)
       st%card = c
+      st%analog = deck_is_analog(deck)
+      ! a run of an analog study is one case: the one *ANALOG card *VARY sets
+      if (st%analog .and. deck%group(g_analog)%n > 1) &
+         call problem(o, err, deck%group(g_analog)%card(2), 'a study of the analog varies one case: this deck has '// &
+                      itoa(deck%group(g_analog)%n)//' *ANALOG cards; keep one (the study''s *VARY makes the others)')
       st%method = nint(c%value(1))
       st%runs = nint(c%value(2))
       st%seed = nint(c%value(3))
@@ -161,16 +173,64 @@ contains
                st%crits(i)%card = g%card(i)
             end do
          end associate
+      else if (st%analog) then
+         allocate (st%crits(size(default_analog_criteria)))
+         st%crits(:)%word = default_analog_criteria
       else
          allocate (st%crits(size(default_criteria)))
          st%crits(:)%word = default_criteria
       end if
+      call check_criteria_kind(o, st, err)
       ! the objective is a column of the table, whether *CRITERIA names it or not
       if (len_trim(st%objective) > 0) then
          if (.not. any(st%crits(:)%word == st%objective .and. st%crits(:)%occupant == st%objective_occupant)) &
             st%crits = [st%crits, study_crit_t(word=st%objective, occupant=st%objective_occupant)]
       end if
    end subroutine read_study
+
+   !> An analog deck is judged by the analog's criteria only, of both
+   !! occupants together (OCC blank); any other deck by the occupant's.
+   subroutine check_criteria_kind(o, st, err)
+      type(model_origin_t), intent(in) :: o
+      type(study_t), intent(in) :: st
+      type(error_t), intent(inout) :: err
+      integer :: k
+      do k = 1, size(st%crits)
+         associate (cr => st%crits(k))
+            if (cr%card%line == 0) cycle   ! (a default criterion)
+            call check_word(cr%card, cr%word, 'CRIT', 2)
+         end associate
+      end do
+      if (len_trim(st%objective) > 0) call check_word(st%card, st%objective, 'OBJECT', 6)
+   contains
+      subroutine check_word(c, word, field, occ_field)
+         type(card_t), intent(in) :: c
+         character(len=*), intent(in) :: word, field
+         integer, intent(in) :: occ_field
+         if (st%analog .and. analog_criterion_index(word) == 0) then
+            call problem(o, err, c, trim(word)//' is a criterion of the occupant simulation; a deck with *ANALOG '// &
+                         '(report Section D) is judged by '//words_text(analog_criterion_words), field)
+         else if (.not. st%analog .and. criterion_index(word) == 0) then
+            call problem(o, err, c, trim(word)//' is a criterion of report Section D''s analog, for a deck with '// &
+                         '*ANALOG; this deck''s occupants are judged by the criteria of docs/modification.md', field)
+         else if (st%analog .and. c%given(occ_field)) then
+            call problem(o, err, c, 'an analog criterion is of both occupants together: leave OCC blank', 'OCC')
+         end if
+      end subroutine check_word
+   end subroutine check_criteria_kind
+
+   !> A '|'-separated word list as text: 'A, B or C'.
+   pure function words_text(list) result(t)
+      character(len=*), intent(in) :: list
+      character(len=:), allocatable :: t
+      integer :: last
+      t = list
+      last = index(t, '|', back=.true.)
+      if (last > 0) t = t(1:last - 1)//' or '//t(last + 1:)
+      do while (index(t, '|') > 0)
+         t = t(1:index(t, '|') - 1)//', '//t(index(t, '|') + 1:)
+      end do
+   end function words_text
 
    !> One *VARY card: the field it names (located at GROUP, CARD, FIELD when
    !! the deck has no such field) and its values' description.

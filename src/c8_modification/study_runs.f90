@@ -5,6 +5,8 @@
 !! run to its end (run_loop's run_t, through run_simulation, or write_case
 !! when the run's own listing or HDF5 file is kept), and judged: its status
 !! and criteria, and whether every criterion with a limit is within it.
+!! A study of Section D's analog (*ANALOG) builds no model: each run solves
+!! the varied case in closed form (analog_run; docs/analog.md).
 !! One run's failure is that run's row, never the study's end.
 module study_runs
    use kinds, only: wp
@@ -15,11 +17,14 @@ module study_runs
    use model, only: model_t
    use model_builder, only: build_model
    use simulation, only: run_simulation, initial_warnings
-   use run_case_mod, only: write_case, accuracy_notes
+   use run_case_mod, only: write_case, accuracy_notes, deck_text
+   use analog_model, only: analog_case_t, analog_solution_t, analog_solve
+   use analog_input, only: analog_cases
+   use analog_case, only: run_analog
    use run_summary, only: run_summary_t
    use end_tests, only: end_time, end_injury, end_rest, end_contact
    use study_input, only: study_t
-   use study_criteria, only: criterion_index, criterion_value
+   use study_criteria, only: criterion_index, criterion_value, analog_criterion_index, analog_criterion_value
    use study_table, only: run_row_t, status_completed, status_ended, status_failed, status_invalid
    implicit none
    private
@@ -61,12 +66,17 @@ contains
       type(error_t) :: err
       type(string_t), allocatable :: notes(:)
       integer :: k, j
-      allocate (deck, m)
+      allocate (deck)
       row%run = run
       row%x = x
       row%reason = ''
       ! the values as run: what the cards now hold
       call study_deck(base, st, x, deck, err, row%x)
+      if (st%analog) then
+         call analog_run(deck, st, listing_file, h5_file, row, err)
+         return
+      end if
+      allocate (m)
       if (.not. err%failed()) call build_model(deck, m, err)
       if (err%failed()) then
          row%status = status_invalid
@@ -114,6 +124,46 @@ contains
          if (st%crits(k)%has_limit) row%meets = row%meets .and. row%crit(k) <= st%crits(k)%limit
       end do
    end subroutine study_run
+
+   !> A run of a study of Section D's analog (docs/analog.md): the varied
+   !! deck's one case solved in closed form (d_analog; no occupant model is
+   !! built), judged by the analog's criteria; its own listing and HDF5
+   !! file, when kept, those of a plain run of that deck (analog_case).
+   !! err: the variation's, from study_deck.
+   subroutine analog_run(deck, st, listing_file, h5_file, row, err)
+      type(deck_t), intent(in) :: deck
+      type(study_t), intent(in) :: st
+      character(len=*), intent(in) :: listing_file, h5_file
+      type(run_row_t), intent(inout) :: row
+      type(error_t), intent(inout) :: err
+      type(analog_case_t), allocatable :: cases(:)
+      type(analog_solution_t), allocatable :: sols(:)
+      integer :: k
+      if (err%failed()) then
+         row%status = status_invalid
+         row%reason = message_of(err, 'the variation is not a valid deck')
+         return
+      end if
+      if (len(listing_file) > 0 .or. len(h5_file) > 0) then
+         call run_analog(deck, deck_text(deck), listing_file, h5_file, err, sols)
+         if (err%failed()) then
+            row%status = status_failed
+            row%reason = message_of(err, 'the run''s outputs could not be written')
+            return
+         end if
+      else
+         cases = analog_cases(deck)   ! (read_study: one case)
+         sols = [analog_solve(cases(1))]
+      end if
+      row%status = status_completed
+      row%t_end = sols(1)%c%t_max
+      allocate (row%crit(size(st%crits)))
+      row%meets = .true.
+      do k = 1, size(st%crits)
+         row%crit(k) = analog_criterion_value(sols(1), analog_criterion_index(st%crits(k)%word))
+         if (st%crits(k)%has_limit) row%meets = row%meets .and. row%crit(k) <= st%crits(k)%limit
+      end do
+   end subroutine analog_run
 
    !> err's message, or `otherwise` where it has none.
    pure function message_of(err, otherwise) result(m)

@@ -7,7 +7,7 @@
 !! read back (a resumed optimisation) gives the same bits, and any number
 !! of worker processes write the same bytes.
 module study_table
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite, ieee_value, ieee_quiet_nan
    use kinds, only: wp
    use strings, only: itoa, read_real, read_int
    use text_io, only: string_t, append_string
@@ -124,6 +124,12 @@ contains
       if (len(f(3 + n_var)%s) > 0) then
          allocate (row%crit(n_crit))
          do k = 1, n_crit
+            if (f(2 + n_var + k)%s == 'NaN') then
+               ! a criterion without a value (exact_text: TMEET of an analog run
+               ! whose occupants never meet)
+               row%crit(k) = ieee_value(row%crit(k), ieee_quiet_nan)
+               cycle
+            end if
             call read_real(f(2 + n_var + k)%s, row%crit(k), good)
             ok = ok .and. good
          end do
@@ -144,7 +150,7 @@ contains
       real(wp) :: back
       integer :: d, ios
       if (ieee_is_nan(x)) then
-         s = 'NaN'   ! (never a criterion: read_case checks each one's occupant)
+         s = 'NaN'   ! (a criterion without a value: TMEET where the analog's occupants never meet)
          return
       else if (.not. ieee_is_finite(x)) then
          s = trim(merge('-Infinity', 'Infinity ', x < 0.0_wp))

@@ -30,12 +30,14 @@ contains
    !> Solve every case of the analog deck and write the listing
    !! (listing_file, '' = standard output) and the HDF5 file (h5_file, '' =
    !! none), whose paths the caller has checked. deck_lines: its card
-   !! images, for the HDF5 file.
-   subroutine run_analog(deck, deck_lines, listing_file, h5_file, err)
+   !! images, for the HDF5 file. solutions: the cases solved (a study's run
+   !! that keeps its outputs judges them without solving again).
+   subroutine run_analog(deck, deck_lines, listing_file, h5_file, err, solutions)
       type(deck_t), intent(in) :: deck
       character(len=80), intent(in) :: deck_lines(:)
       character(len=*), intent(in) :: listing_file, h5_file
       type(error_t), intent(inout) :: err
+      type(analog_solution_t), allocatable, intent(out), optional :: solutions(:)
       type(analog_case_t), allocatable :: cases(:)
       type(analog_solution_t), allocatable :: sols(:)
       type(listing_t) :: lst
@@ -51,6 +53,7 @@ contains
       do k = 1, size(cases)
          sols(k) = analog_solve(cases(k))
       end do
+      if (present(solutions)) solutions = sols
 
       call lst%create_text(listing_file, 'listing', err)
       if (err%failed()) return
