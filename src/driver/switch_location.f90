@@ -348,12 +348,7 @@ contains
              abs(this%g_hi(k) - this%g_prev(k)) >= min(abs(this%g_prev(k)), abs(this%g_hi(k))))) &
             this%searched(this%group_of(k)) = .true.
       end do
-      this%n_searched = 0
-      do k = 1, this%n_g
-         if (.not. this%searched(this%group_of(k))) cycle
-         this%n_searched = this%n_searched + 1
-         this%idx(this%n_searched) = k
-      end do
+      call index_searched(this)
       if (is_trial) then
          if (this%n_run >= max_run) return
          ! the trial, cut at the switch, counted as a step taken again
@@ -706,12 +701,7 @@ contains
          if (abs(this%g_hi(k)) <= 2.0_wp*gap_fraction*abs(this%g_prev(k) - this%g_hi(k))) &
             this%searched(this%group_of(k)) = .true.
       end do
-      this%n_searched = 0
-      do k = 1, this%n_g
-         if (.not. this%searched(this%group_of(k))) cycle
-         this%n_searched = this%n_searched + 1
-         this%idx(this%n_searched) = k
-      end do
+      call index_searched(this)
       if (this%n_searched == 0) return
       associate (ix => this%idx(:this%n_searched))
          call stepper%dense(t_b, this%y_work)
@@ -776,12 +766,7 @@ contains
             end if
          end do
          if (near) then
-            this%n_searched = 0
-            do j = 1, this%n_g
-               if (.not. this%searched(this%group_of(j))) cycle
-               this%n_searched = this%n_searched + 1
-               this%idx(this%n_searched) = j
-            end do
+            call index_searched(this)
             call stepper%dense(t_w, this%y_lo)
             call search_values(this, sys, t_w, this%y_lo, this%g_dt, stepper%stats)
             if (any_change(this%g_try, this%g_dt, this%live, this%idx(:this%n_searched), .true.)) then
@@ -1221,6 +1206,18 @@ contains
       call switch_values(sys, t, y, g, stats, this%rates, this%counts, this%searched)
       stats%switch_groups_skipped = stats%switch_groups_skipped + count(.not. this%searched)
    end subroutine search_values
+
+   !> idx(1:n_searched): the functions of the groups searched.
+   pure subroutine index_searched(this)
+      type(switch_locator_t), intent(inout) :: this
+      integer :: k
+      this%n_searched = 0
+      do k = 1, this%n_g
+         if (.not. this%searched(this%group_of(k))) cycle
+         this%n_searched = this%n_searched + 1
+         this%idx(this%n_searched) = k
+      end do
+   end subroutine index_searched
 
    !> The group of each switching function of the scene, in switch_values'
    !! order: each effect's functions one group, each occupant's sliding
