@@ -4,7 +4,7 @@
 !! value, limit, time, pass or fail (issue 18; docs/injury.md). The report
 !! (1974) predates both.
 !!
-!! The channels (channel_record, 10 kHz) are filled at the run's accepted
+!! The channels (channel_record, 10 kHz; the head's 20 kHz) are filled at the run's accepted
 !! steps; at its end each is filtered at its class and the criteria are
 !! taken from the filtered samples:
 !!

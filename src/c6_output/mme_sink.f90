@@ -3,7 +3,8 @@
 !! crash engineers use read a simulated run beside a test: DIR/<name>.mme,
 !! DIR/CHANNEL/<name>.chn and a channel file a channel, <name> the folder's
 !! own name. The channels are those the FMVSS 208 table samples (fmvss_table,
-!! channel_record: 10 kHz from the run's accepted steps), unfiltered (the
+!! channel_record: 10 kHz, the head's 20 kHz, from the run's accepted
+!! steps), unfiltered (the
 !! code's filter class 0, "Channel frequency class :NOVALUE"), each with
 !! the SAE J211-1 class to filter it at in its comment: the vehicle's x and
 !! z accelerations (ISO's axes: z down), and of each occupant the head's
@@ -31,6 +32,12 @@ module mme_sink
    private
 
    public :: mme_sink_t, mme_sink_open, mme_check_dir
+
+   !> The class SAE J211-1 (its Appendix E, as Euro NCAP's TB 021 and UN R94
+   !! 5.2.2 read it) gives the upper neck's forces: CFC 1000 (the moment's
+   !! is CFC 600). The FMVSS 208 table filters both at CFC 600, as FMVSS 208
+   !! computes Nij (fmvss_table, docs/injury.md).
+   real(wp), parameter :: cfc_neck_force_j211 = 1000.0_wp
 
    !> Where a channel's samples come from: a record of the occupant's
    !! channels (fmvss_channels_t) or the vehicle's motion.
@@ -138,7 +145,10 @@ contains
       end associate
       this%vm = sys%vm
       ! ISO/TS 13499 and SAE J211: x forward, z down; the program's y is up
-      ch = [channel('10VEHCCG0000ACX0', 'vehicle acceleration x', 'g', 'AC', 'X', 'VEHC', 'local', src_vehicle, 1, &
+      ! (allocated first: gfortran's -Wuninitialized takes the assignment to
+      ! an unallocated array for a read of its descriptor)
+      allocate (ch(0))
+      ch = [ch, channel('10VEHCCG0000ACX0', 'vehicle acceleration x', 'g', 'AC', 'X', 'VEHC', 'local', src_vehicle, 1, &
                     1, 1.0_wp, cfc_vehicle), &
             channel('10VEHCCG0000ACZ0', 'vehicle acceleration z', 'g', 'AC', 'Z', 'VEHC', 'local', src_vehicle, 1, &
                     2, -1.0_wp, cfc_vehicle)]
@@ -164,7 +174,7 @@ contains
          ! femur's axial force (compression -) written for both femurs (the
          ! thigh segment is both), the chest's deflection (compression -)
          ch = [ch, channel('1'//p//'NECKUP0000FOZ0', what//'neck axial force', 'N', 'FO', 'Z', 'NECK', 'local', &
-                           src_neck, o, 1, 1.0_wp, cfc_neck), &
+                           src_neck, o, 1, 1.0_wp, cfc_neck_force_j211), &
                channel('1'//p//'NECKUP0000MOY0', what//'neck flexion/extension moment', 'Nm', 'MO', 'Y', 'NECK', &
                        'local', src_neck, o, 2, 1.0_wp, cfc_neck), &
                channel('1'//p//'FEMRLE0000FOZ0', what//'femur left axial force', 'N', 'FO', 'Z', 'FEMR', 'local', &
@@ -293,14 +303,14 @@ contains
       character(len=3) :: digits
       if (err%failed() .or. .not. allocated(this%ch)) return
       if (.not. allocated(summary%occ)) return
-      call write_file(0, [character(len=80) :: line('Data format', 'ISO-MME'), line('Version', '1.6'), &
+      call write_file(0, [character(len=200) :: line('Data format', 'ISO-MME'), line('Version', '1.6'), &
          line('Test number', this%name), line('Name of the test', this%title), &
          line('Test type', 'simulation (hsri2d, the HSRI phase two 2-D model)'), &
          line('Laboratory name', 'hsri2d'), line('Number of test objects', '1'), &
-         line('Comments', 'Time zero: the run''s t = 0; channels at 10 kHz, unfiltered (filter class 0)')])
+         line('Comments', 'Time zero: the run''s t = 0; channels at 10 or 20 kHz, unfiltered (class 0)')])
       if (err%failed()) return
       block
-         character(len=80) :: index_lines(size(this%ch) + 2)
+         character(len=200) :: index_lines(size(this%ch) + 2)
          index_lines(1) = line('Instrumentation standard', 'NOVALUE')
          index_lines(2) = line('Number of channels', itoa(size(this%ch)))
          do c = 1, size(this%ch)
@@ -317,13 +327,13 @@ contains
       !> "name :value", the name padded to 28 columns (as ISO-MME writers do).
       function line(key, value) result(text)
          character(len=*), intent(in) :: key, value
-         character(len=80) :: text
+         character(len=200) :: text
          text = key
          text(29:) = ':'//value
       end function line
 
       !> Channel c from its occupant's records (or the vehicle's motion on
-      !! the first occupant's grid).
+      !! the first occupant's 10 kHz grid).
       subroutine write_channel(c)
          integer, intent(in) :: c
          character(len=24) :: interval, count, first
@@ -336,7 +346,7 @@ contains
             write (first, '(es16.9)') t0
             write (count, '(i0)') size(v)
             write (class, '(i0)') nint(ch%cfc)
-            call write_file(c, [character(len=80) :: line('Channel code', ch%code), &
+            call write_file(c, [character(len=200) :: line('Channel code', ch%code), &
                line('Laboratory channel code', ch%code), line('Name of the channel', ch%name), &
                line('Location', ch%location), line('Direction', ch%direction), line('Data source', 'calculation'), &
                line('Channel frequency class', 'NOVALUE'), &
@@ -382,7 +392,7 @@ contains
    end subroutine sink_finish
 
    !> Channel ch's samples v (its unit and sign) from the occupant's
-   !! records rec (or the vehicle's motion vm on the head's grid), and the
+   !! records rec (or the vehicle's motion vm on the chest's 10 kHz grid), and the
    !! grid they are on: t0 + k h.
    subroutine channel_samples(rec, ch, vm, t0, h, v)
       type(fmvss_channels_t), intent(in) :: rec
@@ -396,8 +406,8 @@ contains
       h = rec%head%h
       select case (ch%source)
       case (src_vehicle)
-         call grid(rec%head)
-         a = vehicle_channel(vm, rec%head)
+         call grid(rec%chest)
+         a = vehicle_channel(vm, rec%chest)
          v = ch%scale*a(ch%component, :)
       case (src_head)
          call grid(rec%head)

@@ -29,6 +29,7 @@ module step_bookkeeping
    use output_producers, only: frame_energy, energy_balance_t
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t, raise, summary_add_event
    use fmvss_table, only: fmvss_belts_reserve, fmvss_belts_sample
+   use channel_record, only: channel_grid_head
    use accuracy_estimate, only: accuracy_t
    use end_tests, only: end_state_t, end_none, end_failure, end_energy, end_injury, end_contact, end_rest, &
       end_test_update, body_at_rest
@@ -129,7 +130,8 @@ contains
          if (present(fmvss)) then
             summary%occ(o)%fmvss_limits = fmvss
             summary%occ(o)%channels%kept = .true.
-            call summary%occ(o)%channels%head%reserve(2, room)
+            ! (the head's at 20 kHz, CFC 1000's corridor: channel_record)
+            call summary%occ(o)%channels%head%reserve(2, room, h=channel_grid_head)
             call summary%occ(o)%channels%chest%reserve(2, room)
             ! the neck's and femur's loads from the joint reactions
             summary%occ(o)%channels%neck_kept = .true.

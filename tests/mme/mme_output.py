@@ -8,7 +8,8 @@ Runs DECK (a belted deck) with a vertical part added to its pulse, with --mme
 and --h5, then checks the data set against the HDF5 file's /channels (the
 10 kHz records the FMVSS 208 table filters): the index's channels and codes,
 each channel's header (code, unit, dimension, unfiltered with its SAE J211-1
-class stated, sampling interval and time of first sample = /channels/time's,
+class stated, sampling interval and time of first sample = /channels/time's
+(the head's /channels/head_time's, 20 kHz),
 number of samples = its sample lines), its values in ISO's units and signs
 (the vehicle's and the head's and chest's x and z accelerations in g, z down,
 and resultants; the neck's axial force and moment; both femurs' axial
@@ -81,6 +82,7 @@ def main():
         ch = {k: f["channels/" + k][:] for k in f["channels"]}
         classes = {k: f["channels/" + k].attrs.get("filter_class") for k in f["channels"]}
     t = ch["time"].reshape(-1)
+    th = ch["head_time"].reshape(-1)          # the head's 20 kHz grid
     head, chest, neck = ch["head_acceleration"], ch["chest_acceleration"], ch["neck_loads"]
     belts, veh = ch["belt_forces"], ch["vehicle_acceleration"]
     # code: (unit, dimension, the SAE J211-1 class, the values from /channels
@@ -95,7 +97,7 @@ def main():
         "11CHST000000ACX0": ("g", "AC", 180, chest[:, 0]),
         "11CHST000000ACZ0": ("g", "AC", 180, -chest[:, 1]),
         "11CHST000000ACR0": ("g", "AC", 180, np.hypot(chest[:, 0], chest[:, 1])),
-        "11NECKUP0000FOZ0": ("N", "FO", 600, neck[:, 0]),
+        "11NECKUP0000FOZ0": ("N", "FO", 1000, neck[:, 0]),   # J211's class of neck forces
         "11NECKUP0000MOY0": ("Nm", "MO", 600, neck[:, 1]),
         "11FEMRLE0000FOZ0": ("N", "FO", 600, -ch["femur_force"].reshape(-1)),
         "11FEMRRI0000FOZ0": ("N", "FO", 600, -ch["femur_force"].reshape(-1)),
@@ -114,20 +116,24 @@ def main():
     n = len(t)
     if abs(dt - 1e-4) > 1e-15 or t[0] != 0.0:
         fail("/channels/time: first %g, interval %g; expected 0 and 0.1 ms" % (t[0], dt))
+    if abs(th[1] - th[0] - 5e-5) > 1e-15 or th[0] != 0.0:
+        fail("/channels/head_time: first %g, interval %g; expected 0 and 0.05 ms" % (th[0], th[1] - th[0]))
     for number, code in sorted(names.items()):
         header, samples = header_and_samples(os.path.join(dset, "CHANNEL", "run1." + number))
         unit, dimension, cfc, values = expected[code]
+        grid = th if code[2:6] == "HEAD" else t
         if header["Channel code"] != code or header["Unit"] != unit or header["Dimension"] != dimension:
             fail("channel %s: header %s" % (number, header))
         if code[-1] != "0" or header["Channel frequency class"] != "NOVALUE" or \
                 header["Comments"] != "unfiltered; filter at CFC %d (SAE J211-1)" % cfc:
             fail("channel %s: not stated unfiltered with its class %d: %s" % (number, cfc, header))
-        if abs(float(header["Sampling interval"]) - dt) > 1e-15 or float(header["Time of first sample"]) != t[0]:
-            fail("channel %s: interval %s, first %s; /channels/time's %g, %g" %
-                 (number, header["Sampling interval"], header["Time of first sample"], dt, t[0]))
-        if int(header["Number of samples"]) != len(samples) or len(samples) != n:
-            fail("channel %s: %s samples in its header, %d in the file, %d on /channels/time" %
-                 (number, header["Number of samples"], len(samples), n))
+        step = grid[1] - grid[0]
+        if abs(float(header["Sampling interval"]) - step) > 1e-15 or float(header["Time of first sample"]) != grid[0]:
+            fail("channel %s: interval %s, first %s; its grid's %g, %g" %
+                 (number, header["Sampling interval"], header["Time of first sample"], step, grid[0]))
+        if int(header["Number of samples"]) != len(samples) or len(samples) != len(grid):
+            fail("channel %s: %s samples in its header, %d in the file, %d on its grid" %
+                 (number, header["Number of samples"], len(samples), len(grid)))
         scale = max(1.0, float(np.max(np.abs(values))))
         worst = float(np.max(np.abs(samples - values))) / scale
         if worst > 1e-8:
@@ -138,10 +144,11 @@ def main():
     at = np.rint(t_print / dt).astype(int)
     at = at[at < n]
     m = len(at)
+    ah = np.rint(t_print[:m] / (th[1] - th[0])).astype(int)
     for label, sampled, printed in (
             ("vehicle x", veh[at, 0], vehicle[:m, 6] / G_STD),
             ("vehicle y", veh[at, 1], vehicle[:m, 7] / G_STD),
-            ("head", np.hypot(head[at, 0], head[at, 1]), acc[:m, 0] / G_STD),
+            ("head", np.hypot(head[ah, 0], head[ah, 1]), acc[:m, 0] / G_STD),
             ("chest", np.hypot(chest[at, 0], chest[at, 1]), acc[:m, 1] / G_STD),
             ("lap belt", belts[at, 0], lap[:m] * LB_TO_N),
             ("torso belt upper", belts[at, 1], torso[:m, 0] * LB_TO_N),
