@@ -4,7 +4,7 @@
 !! value, limit, time, pass or fail (issue 18; docs/injury.md). The report
 !! (1974) predates both.
 !!
-!! The channels (channel_record, 10 kHz) are filled at the run's accepted
+!! The channels (channel_record, 10 kHz; the head's 20 kHz) are filled at the run's accepted
 !! steps; at its end each is filtered at its class and the criteria are
 !! taken from the filtered samples:
 !!
@@ -22,21 +22,31 @@
 !!   criterion VC = max of 1.3 V(t) D(t)/0.229 m (deflection rate times
 !!   the deflection over the 50th male's chest depth; no FMVSS 208 limit).
 !!
+!! - belts (where an HDF5 file or an ISO-MME data set is written): each
+!!   belt section's tension (N), CFC 60, for those outputs only (no
+!!   criterion reads it).
+!!
 !! A channel the model does not give is "not available" (NaN in HDF5,
 !! "n/a" in the listing), never a made-up number. The components are the
 !! vectors' in the ground frame of z; the resultant is taken after
 !! filtering each component, as J211-1 does for a triaxial accelerometer.
 module fmvss_table
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-   use kinds, only: wp
+   use kinds, only: wp, g_std, pound_force_n
    use model, only: fmvss_limits_t
    use channel_record, only: channel_record_t
    use channel_filter, only: cfc_filter
+   use body_state, only: body_state_t
+   use occupant, only: occupant_t
+   use output_series, only: output_series_t
+   use vehicle_motion, only: vehicle_motion_t, vehicle_state_at
    use acceleration_criteria, only: acceleration_criteria_t, hic_result_t, criteria_new
    implicit none
    private
 
-   public :: fmvss_channels_t, fmvss_row_t, fmvss_rows, fmvss_n_rows, nij_of
+   public :: fmvss_channels_t, fmvss_row_t, fmvss_rows, fmvss_n_rows, nij_of, belt_channel_t
+   public :: fmvss_belts_reserve, fmvss_belts_sample, vehicle_channel
+   public :: cfc_head, cfc_chest, cfc_neck, cfc_femur, cfc_deflection, cfc_belt, cfc_vehicle
    public :: r_hic15, r_hic36, r_head_gsi, r_clip3ms, r_chest_gsi, r_chest_deflection, r_vc, r_nij, &
       r_neck_tension, r_neck_compression, r_femur
 
@@ -48,6 +58,12 @@ module fmvss_table
    !> The channel classes of SAE J211-1 (Hz) FMVSS 208 and Part 572 name.
    real(wp), parameter :: cfc_head = 1000.0_wp, cfc_chest = 180.0_wp, cfc_neck = 600.0_wp, cfc_femur = 600.0_wp, &
       cfc_deflection = 180.0_wp
+   !> SAE J211-1 Appendix E's classes of a seat belt's load and of a
+   !! vehicle's structural acceleration (integrated to its velocity and
+   !! displacement): CFC 60.
+   real(wp), parameter :: cfc_belt = 60.0_wp, cfc_vehicle = 60.0_wp
+   !> The most columns of a belt effect's force series (its sections).
+   integer, parameter :: max_belt_columns = 8
 
    !> Nij's critical intercepts, FMVSS 208 S6.6(a) (50th male, in-position):
    !! tension, compression (N), flexion, extension (N m).
@@ -55,6 +71,16 @@ module fmvss_table
       myc_flexion = 310.0_wp, myc_extension = 135.0_wp
    !> VC's chest depth (m) and scale factor (Lau and Viano; the 50th male).
    real(wp), parameter :: vc_depth = 0.229_wp, vc_scale = 1.3_wp
+
+   !> One belt section's tension (N), sampled at the accepted steps.
+   type :: belt_channel_t
+      character(len=24) :: effect_name = ' '         !< the belt effect's (lap_belt, torso_belt)
+      character(len=16) :: section = ' '             !< the section's label (lap, lap_a, torso2, ...)
+      integer :: effect = 0                          !< its index in the occupant's effects
+      integer :: item = 0                            !< its effect's 'force' series
+      integer :: column = 0, n_columns = 0           !< the section's column of it, and its width
+      type(channel_record_t) :: rec
+   end type belt_channel_t
 
    !> An occupant's channels, sampled at its accepted steps.
    type :: fmvss_channels_t
@@ -65,6 +91,10 @@ module fmvss_table
       type(channel_record_t) :: neck                 !< axial force (N, + tension), moment (N m, + flexion)
       type(channel_record_t) :: femur                !< axial force (N, + compression)
       type(channel_record_t) :: deflection           !< chest deflection (mm)
+      !> each belt section's tension, kept where an output takes it (HDF5,
+      !! ISO-MME: fmvss_belts_reserve)
+      logical :: belts_kept = .false.
+      type(belt_channel_t), allocatable :: belts(:)
    end type fmvss_channels_t
 
    !> One row of the table.
@@ -238,6 +268,83 @@ contains
       myc = merge(myc_flexion, myc_extension, my >= 0.0_wp)
       nij = abs(fz)/fzc + abs(my)/myc
    end function nij_of
+
+   !> The channels of occupant occ's belt sections (the effects whose
+   !! series include a 'force' of their sections' tensions: lap_belt,
+   !! torso_belt), with room for a run of duration (s).
+   subroutine fmvss_belts_reserve(ch, occ, duration)
+      type(fmvss_channels_t), intent(inout) :: ch
+      type(occupant_t), intent(in) :: occ
+      real(wp), intent(in) :: duration
+      type(output_series_t), allocatable :: series(:)
+      type(belt_channel_t), allocatable :: belts(:)
+      integer :: k, j, c
+      allocate (belts(0))
+      do k = 1, size(occ%effects)
+         associate (e => occ%effects(k)%e)
+            if (e%name /= 'lap_belt' .and. e%name /= 'torso_belt') cycle
+            series = e%outputs()
+            do j = 1, size(series)
+               if (series(j)%name /= 'force' .or. size(series(j)%col) > max_belt_columns) cycle
+               do c = 1, size(series(j)%col)
+                  belts = [belts, belt_channel_t(effect_name=e%name, section=series(j)%col(c)%name, effect=k, &
+                                                 item=j, column=c, n_columns=size(series(j)%col))]
+               end do
+            end do
+         end associate
+      end do
+      do k = 1, size(belts)
+         call belts(k)%rec%reserve(1, duration)
+      end do
+      call move_alloc(belts, ch%belts)
+      ch%belts_kept = .true.
+   end subroutine fmvss_belts_reserve
+
+   !> The belt sections' tensions (N) at the accepted point t, the state st
+   !! (of y), with the memory the step was taken with (as a print time's
+   !! frame shows them); a second call at one time (a jump) keeps the jump.
+   !! Allocates nothing.
+   pure subroutine fmvss_belts_sample(ch, occ, st, y, t)
+      type(fmvss_channels_t), intent(inout) :: ch
+      type(occupant_t), intent(in) :: occ
+      type(body_state_t), intent(in) :: st
+      real(wp), intent(in) :: y(:), t
+      real(wp) :: v(max_belt_columns)
+      integer :: k, xo, ao, last
+      last = 0
+      do k = 1, size(ch%belts)
+         associate (b => ch%belts(k))
+            ! (one evaluation of an effect serves each of its sections)
+            if (b%effect /= last) then
+               xo = occ%extra_offset(b%effect)
+               ao = occ%aux_offset(b%effect)
+               associate (e => occ%effects(b%effect)%e)
+                  call e%output_values(b%item, st, y(xo + 1:xo + 2*e%n_extra), y(ao + 1:ao + e%n_aux), &
+                                       v(1:b%n_columns))
+               end associate
+               last = b%effect
+            end if
+            call b%rec%add(t, [pound_force_n*v(b%column)])
+         end associate
+      end do
+   end subroutine fmvss_belts_sample
+
+   !> The vehicle's x and y accelerations (g; the program's axes: x
+   !! forward, y up) at the grid points of rec, from its motion vm, exact
+   !! (its tables are linear in time): (2, rec%n).
+   pure function vehicle_channel(vm, rec) result(a)
+      type(vehicle_motion_t), intent(in) :: vm
+      type(channel_record_t), intent(in) :: rec
+      real(wp) :: a(2, rec%n)
+      real(wp) :: t(rec%n)
+      integer :: k
+      t = rec%times()
+      do k = 1, rec%n
+         associate (vs => vehicle_state_at(vm, t(k)))
+            a(:, k) = vs%acc(1:2)/g_std
+         end associate
+      end do
+   end function vehicle_channel
 
    !> The record's samples filtered at class cfc: f (n_comp, n), at times t.
    pure subroutine filtered(rec, cfc, f, t)

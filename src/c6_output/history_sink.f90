@@ -21,6 +21,8 @@ module history_sink
    use acceleration_criteria, only: hic_result_t
    use history_h5, only: history_file_t, event_text_len
    use scene_geometry, only: scene_table_t, occupant_scene
+   use vehicle_motion, only: vehicle_motion_t
+   use fmvss_table, only: vehicle_channel, cfc_belt, cfc_vehicle, belt_channel_t
    implicit none
    private
 
@@ -35,6 +37,8 @@ module history_sink
       integer :: id_time = 0
       integer, allocatable :: id(:)
       integer :: n_records = 0
+      !> the vehicle's motion, for its acceleration on the channels' grid
+      type(vehicle_motion_t) :: vm
    contains
       procedure :: begin => sink_begin
       procedure :: record => sink_record
@@ -67,6 +71,7 @@ contains
       associate (u1 => first%t)
       end associate
       this%reg = reg
+      this%vm = sys%vm
       allocate (this%id(size(reg%series)))
       this%id = 0
       if (err%failed()) return
@@ -256,7 +261,8 @@ contains
          if (size(cn) == 0) return
          call this%file%add_series('summary/criteria', cn, cu, 'FMVSS 208 (50th male): each criterion from its ' &
                                    //'channel filtered as SAE J211-1 specifies (attribute filter_class), sampled ' &
-                                   //'at 10 kHz, in SI as FMVSS 208 states its limits; rows: value, limit, time, ' &
+                                   //'at 10 kHz (the head 20 kHz), in SI as FMVSS 208 states its limits; rows: ' &
+                                   //'value, limit, time, ' &
                                    //'end of the window (HIC), pass (1) or fail (0), unfiltered value; NaN: none', &
                                    id, err)
          if (.not. err%failed()) call this%file%add_attribute(id, 'filter_class', cf, err)
@@ -268,19 +274,26 @@ contains
       end subroutine put_fmvss
 
       !> /channels: each occupant's channels as the FMVSS 208 table read
-      !! them (fmvss_table), unfiltered, on their 10 kHz grid (/channels/time),
-      !! each with the SAE J211 class the table filters it at (attribute
-      !! filter_class): for a reader's own filtering, plots, ISO-MME.
+      !! them (fmvss_table), unfiltered, on their 10 kHz grid (/channels/time;
+      !! the head's on its 20 kHz grid, /channels/head_time), each with the
+      !! SAE J211 class the table filters it at (attribute filter_class): for
+      !! a reader's own filtering, plots, ISO-MME.
       subroutine put_channels()
-         logical :: timed
+         logical :: timed, head_timed
          timed = .false.
+         head_timed = .false.
          do o = 1, size(summary%occ)
             prefix = ''
             if (size(summary%occ) > 1) write (prefix, '(a,i0,a)') 'occ', o, '_'
             associate (ch => summary%occ(o)%channels)
-               if (.not. timed .and. ch%head%n > 0) then
-                  call channel('time', ch%head, [character(len=8) :: 't'], [character(len=8) :: 's'], ' ', .true.)
+               if (.not. timed .and. ch%chest%n > 0) then
+                  call channel('time', ch%chest, [character(len=8) :: 't'], [character(len=8) :: 's'], ' ', .true.)
                   timed = .true.
+               end if
+               if (.not. head_timed .and. ch%head%n > 0) then
+                  call channel('head_time', ch%head, [character(len=8) :: 't'], [character(len=8) :: 's'], ' ', &
+                               .true.)
+                  head_timed = .true.
                end if
                call channel(trim(prefix)//'head_acceleration', ch%head, [character(len=8) :: 'x', 'y'], &
                             [character(len=8) :: 'g', 'g'], 'CFC 1000', .false.)
@@ -294,11 +307,53 @@ contains
                if (ch%deflection_kept) call channel(trim(prefix)//'chest_deflection', ch%deflection, &
                                                     [character(len=10) :: 'deflection'], [character(len=8) :: 'mm'], &
                                                     'CFC 180', .false.)
+               if (ch%belts_kept) call belt_channels(trim(prefix)//'belt_forces', ch%belts)
+               ! the vehicle's acceleration, once, on the first occupant's 10 kHz grid
+               if (o == 1 .and. ch%chest%n > 0) &
+                  call matrix_channel('vehicle_acceleration', [character(len=8) :: 'x', 'y'], &
+                                      [character(len=8) :: 'g', 'g'], cfc_vehicle, vehicle_channel(this%vm, ch%chest), &
+                                      'the vehicle''s accelerations x (forward) and y (up) at /channels/time, exact ' &
+                                      //'(its tables are linear in time)')
             end associate
          end do
       end subroutine put_channels
 
-      !> One channel of put_channels (times: the grid's /channels/time).
+      !> The belt sections' tensions (N), one column each (its label), at
+      !! /channels/time.
+      subroutine belt_channels(name, belts)
+         character(len=*), intent(in) :: name
+         type(belt_channel_t), intent(in) :: belts(:)
+         real(wp), allocatable :: v(:, :)
+         integer :: k, n
+         if (size(belts) == 0) return
+         n = minval(belts%rec%n)
+         if (n == 0) return
+         allocate (v(size(belts), n))
+         do k = 1, size(belts)
+            v(k, :) = belts(k)%rec%values(1, 0:n - 1)
+         end do
+         call matrix_channel(name, [(belts(k)%section, k=1, size(belts))], [character(len=8) :: ('N', k=1, &
+                             size(belts))], cfc_belt, v, 'each belt section''s tension (N), unfiltered samples on ' &
+                             //'/channels/time (filter them at filter_class)')
+      end subroutine belt_channels
+
+      !> A channel of columns cols given as a matrix v (column, sample).
+      subroutine matrix_channel(name, cols, col_units, cfc, v, description)
+         character(len=*), intent(in) :: name, cols(:), col_units(:), description
+         real(wp), intent(in) :: cfc, v(:, :)
+         integer :: id, k
+         character(len=16) :: class
+         if (err%failed() .or. size(v, 2) == 0) return
+         write (class, '(a,i0)') 'CFC ', nint(cfc)
+         call this%file%add_series('channels/'//name, cols, col_units, description, id, err, flush=.false.)
+         if (.not. err%failed()) call this%file%add_attribute(id, 'filter_class', [class], err, per_column=.false.)
+         do k = 1, size(v, 2)
+            if (err%failed()) return
+            call this%file%append(id, v(:, k), err)
+         end do
+      end subroutine matrix_channel
+
+      !> One channel of put_channels (times: a grid, /channels/name).
       subroutine channel(name, rec, cols, col_units, cfc, times)
             character(len=*), intent(in) :: name, cols(:), col_units(:), cfc
             type(channel_record_t), intent(in) :: rec
@@ -306,11 +361,14 @@ contains
             integer :: id, k
             if (err%failed() .or. rec%n == 0) return
             if (times) then
-               call this%file%add_series('channels/time', cols, col_units, 'the channels'' grid: t0 + k h, ' &
-                                         //'10 kHz (channel_record)', id, err, flush=.false.)
+               call this%file%add_series('channels/'//name, cols, col_units, 'a grid of the channels: t0 + k h, ' &
+                                         //merge('20 kHz, the head''s', '10 kHz, the others', name == 'head_time') &
+                                         //' (channel_record)', id, err, flush=.false.)
             else
                call this%file%add_series('channels/'//name, cols, col_units, 'unfiltered samples on ' &
-                                         //'/channels/time (the FMVSS 208 table filters them at filter_class)', &
+                                         //trim(merge('/channels/head_time', '/channels/time     ', &
+                                                    index(name, 'head_acceleration') > 0)) &
+                                         //' (the FMVSS 208 table filters them at filter_class)', &
                                          id, err, flush=.false.)
                if (.not. err%failed()) call this%file%add_attribute(id, 'filter_class', [cfc], err, &
                                                                     per_column=.false.)

@@ -60,12 +60,17 @@ contains
                          //'each criterion from its channel filtered as SAE J211-1 specifies, in SI, its limit ' &
                          //'(*FMVSS208), when, pass (1) or fail (0), the unfiltered value beside it; NaN: none ' &
                          //'(docs/injury.md) |')
-      call append_string(lines, '| `/channels/time`, `/channels/head_acceleration`, `/channels/chest_acceleration`, ' &
-                         //'`/channels/neck_loads`, `/channels/femur_force`, `/channels/chest_deflection` | (k, c) | ' &
-                         //'t (s); x, y (g); x, y (g); axial (N), moment (N m); axial (N); deflection (mm) | summary | ' &
-                         //'the channels the FMVSS 208 table reads, unfiltered, on their 10 kHz grid, each with the ' &
+      call append_string(lines, '| `/channels/time`, `/channels/head_time`, `/channels/head_acceleration`, ' &
+                         //'`/channels/chest_acceleration`, ' &
+                         //'`/channels/neck_loads`, `/channels/femur_force`, `/channels/chest_deflection`, ' &
+                         //'`/channels/belt_forces`, `/channels/vehicle_acceleration` | (k, c) | ' &
+                         //'t (s); t (s); x, y (g); x, y (g); axial (N), moment (N m); axial (N); deflection (mm); ' &
+                         //'a column a belt section (N); x, y (g) | summary | ' &
+                         //'the channels the FMVSS 208 table reads, unfiltered, on their 10 kHz grid (the head''s ' &
+                         //'on its 20 kHz grid, /channels/head_time), each with the ' &
                          //'SAE J211 class it is filtered at (attribute filter_class); the chest''s deflection where ' &
-                         //'an effect deflects it |')
+                         //'an effect deflects it; the belts'' tensions (CFC 60) and the vehicle''s acceleration ' &
+                         //'(CFC 60, exact from its tables) for the ISO-MME channels (docs/pulse.md) |')
       call append_string(lines, '| `/events/time`, `/events/kind`, `/events/index`, `/events/text` | (k) | - | summary | ' &
                          //'the events as they happened, by kind (a code never renumbered; a new kind takes the next): ' &
                          //event_kinds(.false.)//'; and notes, not injuries ' &

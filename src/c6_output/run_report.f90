@@ -589,7 +589,8 @@ contains
       type(fmvss_row_t), intent(in) :: rows(:)
       character(len=132) :: line
       integer :: i
-      call lst%heading('FMVSS 208 (50TH MALE): FILTERED CHANNELS (SAE J211-1, 10 KHZ), SI UNITS', size(rows) + 2)
+      call lst%heading('FMVSS 208 (50TH MALE): FILTERED CHANNELS (SAE J211-1; HEAD 20 KHZ, OTHERS 10 KHZ), ' &
+                       //'SI UNITS', size(rows) + 2)
       call lst%put('  CRITERION                    CHANNEL        VALUE  UNIT        LIMIT   AT t (s)   TO t (s)' &
                    //'  RESULT   UNFILTERED')
       do i = 1, size(rows)

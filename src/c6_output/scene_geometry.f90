@@ -193,21 +193,34 @@ contains
    end function belts
 
    !> The seat (C.4.d): its form, the front edge at x = z_o and the
-   !! undeflected cushion line at gamma_o through the initial hip (A-S2).
+   !! undeflected cushion line at gamma_o through the initial hip (A-S2);
+   !! the rigid beam's extent a and its CG's distance a' behind the front
+   !! edge (figure 15), the non-rigid beams' l and k (figure 13), so that a
+   !! picture draws the seat as its series move it (tools/plot).
    function seat(occ) result(t)
       type(occupant_t), intent(in) :: occ
       type(scene_table_t) :: t
       integer :: n, form
-      real(wp) :: z0, gamma0
+      real(wp) :: z0, gamma0, a, a_prime, ell, k, x_line, y_line
       t%name = 'scene/seat'
       t%description = 'the seat (C.4.d, figure 11): form (1 springs, 2 rigid beam, 3 non-rigid beams), the ' &
                       //'front edge at x = z_o, the undeflected cushion line through the initial hip (the ' &
-                      //'origin) at gamma_o (a beam seat''s at t = 0; its motion is not drawn); no row without a seat'
-      call set_columns(t, [character(len=16) :: 'form', 'z_o', 'gamma_o'], &
-                       [character(len=16) :: '-', 'in', 'rad'])
+                      //'origin) at gamma_o (a beam seat''s at t = 0); the rigid beam''s length a behind the ' &
+                      //'front edge and its CG''s a'' (figure 15), the non-rigid beams'' l and k (figure 13), 0 ' &
+                      //'for another form; x_line, y_line: a point of the undeflected cushion line (the ' &
+                      //'origin but for the non-rigid beams, x''''_sc, y''''_sc: NB-2); its motion: ' &
+                      //'effects/seat/beam (y_g, gamma) and effects/seat/loads (delta_A, w, z); no row without a seat'
+      call set_columns(t, [character(len=16) :: 'form', 'z_o', 'gamma_o', 'a', 'a_prime', 'l', 'k', 'x_line', &
+                            'y_line'], [character(len=16) :: '-', 'in', 'rad', 'in', 'in', 'in', '-', 'in', 'in'])
       form = seat_none
       z0 = 0.0_wp
       gamma0 = 0.0_wp
+      a = 0.0_wp
+      a_prime = 0.0_wp
+      ell = 0.0_wp
+      k = 0.0_wp
+      x_line = 0.0_wp
+      y_line = 0.0_wp
       do n = 1, size(occ%effects)
          select type (e => occ%effects(n)%e)
          type is (seat_springs_t)
@@ -218,16 +231,22 @@ contains
             form = e%p%form
             z0 = e%p%z0
             gamma0 = e%p%gamma0
+            a = e%p%a
+            a_prime = e%p%a_prime
          type is (seat_beams_t)
             form = e%p%form
             z0 = e%p%z0
             gamma0 = e%p%gamma0
+            ell = e%p%ell
+            k = e%p%k_ratio
+            x_line = e%p%x_sc
+            y_line = e%p%y_sc
          end select
       end do
       if (form == seat_none) then
-         allocate (t%values(3, 0), t%labels(0))
+         allocate (t%values(9, 0), t%labels(0))
       else
-         t%values = reshape([real(form, wp), z0, gamma0], [3, 1])
+         t%values = reshape([real(form, wp), z0, gamma0, a, a_prime, ell, k, x_line, y_line], [9, 1])
          t%labels = [character(len=32) :: seat_form_name(form)]
       end if
    end function seat

@@ -77,10 +77,13 @@ contains
 
    !> x filtered at class cfc (Hz), sampled every dt (s), into y (the same
    !! size): forward, then backward, over the record extended at both ends
-   !! by its point reflection (cfc_padding; the module's header).
-   pure subroutine cfc_filter(x, cfc, dt, y)
+   !! by its point reflection (cfc_padding; the module's header). padding
+   !! (s): the extension exactly that long instead (test_channel_filter's
+   !! J211 minimum of 10 ms, where the settled start shows).
+   pure subroutine cfc_filter(x, cfc, dt, y, padding)
       real(wp), intent(in) :: x(:), cfc, dt
       real(wp), intent(out) :: y(:)
+      real(wp), intent(in), optional :: padding
       type(cfc_coefficients_t) :: k
       real(wp), allocatable :: w(:)
       real(wp) :: slope
@@ -94,6 +97,7 @@ contains
       k = cfc_coefficients(cfc, dt)
       ! J211-1's 10 ms, or the samples in which the transient falls to 1e-13
       n_pad = max(1, nint(cfc_padding/dt), ceiling(log(1.0e-13_wp)/log(sqrt(-k%b2))))
+      if (present(padding)) n_pad = max(1, nint(padding/dt))
       allocate (w(1 - n_pad:n + n_pad))
       w(1:n) = x
       slope = (x(n) - x(1))/real(n - 1, wp)

@@ -236,7 +236,7 @@ contains
       end if
       call listing_sink_start(sink%listing, deck, m, hsri2d_version)
       call sinks%add(sink)
-      call run%init(m, sinks=sinks)
+      call run%init(m, sinks=sinks, belt_channels=sink%with_h5 .or. sink%with_mme)
       call run_to_end(run, res, run_err)
       if (sink%with_h5) call sink%h5%close(io_err)
       call sink%listing%lst%flush(io_err)

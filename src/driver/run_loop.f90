@@ -73,13 +73,15 @@ contains
    !! (is_done), the sinks given a frame marked invalid. predict: switches
    !! predicted before the step that would cross them (issue 16; the
    !! default), or false: only found after it (tests compare the two).
-   subroutine run_init(this, m, system, stepper, sinks, predict)
+   subroutine run_init(this, m, system, stepper, sinks, predict, belt_channels)
       class(run_t), intent(out) :: this
       type(model_t), intent(in) :: m
       type(crash_system_t), intent(in), optional :: system
       class(stepper_t), intent(in), optional :: stepper
       type(sink_list_t), intent(in), optional :: sinks
       logical, intent(in), optional :: predict
+      !> the sinks take the belts' tensions at 10 kHz (HDF5's /channels, ISO-MME)
+      logical, intent(in), optional :: belt_channels
       type(stepper_traits_t) :: tr
       real(wp), allocatable :: total0(:)
       type(error_t) :: why
@@ -101,7 +103,8 @@ contains
       ! HDF5, a collector); a study's runs, the refinement's, read none of it
       if (this%sinks%size() > 0) then
          call this%books%init(this%sys, this%t, this%y, m%numerics, m%vehicle, this%summary, &
-                              head_excursion=m%options%head_excursion, fmvss=m%fmvss, duration=m%time%t_max)
+                              head_excursion=m%options%head_excursion, fmvss=m%fmvss, duration=m%time%t_max, &
+                              belt_channels=belt_channels)
       else
          call this%books%init(this%sys, this%t, this%y, m%numerics, m%vehicle, this%summary, &
                               head_excursion=m%options%head_excursion)

@@ -28,6 +28,8 @@ module step_bookkeeping
    use output_calc, only: head_chest_acceleration, head_chest_motion, head_interior_x
    use output_producers, only: frame_energy, energy_balance_t
    use run_summary, only: run_summary_t, occupant_summary_t, extreme_t, raise, summary_add_event
+   use fmvss_table, only: fmvss_belts_reserve, fmvss_belts_sample
+   use channel_record, only: channel_grid_head
    use accuracy_estimate, only: accuracy_t
    use end_tests, only: end_state_t, end_none, end_failure, end_energy, end_injury, end_contact, end_rest, &
       end_test_update, body_at_rest
@@ -90,7 +92,7 @@ contains
    !! summary (the energy totals the balance is measured from, the initial
    !! joint angles the ranges start from, the criteria), and the room the
    !! accepted steps need.
-   subroutine books_init(this, sys, t, y, numerics, vehicle, summary, head_excursion, fmvss, duration)
+   subroutine books_init(this, sys, t, y, numerics, vehicle, summary, head_excursion, fmvss, duration, belt_channels)
       class(step_books_t), intent(out) :: this
       type(crash_system_t), intent(in) :: sys
       real(wp), intent(in) :: t, y(:)
@@ -101,6 +103,9 @@ contains
       !> the FMVSS 208 table's limits (*FMVSS208): its channels are kept (absent: no table)
       type(fmvss_limits_t), intent(in), optional :: fmvss
       real(wp), intent(in), optional :: duration            !< the run's length (s): the channels' room
+      !> with fmvss: keep the belt sections' tensions too (an HDF5 file's or an
+      !! ISO-MME data set's channels; fmvss_belts_reserve)
+      logical, intent(in), optional :: belt_channels
       real(wp) :: room
       integer :: o, i, n_occ
       n_occ = size(sys%occupants)
@@ -125,7 +130,8 @@ contains
          if (present(fmvss)) then
             summary%occ(o)%fmvss_limits = fmvss
             summary%occ(o)%channels%kept = .true.
-            call summary%occ(o)%channels%head%reserve(2, room)
+            ! (the head's at 20 kHz, CFC 1000's corridor: channel_record)
+            call summary%occ(o)%channels%head%reserve(2, room, h=channel_grid_head)
             call summary%occ(o)%channels%chest%reserve(2, room)
             ! the neck's and femur's loads from the joint reactions
             summary%occ(o)%channels%neck_kept = .true.
@@ -136,6 +142,9 @@ contains
             summary%occ(o)%channels%deflection_kept = &
                any([(sys%occupants(o)%effects(i)%e%deflects_chest, i=1, size(sys%occupants(o)%effects))])
             if (summary%occ(o)%channels%deflection_kept) call summary%occ(o)%channels%deflection%reserve(1, room)
+            if (present(belt_channels)) then
+               if (belt_channels) call fmvss_belts_reserve(summary%occ(o)%channels, sys%occupants(o), room)
+            end if
          end if
          ! Table 5's force criteria only when the occupant's deck gives a limit
          ! (they cost the point forces and the joint reactions at every
@@ -245,6 +254,7 @@ contains
             ! the chest's deflection (mm) under the torso belt and its contacts
             if (os%channels%deflection_kept) &
                call os%channels%deflection%add(t, [inch_mm*occupant_chest_deflection(occ, st, y)])
+            if (os%channels%belts_kept) call fmvss_belts_sample(os%channels, occ, st, y, t)
             if (estimated) then
                call os%accuracy%add_step(t, stepper%local_error(occ%z_offset + 1:occ%z_offset + n_dof), &
                                          stepper%local_error(occ%zdot_offset + 1:occ%zdot_offset + n_dof))
@@ -360,6 +370,7 @@ contains
             end if
             if (os%channels%deflection_kept) &
                call os%channels%deflection%add(t, [inch_mm*occupant_chest_deflection(occ, st, y)])
+            if (os%channels%belts_kept) call fmvss_belts_sample(os%channels, occ, st, y, t)
          end associate
       end do
    end subroutine sample_after_jump

@@ -70,8 +70,10 @@ def main():
                 fail(f"/{name} attribute description is {description!r}, expected a non-empty str")
             if name.startswith("channels/"):
                 # the FMVSS 208 table's channels: their own 10 kHz grid, /channels/time
-                if d.shape[0] != f["channels/time"].shape[0]:
-                    fail(f"/{name} has {d.shape[0]} rows, /channels/time {f['channels/time'].shape[0]}")
+                # (the head's 20 kHz, /channels/head_time)
+                grid = "channels/head_time" if name.endswith(("head_acceleration", "head_time")) else "channels/time"
+                if d.shape[0] != f[grid].shape[0]:
+                    fail(f"/{name} has {d.shape[0]} rows, /{grid} {f[grid].shape[0]}")
             elif d.ndim == 2 and not name.startswith(("summary/", "scene/")) and d.shape[0] != n:
                 fail(f"/{name} has {d.shape[0]} rows, /time {n}")
 

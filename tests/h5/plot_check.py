@@ -6,6 +6,7 @@ error one line, status 1, no Python traceback.
 
     plot_check.py HSRI2D PLOT DECKS_DIR WORKDIR
 """
+import math
 import os
 import shutil
 import subprocess
@@ -110,6 +111,49 @@ y = module.j211(step, 180.0, 1e-4)
 check(abs(y[1000] - 0.5) < 0.05 and abs(y[0]) < 1e-9 and abs(y[-1] - 1.0) < 1e-9
       and abs(y[1000 + 30] + y[999 - 30] - 1.0) < 1e-9,
       "J211 in tools/plot: a step met half way at its time, antisymmetric about it, settled at its ends")
+
+# the seat as each frame's time has it (issue 18): the rigid beam (its y_g and
+# gamma) and the non-rigid beams (delta_A, w, z) move in the pictures; their t = 0
+# line is the scene's cushion line; a file without those series draws the seat at
+# t = 0 and says so; the spring seat's cushion does not move
+for deck, form in (("sled_rigid_seat", 2), ("sled_beam_seat", 3), ("sled_belted", 1)):
+    h5 = os.path.join(work, deck + ".h5")
+    if not os.path.exists(h5):
+        p = subprocess.run([hsri2d, deck + ".deck", "-o", os.devnull, "--h5", h5], cwd=decks, capture_output=True)
+        if p.returncode != 0:
+            sys.exit(f"hsri2d {deck}.deck failed ({p.returncode}): {p.stderr.decode()}")
+    run = module.Run(h5, 1)
+    scene = module.frame_geometry(run)[2]
+    seat, series = module.seat_columns(scene), module.seat_series(run)
+    first, _, moved0 = module.seat_lines(seat, series, 0)
+    last = [module.seat_lines(seat, series, r)[0] for r in range(run.t.size)]
+    shift = max(float(np.max(np.abs(lines[0][1] - first[0][1]))) for lines in last)
+    tan = math.tan(seat["gamma_o"])
+    on_line = float(np.max(np.abs(first[0][1] - (seat["y_line"] + (first[0][0] - seat["x_line"]) * tan))))
+    check(int(seat["form"]) == form and moved0, f"{deck}: the seat's form {form} and its motion in the file")
+    if form == 1:
+        check(shift == 0.0, f"{deck}: the spring seat's cushion line does not move")
+    else:
+        # (the beam seat's beam 1 at t = 0 is already lowered by the body's weight)
+        check(shift > 1.0 and (form == 3 or on_line < 1e-12),
+              f"{deck}: the seat moves with the run (by up to {shift:.2f} in), from the cushion line at t = 0 "
+              f"({on_line:.2g} in off it)")
+        status, err = tool("motion", h5, "--times", "0.1", "--dpi", "50", "-o", os.path.join(work, deck + "-seat.png"))
+        check(status == 0 and picture(os.path.join(work, deck + "-seat.png"), PNG), f"{deck}: its motion picture")
+        # without the series that move it: the t = 0 seat, labelled so
+        bare = os.path.join(work, deck + "-bare.h5")
+        shutil.copy(h5, bare)
+        with h5py.File(bare, "a") as f:
+            for name in ("effects/seat/beam", "effects/seat/loads"):
+                if name in f:
+                    del f[name]
+        run = module.Run(bare, 1)
+        lines, _, moved = module.seat_lines(seat, module.seat_series(run), run.t.size - 1)
+        check(not moved and np.allclose(lines[0][1], seat["y_line"] + (lines[0][0] - seat["x_line"]) * tan),
+              f"{deck}: a file without the seat's series draws it at t = 0")
+        status, err = tool("motion", bare, "--times", "0.1", "--dpi", "50", "-o",
+                           os.path.join(work, deck + "-bare.png"))
+        check(status == 0, f"{deck}: ... and still draws ({err.strip()})")
 
 # errors: one line each, status 1, never a traceback
 with open(os.path.join(work, "text.h5"), "w") as f:

@@ -121,14 +121,14 @@ with h5py.File(h5, "r") as f:
     check(abs(bp[1, 2] - rho2 * math.cos(gam2)) < 1e-3 and abs(bp[1, 3] - rho2 * math.sin(gam2)) < 1e-3,
           "the upper back's centre at rho' and gamma from the torso line")
     seat = sc["seat"][:]
-    check(seat.shape == (1, 3) and seat[0, 0] == 1 and abs(seat[0, 1] - 14.0) < 1e-12,
+    check(seat.shape == (1, 9) and seat[0, 0] == 1 and abs(seat[0, 1] - 14.0) < 1e-12,
           "the spring seat, its front edge at z_o = 14 in")
 
 # a deck without belts, seat or interior: empty tables, not missing ones
 lst, h5 = run("body_only")
 with h5py.File(h5, "r") as f:
     shapes = {n: f["scene"][n].shape for n in f["scene"]}
-    check(shapes["surfaces"] == (0, 8) and shapes["belts"] == (0, 7) and shapes["seat"] == (0, 3)
+    check(shapes["surfaces"] == (0, 8) and shapes["belts"] == (0, 7) and shapes["seat"] == (0, 9)
           and shapes["segments"] == (8, 3), f"body_only: empty surfaces, belts and seat ({shapes})")
 
 if failures:

@@ -5,13 +5,17 @@
 usage: mme_output.py HSRI2D DECK WORKDIR
 
 Runs DECK (a belted deck) with a vertical part added to its pulse, with --mme
-and --h5, then checks the data set
-against the HDF5 file: the index's channels and codes, each channel's
-header (code, unit, dimension, sampling interval = the print interval,
-number of samples = its sample lines = the print records), its values
-(the vehicle's x acceleration in g, its z with ISO's sign, the head's and
-chest's resultant accelerations in g, each belt section's tension in N, to
-the 10 digits written). A second run into the same folder is refused
+and --h5, then checks the data set against the HDF5 file's /channels (the
+10 kHz records the FMVSS 208 table filters): the index's channels and codes,
+each channel's header (code, unit, dimension, unfiltered with its SAE J211-1
+class stated, sampling interval and time of first sample = /channels/time's
+(the head's /channels/head_time's, 20 kHz),
+number of samples = its sample lines), its values in ISO's units and signs
+(the vehicle's and the head's and chest's x and z accelerations in g, z down,
+and resultants; the neck's axial force and moment; both femurs' axial
+force, compression negative; the chest's deflection, compression negative;
+each belt section's tension in N) to the 10 digits written; and, where the
+print times fall on the grid, the channels against the print records. A second run into the same folder is refused
 (status 4, nothing written, the data set unchanged); the program reads its
 own data set back as a pulse (*PULSEMME).
 """
@@ -70,44 +74,92 @@ def main():
         fail("no run1.mme")
 
     with h5py.File(h5, "r") as f:
-        t = f["time"][:]
+        t_print = f["time"][:]
         vehicle = f["vehicle"][:]
         acc = f["acceleration"][:]
-        lap = f["effects/lap_belt/force"][:]
+        lap = f["effects/lap_belt/force"][:].reshape(-1)
         torso = f["effects/torso_belt/force"][:]
+        ch = {k: f["channels/" + k][:] for k in f["channels"]}
+        classes = {k: f["channels/" + k].attrs.get("filter_class") for k in f["channels"]}
+    t = ch["time"].reshape(-1)
+    th = ch["head_time"].reshape(-1)          # the head's 20 kHz grid
+    head, chest, neck = ch["head_acceleration"], ch["chest_acceleration"], ch["neck_loads"]
+    belts, veh = ch["belt_forces"], ch["vehicle_acceleration"]
+    # code: (unit, dimension, the SAE J211-1 class, the values from /channels
+    # in ISO's units and signs: z down, neck Fz + tension and My + flexion,
+    # femur and chest compression -)
     expected = {
-        "10VEHCCG0000ACX0": ("g", "AC", vehicle[:, 6] / G_STD),
-        "10VEHCCG0000ACZ0": ("g", "AC", -vehicle[:, 7] / G_STD),
-        "11HEAD000000ACR0": ("g", "AC", acc[:, 0] / G_STD),
-        "11CHST000000ACR0": ("g", "AC", acc[:, 1] / G_STD),
-        "11SEBE0000B6FO00": ("N", "FO", lap.reshape(-1) * LB_TO_N),
-        "11SEBE0000B3FO00": ("N", "FO", torso[:, 0] * LB_TO_N),
-        "11SEBE0000B4FO00": ("N", "FO", torso[:, 1] * LB_TO_N),
+        "10VEHCCG0000ACX0": ("g", "AC", 60, veh[:, 0]),
+        "10VEHCCG0000ACZ0": ("g", "AC", 60, -veh[:, 1]),
+        "11HEAD000000ACX0": ("g", "AC", 1000, head[:, 0]),
+        "11HEAD000000ACZ0": ("g", "AC", 1000, -head[:, 1]),
+        "11HEAD000000ACR0": ("g", "AC", 1000, np.hypot(head[:, 0], head[:, 1])),
+        "11CHST000000ACX0": ("g", "AC", 180, chest[:, 0]),
+        "11CHST000000ACZ0": ("g", "AC", 180, -chest[:, 1]),
+        "11CHST000000ACR0": ("g", "AC", 180, np.hypot(chest[:, 0], chest[:, 1])),
+        "11NECKUP0000FOZ0": ("N", "FO", 1000, neck[:, 0]),   # J211's class of neck forces
+        "11NECKUP0000MOY0": ("Nm", "MO", 600, neck[:, 1]),
+        "11FEMRLE0000FOZ0": ("N", "FO", 600, -ch["femur_force"].reshape(-1)),
+        "11FEMRRI0000FOZ0": ("N", "FO", 600, -ch["femur_force"].reshape(-1)),
+        "11CHST000000DSX0": ("mm", "DS", 180, -ch["chest_deflection"].reshape(-1)),
+        "11SEBE0000B6FO00": ("N", "FO", 60, belts[:, 0]),
+        "11SEBE0000B3FO00": ("N", "FO", 60, belts[:, 1]),
+        "11SEBE0000B4FO00": ("N", "FO", 60, belts[:, 2]),
     }
     if sorted(names.values()) != sorted(expected):
         fail("channels %s, expected %s" % (sorted(names.values()), sorted(expected)))
+    if classes["belt_forces"] != ["CFC 60"] and list(classes["belt_forces"]) != ["CFC 60"]:
+        fail("/channels/belt_forces filter_class %s" % classes["belt_forces"])
     if np.max(np.abs(vehicle[:, 7])) < G_STD:
         fail("the vertical pulse did not reach the run")
     dt = t[1] - t[0]
     n = len(t)
-    if abs(t[-1] - (t[0] + (n - 1) * dt)) > 1e-9:
-        n -= 1     # a last record off the print grid is left out
+    if abs(dt - 1e-4) > 1e-15 or t[0] != 0.0:
+        fail("/channels/time: first %g, interval %g; expected 0 and 0.1 ms" % (t[0], dt))
+    if abs(th[1] - th[0] - 5e-5) > 1e-15 or th[0] != 0.0:
+        fail("/channels/head_time: first %g, interval %g; expected 0 and 0.05 ms" % (th[0], th[1] - th[0]))
     for number, code in sorted(names.items()):
         header, samples = header_and_samples(os.path.join(dset, "CHANNEL", "run1." + number))
-        unit, dimension, values = expected[code]
+        unit, dimension, cfc, values = expected[code]
+        grid = th if code[2:6] == "HEAD" else t
         if header["Channel code"] != code or header["Unit"] != unit or header["Dimension"] != dimension:
             fail("channel %s: header %s" % (number, header))
-        if abs(float(header["Sampling interval"]) - dt) > 1e-12 or float(header["Time of first sample"]) != 0.0:
-            fail("channel %s: interval %s, first %s; the print interval is %g" %
-                 (number, header["Sampling interval"], header["Time of first sample"], dt))
-        if int(header["Number of samples"]) != len(samples) or len(samples) != n:
-            fail("channel %s: %s samples in its header, %d in the file, %d print records" %
-                 (number, header["Number of samples"], len(samples), n))
-        scale = max(1.0, float(np.max(np.abs(values[:n]))))
-        worst = float(np.max(np.abs(samples - values[:n]))) / scale
+        if code[-1] != "0" or header["Channel frequency class"] != "NOVALUE" or \
+                header["Comments"] != "unfiltered; filter at CFC %d (SAE J211-1)" % cfc:
+            fail("channel %s: not stated unfiltered with its class %d: %s" % (number, cfc, header))
+        step = grid[1] - grid[0]
+        if abs(float(header["Sampling interval"]) - step) > 1e-15 or float(header["Time of first sample"]) != grid[0]:
+            fail("channel %s: interval %s, first %s; its grid's %g, %g" %
+                 (number, header["Sampling interval"], header["Time of first sample"], step, grid[0]))
+        if int(header["Number of samples"]) != len(samples) or len(samples) != len(grid):
+            fail("channel %s: %s samples in its header, %d in the file, %d on its grid" %
+                 (number, header["Number of samples"], len(samples), len(grid)))
+        scale = max(1.0, float(np.max(np.abs(values))))
+        worst = float(np.max(np.abs(samples - values))) / scale
         if worst > 1e-8:
-            fail("channel %s (%s): off the HDF5 file's values by %.3g of its largest" % (number, code, worst))
-    print("OK: %d channels of %d samples agree with the HDF5 file" % (len(names), n))
+            fail("channel %s (%s): off /channels by %.3g of its largest" % (number, code, worst))
+    # the 10 kHz channels agree with the print records where their times meet
+    # (the print times fall on the grid): the vehicle, the head's and chest's
+    # resultants, the belts' tensions (lb in the records)
+    at = np.rint(t_print / dt).astype(int)
+    at = at[at < n]
+    m = len(at)
+    ah = np.rint(t_print[:m] / (th[1] - th[0])).astype(int)
+    for label, sampled, printed in (
+            ("vehicle x", veh[at, 0], vehicle[:m, 6] / G_STD),
+            ("vehicle y", veh[at, 1], vehicle[:m, 7] / G_STD),
+            ("head", np.hypot(head[ah, 0], head[ah, 1]), acc[:m, 0] / G_STD),
+            ("chest", np.hypot(chest[at, 0], chest[at, 1]), acc[:m, 1] / G_STD),
+            ("lap belt", belts[at, 0], lap[:m] * LB_TO_N),
+            ("torso belt upper", belts[at, 1], torso[:m, 0] * LB_TO_N),
+            ("torso belt lower", belts[at, 2], torso[:m, 1] * LB_TO_N)):
+        worst = float(np.max(np.abs(sampled - printed))) / max(1.0, float(np.max(np.abs(printed))))
+        if worst > 1e-9:
+            fail("%s: the 10 kHz channel is off the print records by %.3g of its largest" % (label, worst))
+    if np.max(belts[:, 0]) < 100.0:
+        fail("the lap belt never pulled (%g N): the test shows nothing" % np.max(belts[:, 0]))
+    print("OK: %d channels of %d samples agree with /channels and, at %d print times, with the records"
+          % (len(names), n, m))
 
     # a second run into the same folder: refused before anything is written
     before = {p: open(os.path.join(dset, "CHANNEL", p), "rb").read() for p in os.listdir(os.path.join(dset, "CHANNEL"))}
