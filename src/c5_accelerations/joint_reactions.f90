@@ -1,5 +1,5 @@
 !> The joint reaction forces from the solved dynamics (Newton-Euler on the
-!! segments with the accelerations of C.5; errata-forces A-INJ, F5-1), in
+!! segments with the accelerations of C.5; errata-forces A-INJ, docs/errata.md F5-1), in
 !! place of the quasi-static sums of f.5-f.6, which leave out inertia and
 !! gravity and cut the body inconsistently. For joint j, with D(j) the
 !! segments on its distal side,

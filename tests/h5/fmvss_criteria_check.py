@@ -130,6 +130,26 @@ def main():
         deflection = ch["chest_deflection"][()]
         unf = f["summary/injury_criteria"]
         unfiltered = dict(zip(list(unf.attrs["columns"]), unf[0, :]))
+        # the loads' channels against the joint tensions of the print
+        # records, which another path computes (output_producers'
+        # bone_components_at): at the print times, states of the run, the
+        # neck's axial force is FT_4 and one femur's compression -FT_1/2,
+        # lbf to N (+ tension for the neck, + compression for the femur)
+        # (a run whose last step ends a rounding short of TMAX has no grid
+        # point there)
+        tp = f["time"][()]
+        keep = tp <= t[-1] + 1e-12
+        tp = tp[keep]
+        ft = f["joints/tension"][()][keep]
+        at = [int(np.argmin(np.abs(t - x))) for x in tp]
+        if len(tp) < 10 or np.max(np.abs(t[at] - tp)) > 1e-12:
+            fail("the print times are not on the channels' grid")
+        lbf = 4.4482216152605
+        scale = max(1.0, float(np.max(np.abs(ft[:, [0, 3]]))) * lbf)
+        if np.max(np.abs(neck[at, 0] - ft[:, 3] * lbf)) > 1e-9 * scale:
+            fail("the neck's axial force is not FT_4 of /joints/tension at the print times")
+        if np.max(np.abs(femur[at] + ft[:, 0] * lbf / 2.0)) > 1e-9 * scale:
+            fail("the femur's force is not -FT_1/2 of /joints/tension at the print times")
 
     def check(name, value, rel, at=None, cfc=None, unit=None):
         got = table[name]["value"]
