@@ -26,7 +26,7 @@ module joint_reactions
    private
 
    public :: joint_reaction_forces, body_imbalance, bone_components, distal_segment
-   public :: segment_cg_states, joint_reactions_at, bone_components_at, joint_moment_at
+   public :: segment_cg_states, joint_reactions_at, bone_components_at, joint_moment_at, distal
 
    !> distal(s, j): segment s lies on the distal side of joint j.
    logical, parameter :: distal(n_seg, n_joint) = reshape([ &

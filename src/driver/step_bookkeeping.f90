@@ -20,7 +20,7 @@ module step_bookkeeping
    use effect_base, only: body_state_t
    use effect_events, only: accept_result_t, event_t
    use point_forces, only: point_force_list_t, point_force_reserve
-   use joint_reactions, only: segment_cg_states, joint_reactions_at, joint_moment_at
+   use joint_reactions, only: segment_cg_states, joint_reactions_at, joint_moment_at, bone_components_at, distal
    use body_kinematics, only: point_state_t
    use force_injuries, only: bone_loads_t, bone_loads, fc_defined, fs_defined, force_injury_event, event_tension, &
       event_compression, event_shear
@@ -43,7 +43,7 @@ module step_bookkeeping
    real(wp), parameter :: rounding = 1.0e-9_wp
    !> The distal sides of the neck (the head) and the hip (thigh, shank):
    !! the segments whose forces the FMVSS 208 table's loads need (sample_loads)
-   logical, parameter :: loads_segments(n_seg) = [.false., .false., .false., .true., .false., .false., .true., .true.]
+   logical, parameter :: loads_segments(n_seg) = distal(:, 4) .or. distal(:, 1)
 
    type :: step_books_t
       type(end_state_t), allocatable :: end_state(:)   !< each occupant's rest timer (C.7)
@@ -474,16 +474,16 @@ contains
       real(wp), parameter :: newton = pound_force_n             ! N per lbf
       real(wp), parameter :: newton_metre = newton*inch_m        ! N m per lbf in
       real(wp), parameter :: thighs = 2.0_wp                  ! femurs in segment 7
-      integer, parameter :: hip = 1, neck = 4, head = 4, thigh = 7
+      integer, parameter :: hip = 1, neck = 4
       type(point_state_t) :: cg(n_seg)
-      real(wp) :: r(2, n_joint), axial, moment, femur
+      real(wp) :: r(2, n_joint), tension(n_joint), shear(n_joint), moment
       cg = segment_cg_states(occ%body, st%z, st%zdot, zdd)
       r = joint_reactions_at(occ%body, cg, forces)
-      axial = -(r(1, neck)*st%c(head) + r(2, neck)*st%s(head))
+      ! Table 5's FT_j on the distal bones' axes (the neck's: the head's)
+      call bone_components_at(r, st%c, st%s, tension, shear)
       moment = joint_moment_at(occ%body, st%z, st%zdot, zdd, cg, forces, neck)
-      femur = r(1, hip)*st%c(thigh) + r(2, hip)*st%s(thigh)
-      call os%channels%neck%add(t, [newton*axial, newton_metre*moment])
-      call os%channels%femur%add(t, [newton*femur/thighs])
+      call os%channels%neck%add(t, [newton*tension(neck), newton_metre*moment])
+      call os%channels%femur%add(t, [-newton*tension(hip)/thighs])
    end subroutine sample_loads
 
    !> Criterion c (1 tension, 2 compression, 3 shear) of occupant o's joint
