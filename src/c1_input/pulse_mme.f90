@@ -32,6 +32,12 @@ module pulse_mme
    !> The filter needs at least this many samples per period of its class
    !! (the design frequency 2.0775 CFC far below the Nyquist frequency).
    real(wp), parameter :: min_samples_per_class_period = 10.0_wp
+   !> The sampling intervals read (s): from 10 MHz, beyond any crash test's
+   !! acquisition (a finer one would make the filter's start-up extension,
+   !! J211-1's 10 ms, tens of millions of samples), to 1 s
+   real(wp), parameter :: mme_interval_range(2) = [1.0e-7_wp, 1.0_wp]
+   !> The latest time of the table (s), as *PULSE's T
+   real(wp), parameter :: mme_max_time = 1.0e3_wp
    !> What a data set's missing value is written as (ISO/TS 13499).
    character(len=*), parameter :: novalue = 'NOVALUE'
 
@@ -95,7 +101,16 @@ contains
             return
          end if
          block
-            real(wp) :: filtered(size(samples))
+            real(wp), allocatable :: filtered(:)
+            integer :: stat
+            ! (on the heap, with the samples' own size: a long channel
+            ! would not fit on the stack)
+            allocate (filtered(size(samples)), stat=stat)
+            if (stat /= 0) then
+               call error_append(err, exit_deck, named_at(2)%s//': *PULSEMME card 2: '//escaped(channel_path) &
+                  //': no memory to filter its '//itoa(size(samples))//' samples')
+               return
+            end if
             call cfc_filter(samples, real(cfc, wp), dt, filtered)
             samples = filtered
          end block
@@ -252,17 +267,18 @@ contains
                   select case (upper(key))
                   case ('SAMPLING INTERVAL')
                      call read_real(value, interval, good)
-                     if (.not. good .or. .not. interval > 0.0_wp) then
+                     if (.not. good .or. .not. (interval >= mme_interval_range(1) .and. &
+                                                interval <= mme_interval_range(2))) then
                         call problem(path, i, 'Sampling interval: found "'//shown(value)//'"; expected a time ' &
-                           //'above 0 (s)')
+                           //'from '//num(mme_interval_range(1))//' to '//num(mme_interval_range(2))//' s')
                      else
                         have_interval = .true.
                      end if
                   case ('TIME OF FIRST SAMPLE')
                      call read_real(value, first_time, good)
-                     if (.not. good) then
+                     if (.not. good .or. .not. abs(first_time) <= mme_max_time) then
                         call problem(path, i, 'Time of first sample: found "'//shown(value)//'"; expected a ' &
-                           //'time (s)')
+                           //'time from '//num(-mme_max_time)//' to '//num(mme_max_time)//' s')
                      else
                         have_first = .true.
                      end if
@@ -449,6 +465,12 @@ contains
             call error_append(err, exit_deck, named_at(2)%s//': *PULSEMME card 2, T0: '//escaped(channel_path) &
                //'''s first sample with a value is at '//num(tau(1) + t_zero)//' s, after T0 = '//num(t_zero) &
                //' s, the run''s t = 0')
+            return
+         end if
+         if (.not. tau(n) <= mme_max_time) then
+            call error_append(err, exit_deck, named_at(2)%s//': *PULSEMME card 2: '//escaped(channel_path) &
+               //'''s last sample is at '//num(tau(n))//' s of the run, beyond the '//num(mme_max_time) &
+               //' s a pulse table may reach (*PULSE''s T)')
             return
          end if
          if (tau(n) < 0.0_wp) then

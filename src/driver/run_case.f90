@@ -154,6 +154,13 @@ contains
       if (.not. err%failed() .and. deck_is_analog(deck)) then
          ! report Section D's analog instead of the simulation (docs/analog.md)
          if (present(warnings)) allocate (warnings(0))
+         if (allocated(req%mme_dir)) then
+            if (len(req%mme_dir) > 0) then
+               call error_set(err, exit_usage, 'an analog deck (*ANALOG) has no channels to write as an ISO-MME ' &
+                              //'data set; --mme would be ignored')
+               return
+            end if
+         end if
          block
             type(string_t) :: no_pulse(0)   ! (an analog deck reads no pulse)
             call check_output_paths(deck_files(req), no_pulse, req%listing_file, req%h5_file, err)

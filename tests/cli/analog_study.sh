@@ -96,4 +96,12 @@ expect_status 2 $? "an occupant's criterion on an analog deck"
 expect_text err 'bad_crit.deck:6: \*CRITERIA card 1, field CRIT \(columns 3-12\): HIC15 is a criterion of the occupant simulation; a deck with \*ANALOG \(report Section D\) is judged by MEET, TMEET, SEPMIN, OVERLAP or CDAMP' \
     "an occupant's criterion on an analog deck"
 no_crash err
+
+# --mme on an analog deck: a usage error, nothing written (it has no channels)
+"$exe" --mme mme_out "$decks/analog_undamped.deck" -o mme.lst 2>err
+expect_status 1 $? "--mme on an analog deck"
+expect_text err 'an analog deck \(\*ANALOG\) has no channels to write as an ISO-MME data set; --mme would be ignored' \
+    "--mme on an analog deck"
+[ ! -e mme_out ] || fail "--mme on an analog deck made its folder"
+no_crash err
 pass
